@@ -1,0 +1,140 @@
+/*
+ * Global tuning constants based on meters-kilograms-seconds (MKS) units (b2Settings.h).
+ *
+ * Every value is written exactly as b2Settings.h spells it: the reference engine was built with
+ * float32 = double, so `0.005f` is the double 0.005 and `b2_pi` is the literal 3.14159265359,
+ * not Math.PI. b2_epsilon and b2_maxFloat keep their float32 values (FLT_EPSILON, FLT_MAX)
+ * because the C++ used the macros, not literals.
+ */
+
+/**
+ * Box2D's b2Assert. The C++ asserts vanish in release builds; these stay, so a broken invariant
+ * stops with a message instead of corrupting the world.
+ */
+export function b2Assert(condition: boolean, message = 'assertion failed'): asserts condition {
+  if (!condition) {
+    throw new Error(`Box2D: ${message}`);
+  }
+}
+
+export const b2_maxFloat = 3.4028234663852886e38;
+export const b2_epsilon = 1.1920928955078125e-7;
+export const b2_pi = 3.14159265359;
+
+// Collision
+
+/** The maximum number of contact points between two convex shapes. Do not change this value. */
+export const b2_maxManifoldPoints = 2;
+
+/** The maximum number of vertices on a convex polygon. */
+export const b2_maxPolygonVertices = 8;
+
+/** Fattens AABBs in the dynamic tree so proxies can move a little without a tree update (m). */
+export const b2_aabbExtension = 0.1;
+
+/** Fattens AABBs in the dynamic tree in the direction of motion (dimensionless multiplier). */
+export const b2_aabbMultiplier = 2.0;
+
+/** A small length used as a collision and constraint tolerance (m). */
+export const b2_linearSlop = 0.005;
+
+/** A small angle used as a collision and constraint tolerance (rad). */
+export const b2_angularSlop = (2.0 / 180.0) * b2_pi;
+
+/** The radius of the polygon/edge shape skin. */
+export const b2_polygonRadius = 2.0 * b2_linearSlop;
+
+/** Maximum number of sub-steps per contact in continuous physics simulation. */
+export const b2_maxSubSteps = 8;
+
+// Dynamics
+
+/** Maximum number of contacts to be handled to solve a TOI impact. */
+export const b2_maxTOIContacts = 32;
+
+/** Collisions with a relative normal velocity below this are treated as inelastic (m/s). */
+export const b2_velocityThreshold = 1.0;
+
+/** The maximum linear position correction used when solving constraints (m). */
+export const b2_maxLinearCorrection = 0.2;
+
+/** The maximum angular position correction used when solving constraints (rad). */
+export const b2_maxAngularCorrection = (8.0 / 180.0) * b2_pi;
+
+/** The maximum translation of a body per step (m). */
+export const b2_maxTranslation = 2.0;
+export const b2_maxTranslationSquared = b2_maxTranslation * b2_maxTranslation;
+
+/** The maximum rotation of a body per step (rad). */
+export const b2_maxRotation = 0.5 * b2_pi;
+export const b2_maxRotationSquared = b2_maxRotation * b2_maxRotation;
+
+/** How fast overlap is resolved in the contact position solver. */
+export const b2_baumgarte = 0.2;
+/** The same factor for the TOI position solver (the C++ spelling is kept). */
+export const b2_toiBaugarte = 0.75;
+
+// Sleep
+
+/** The time that a body must be still before it will go to sleep (s). */
+export const b2_timeToSleep = 0.5;
+
+/** A body cannot sleep if its linear velocity is above this tolerance (m/s). */
+export const b2_linearSleepTolerance = 0.01;
+
+/** A body cannot sleep if its angular velocity is above this tolerance (rad/s). */
+export const b2_angularSleepTolerance = (2.0 / 180.0) * b2_pi;
+
+/** Version numbering scheme. */
+export class b2Version {
+  constructor(
+    public major = 0,
+    public minor = 0,
+    public revision = 0,
+  ) {}
+}
+
+/** Current version. */
+export const b2_version = new b2Version(2, 2, 1);
+
+/** The sink for b2Log; replace it to route Dump() output elsewhere. */
+export let b2LogSink: (text: string) => void = (text) => {
+  if (typeof process !== 'undefined' && process.stdout) process.stdout.write(text);
+  else console.log(text);
+};
+
+export function b2SetLogSink(sink: (text: string) => void): void {
+  b2LogSink = sink;
+}
+
+/**
+ * Logging function with the printf conversions Box2D's Dump() uses: %d, %s, %f, %.15lef
+ * (and %% for a percent sign).
+ */
+export function b2Log(format: string, ...args: (number | string | boolean)[]): void {
+  let argIndex = 0;
+  const text = format.replace(/%(%|[-+ 0#]*\d*(?:\.(\d+))?(?:l|ll|h)?([dieEfgsu]))/g, (match, _all, precision, conv) => {
+    if (match === '%%') return '%';
+    const arg = args[argIndex++];
+    switch (conv) {
+      case 'd':
+      case 'i':
+      case 'u':
+        return String(Math.trunc(Number(arg)));
+      case 's':
+        return String(arg);
+      case 'e':
+      case 'E': {
+        const digits = precision === undefined ? 6 : Number(precision);
+        // C prints at least two exponent digits: 1.5e+00, not JavaScript's 1.5e+0.
+        const s = Number(arg).toExponential(digits).replace(/e([+-])(\d)$/, 'e$10$2');
+        return conv === 'E' ? s.toUpperCase() : s;
+      }
+      case 'f':
+        return Number(arg).toFixed(precision === undefined ? 6 : Number(precision));
+      default:
+        return String(arg);
+    }
+  });
+  b2LogSink(text);
+}
