@@ -1,0 +1,28 @@
+// npm run build: the ES module, the classic-script bundle that defines the global `Box2D` as
+// Box2DWeb's script does (plain and minified), all with source maps. Types come from tsc
+// (tsconfig.build.json), run by the npm script after this.
+import { build } from 'esbuild';
+import { rmSync } from 'node:fs';
+
+rmSync('dist', { recursive: true, force: true });
+
+const common = {
+  bundle: true,
+  sourcemap: true,
+  target: 'es2020',
+  logLevel: 'info',
+  legalComments: 'inline',
+};
+
+await Promise.all([
+  build({ ...common, entryPoints: ['src/index.ts'], format: 'esm', outfile: 'dist/webphysics.mjs' }),
+  build({ ...common, entryPoints: ['src/api/Box2D.ts'], format: 'iife', globalName: 'Box2D', outfile: 'dist/box2d.js' }),
+  build({
+    ...common,
+    entryPoints: ['src/api/Box2D.ts'],
+    format: 'iife',
+    globalName: 'Box2D',
+    minify: true,
+    outfile: 'dist/box2d.min.js',
+  }),
+]);

@@ -1,0 +1,157 @@
+import { describe, expect, it } from 'vitest';
+import {
+  b2Abs,
+  b2Clamp,
+  b2Cross,
+  b2CrossSV,
+  b2CrossVS,
+  b2Mat22,
+  b2Mat33,
+  b2Max,
+  b2Min,
+  b2MulRV,
+  b2MulTRV,
+  b2MulTXV,
+  b2MulTXX,
+  b2MulXV,
+  b2MulXX,
+  b2NextPowerOfTwo,
+  b2IsPowerOfTwo,
+  b2Rot,
+  b2Sweep,
+  b2Transform,
+  b2Vec2,
+  b2Vec3,
+} from '../../src/common/b2Math';
+import { b2_angularSlop, b2_epsilon, b2_maxFloat, b2_pi } from '../../src/common/b2Settings';
+
+describe('b2Settings', () => {
+  it('keeps the literals of b2Settings.h as doubles, not Math.PI or float-rounded values', () => {
+    expect(b2_pi).toBe(3.14159265359);
+    expect(b2_pi).not.toBe(Math.PI);
+    expect(b2_epsilon).toBe(1.1920928955078125e-7);
+    expect(b2_maxFloat).toBe(3.4028234663852886e38);
+    expect(b2_angularSlop).toBe((2.0 / 180.0) * 3.14159265359);
+  });
+});
+
+describe('b2Vec2', () => {
+  it('Normalize returns the length and leaves vectors shorter than b2_epsilon unchanged', () => {
+    const v = new b2Vec2(3, 4);
+    expect(v.Normalize()).toBe(5);
+    // Multiplies by the reciprocal as the C++ does, so 3/5 comes out as 3 * (1 / 5).
+    expect([v.x, v.y]).toEqual([3 * (1 / 5), 4 * (1 / 5)]);
+    const tiny = new b2Vec2(1e-8, 0);
+    expect(tiny.Normalize()).toBe(0);
+    expect(tiny.x).toBe(1e-8);
+  });
+
+  it('Skew gives the vector whose dot product equals the cross product', () => {
+    const a = new b2Vec2(2, -3);
+    const b = new b2Vec2(5, 7);
+    const s = a.Skew(new b2Vec2());
+    expect(s.x * b.x + s.y * b.y).toBe(b2Cross(a, b));
+  });
+});
+
+describe('free functions', () => {
+  it('b2Abs, b2Min, b2Max keep the C++ ternaries, including b2Abs(+0) = -0', () => {
+    expect(Object.is(b2Abs(0), -0)).toBe(true);
+    expect(b2Abs(-2.5)).toBe(2.5);
+    expect(Number.isNaN(b2Min(NaN, 1))).toBe(false);
+    expect(b2Min(NaN, 1)).toBe(1);
+    expect(b2Max(NaN, 1)).toBe(1);
+    expect(Number.isNaN(b2Max(1, NaN))).toBe(true);
+    expect(b2Clamp(5, -1, 2)).toBe(2);
+  });
+
+  it('cross products with scalars follow (s*a.y, -s*a.x) and (-s*a.y, s*a.x)', () => {
+    const a = new b2Vec2(2, 3);
+    expect(b2CrossVS(a, 2, new b2Vec2())).toEqual(new b2Vec2(6, -4));
+    expect(b2CrossSV(2, a, new b2Vec2())).toEqual(new b2Vec2(-6, 4));
+  });
+
+  it('rotations and transforms round-trip, and out may alias the input', () => {
+    const q = new b2Rot(0.7);
+    const v = new b2Vec2(1.5, -2);
+    const r = b2MulRV(q, v, new b2Vec2());
+    const back = b2MulTRV(q, r, r);
+    expect(back.x).toBeCloseTo(1.5, 14);
+    expect(back.y).toBeCloseTo(-2, 14);
+
+    const xf = new b2Transform(new b2Vec2(3, 4), new b2Rot(-1.2));
+    const p = b2MulXV(xf, v, new b2Vec2());
+    const local = b2MulTXV(xf, p, p);
+    expect(local.x).toBeCloseTo(1.5, 14);
+    expect(local.y).toBeCloseTo(-2, 14);
+
+    const ab = b2MulXX(xf, xf, new b2Transform());
+    const id = b2MulTXX(ab, ab, ab);
+    expect(id.p.x).toBeCloseTo(0, 14);
+    expect(id.q.c).toBeCloseTo(1, 14);
+  });
+
+  it('b2NextPowerOfTwo and b2IsPowerOfTwo work on uint32', () => {
+    expect(b2NextPowerOfTwo(5)).toBe(8);
+    expect(b2NextPowerOfTwo(8)).toBe(16);
+    expect(b2IsPowerOfTwo(64)).toBe(true);
+    expect(b2IsPowerOfTwo(0)).toBe(false);
+  });
+});
+
+describe('matrices', () => {
+  it('b2Mat22 inverse and solve agree, and a singular matrix gives zeros', () => {
+    const m = b2Mat22.FromScalars(4, 1, 2, 3);
+    const inv = m.GetInverse(new b2Mat22());
+    const x = m.Solve(new b2Vec2(1, 2), new b2Vec2());
+    expect(inv.ex.x * 1 + inv.ey.x * 2).toBeCloseTo(x.x, 15);
+    const singular = b2Mat22.FromScalars(1, 2, 2, 4).GetInverse(new b2Mat22());
+    expect([singular.ex.x, singular.ey.y]).toEqual([0, 0]);
+  });
+
+  it('b2Mat33 Solve33 solves the system and GetSymInverse33 inverts a symmetric matrix', () => {
+    const m = new b2Mat33().Set(new b2Vec3(4, 1, 0.5), new b2Vec3(1, 3, 0.25), new b2Vec3(0.5, 0.25, 2));
+    const b = new b2Vec3(1, 2, 3);
+    const x = m.Solve33(b, new b2Vec3());
+    expect(4 * x.x + 1 * x.y + 0.5 * x.z).toBeCloseTo(1, 14);
+    expect(0.5 * x.x + 0.25 * x.y + 2 * x.z).toBeCloseTo(3, 14);
+    const inv = new b2Mat33();
+    m.GetSymInverse33(inv);
+    expect(inv.ex.x * 4 + inv.ey.x * 1 + inv.ez.x * 0.5).toBeCloseTo(1, 14);
+    const x22 = m.Solve22(new b2Vec2(1, 2), new b2Vec2());
+    expect(4 * x22.x + 1 * x22.y).toBeCloseTo(1, 14);
+  });
+});
+
+describe('b2Sweep', () => {
+  it('GetTransform interpolates the center and angle and shifts by the rotated local center', () => {
+    const s = new b2Sweep();
+    s.localCenter.Set(1, 0);
+    s.c0.Set(0, 0);
+    s.c.Set(2, 0);
+    s.a0 = 0;
+    s.a = b2_pi;
+    const xf = s.GetTransform(new b2Transform(), 0.5);
+    const q = new b2Rot(0.5 * b2_pi);
+    expect(xf.q.s).toBe(q.s);
+    expect(xf.p.x).toBe(1 - (q.c * 1 - q.s * 0));
+    expect(xf.p.y).toBe(0 - (q.s * 1 + q.c * 0));
+  });
+
+  it('Advance moves the start state to alpha and Normalize wraps a0 into [0, 2pi) keeping a - a0', () => {
+    const s = new b2Sweep();
+    s.c0.Set(0, 0);
+    s.c.Set(4, 0);
+    s.a0 = 0;
+    s.a = 1;
+    s.Advance(0.25);
+    expect(s.c0.x).toBe(1);
+    expect(s.a0).toBe(0.25);
+    expect(s.alpha0).toBe(0.25);
+    s.a0 = 7;
+    s.a = 8;
+    s.Normalize();
+    expect(s.a0).toBe(7 - 2 * b2_pi);
+    expect(s.a).toBe(8 - 2 * b2_pi);
+  });
+});
