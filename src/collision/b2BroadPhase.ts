@@ -1,0 +1,399 @@
+/*
+ * The broad-phase (b2BroadPhase.h, b2BroadPhase.cpp).
+ *
+ * The move buffer and the pair buffer grow as the C++ ones do (capacity 16, doubling) and are
+ * reused across steps; the pair buffer holds preallocated b2Pair objects filled in place and is
+ * sorted in place, so UpdatePairs does not allocate in steady state.
+ */
+
+import type { b2Vec2 } from '../common/b2Math';
+import { b2Max, b2Min } from '../common/b2Math';
+import { b2DynamicTree } from './b2DynamicTree';
+import type { b2TreeQueryCallback, b2TreeRayCastCallback } from './b2DynamicTree';
+import { b2TestOverlap } from './b2Collision';
+import type { b2AABB, b2RayCastInput } from './b2Collision';
+
+export class b2Pair {
+  proxyIdA = -1;
+  proxyIdB = -1;
+  /** Declared by the C++ struct; 2.2.1 never reads or writes it. */
+  next = -1;
+}
+
+/** The C++ template parameter T of b2BroadPhase::UpdatePairs (b2ContactManager in the engine). */
+export interface b2BroadPhasePairCallback {
+  AddPair(proxyUserDataA: any, proxyUserDataB: any): void;
+}
+
+/** This is used to sort pairs. */
+export function b2PairLessThan(pair1: Readonly<b2Pair>, pair2: Readonly<b2Pair>): boolean {
+  if (pair1.proxyIdA < pair2.proxyIdA) {
+    return true;
+  }
+
+  if (pair1.proxyIdA === pair2.proxyIdA) {
+    return pair1.proxyIdB < pair2.proxyIdB;
+  }
+
+  return false;
+}
+
+/**
+ * The broad-phase is used for computing pairs and performing volume queries and ray casts.
+ * This broad-phase does not persist pairs. Instead, this reports potentially new pairs.
+ * It is up to the client to consume the new pairs and to track subsequent overlap.
+ */
+export class b2BroadPhase implements b2TreeQueryCallback {
+  static readonly e_nullProxy = -1;
+
+  m_tree = new b2DynamicTree();
+
+  m_proxyCount: number;
+
+  m_moveBuffer: Int32Array;
+  m_moveCapacity: number;
+  m_moveCount: number;
+
+  m_pairBuffer: b2Pair[];
+  m_pairCapacity: number;
+  m_pairCount: number;
+
+  m_queryProxyId: number;
+
+  constructor() {
+    this.m_proxyCount = 0;
+
+    this.m_pairCapacity = 16;
+    this.m_pairCount = 0;
+    this.m_pairBuffer = [];
+    for (let i = 0; i < this.m_pairCapacity; ++i) {
+      this.m_pairBuffer.push(new b2Pair());
+    }
+
+    this.m_moveCapacity = 16;
+    this.m_moveCount = 0;
+    this.m_moveBuffer = new Int32Array(this.m_moveCapacity);
+
+    this.m_queryProxyId = b2BroadPhase.e_nullProxy;
+  }
+
+  /**
+   * Create a proxy with an initial AABB. Pairs are not reported until
+   * UpdatePairs is called.
+   */
+  CreateProxy(aabb: Readonly<b2AABB>, userData: any): number {
+    const proxyId = this.m_tree.CreateProxy(aabb, userData);
+    ++this.m_proxyCount;
+    this.BufferMove(proxyId);
+    return proxyId;
+  }
+
+  /** Destroy a proxy. It is up to the client to remove any pairs. */
+  DestroyProxy(proxyId: number): void {
+    this.UnBufferMove(proxyId);
+    --this.m_proxyCount;
+    this.m_tree.DestroyProxy(proxyId);
+  }
+
+  /**
+   * Call MoveProxy as many times as you like, then when you are done
+   * call UpdatePairs to finalized the proxy pairs (for your time step).
+   */
+  MoveProxy(proxyId: number, aabb: Readonly<b2AABB>, displacement: Readonly<b2Vec2>): void {
+    const buffer = this.m_tree.MoveProxy(proxyId, aabb, displacement);
+    if (buffer) {
+      this.BufferMove(proxyId);
+    }
+  }
+
+  /** Call to trigger a re-processing of it's pairs on the next call to UpdatePairs. */
+  TouchProxy(proxyId: number): void {
+    this.BufferMove(proxyId);
+  }
+
+  /** Get the fat AABB for a proxy. */
+  GetFatAABB(proxyId: number): Readonly<b2AABB> {
+    return this.m_tree.GetFatAABB(proxyId);
+  }
+
+  /** Get user data from a proxy. Returns NULL if the id is invalid. */
+  GetUserData(proxyId: number): any {
+    return this.m_tree.GetUserData(proxyId);
+  }
+
+  /** Test overlap of fat AABBs. */
+  TestOverlap(proxyIdA: number, proxyIdB: number): boolean {
+    const aabbA = this.m_tree.GetFatAABB(proxyIdA);
+    const aabbB = this.m_tree.GetFatAABB(proxyIdB);
+    return b2TestOverlap(aabbA, aabbB);
+  }
+
+  /** Get the number of proxies. */
+  GetProxyCount(): number {
+    return this.m_proxyCount;
+  }
+
+  /** Update the pairs. This results in pair callbacks. This can only add pairs. */
+  UpdatePairs(callback: b2BroadPhasePairCallback): void {
+    // Reset pair buffer
+    this.m_pairCount = 0;
+
+    // Perform tree queries for all moving proxies.
+    for (let i = 0; i < this.m_moveCount; ++i) {
+      this.m_queryProxyId = this.m_moveBuffer[i];
+      if (this.m_queryProxyId === b2BroadPhase.e_nullProxy) {
+        continue;
+      }
+
+      // We have to query the tree with the fat AABB so that
+      // we don't fail to create a pair that may touch later.
+      const fatAABB = this.m_tree.GetFatAABB(this.m_queryProxyId);
+
+      // Query tree, create pairs and add them pair buffer.
+      this.m_tree.Query(this, fatAABB);
+    }
+
+    // Reset move buffer
+    this.m_moveCount = 0;
+
+    // Sort the pair buffer to expose duplicates.
+    b2SortPairs(this.m_pairBuffer, this.m_pairCount);
+
+    // Send the pairs back to the client.
+    let i = 0;
+    while (i < this.m_pairCount) {
+      const primaryPair = this.m_pairBuffer[i];
+      const userDataA = this.m_tree.GetUserData(primaryPair.proxyIdA);
+      const userDataB = this.m_tree.GetUserData(primaryPair.proxyIdB);
+
+      callback.AddPair(userDataA, userDataB);
+      ++i;
+
+      // Skip any duplicate pairs.
+      while (i < this.m_pairCount) {
+        const pair = this.m_pairBuffer[i];
+        if (pair.proxyIdA !== primaryPair.proxyIdA || pair.proxyIdB !== primaryPair.proxyIdB) {
+          break;
+        }
+        ++i;
+      }
+    }
+  }
+
+  /**
+   * Query an AABB for overlapping proxies. The callback class
+   * is called for each proxy that overlaps the supplied AABB.
+   */
+  Query(callback: b2TreeQueryCallback, aabb: Readonly<b2AABB>): void {
+    this.m_tree.Query(callback, aabb);
+  }
+
+  /**
+   * Ray-cast against the proxies in the tree. This relies on the callback
+   * to perform a exact ray-cast in the case were the proxy contains a shape.
+   * The callback also performs the any collision filtering. This has performance
+   * roughly equal to k * log(n), where k is the number of collisions and n is the
+   * number of proxies in the tree.
+   * @param input the ray-cast input data. The ray extends from p1 to p1 + maxFraction * (p2 - p1).
+   * @param callback a callback class that is called for each proxy that is hit by the ray.
+   */
+  RayCast(callback: b2TreeRayCastCallback, input: Readonly<b2RayCastInput>): void {
+    this.m_tree.RayCast(callback, input);
+  }
+
+  /** Get the height of the embedded tree. */
+  GetTreeHeight(): number {
+    return this.m_tree.GetHeight();
+  }
+
+  /** Get the balance of the embedded tree. */
+  GetTreeBalance(): number {
+    return this.m_tree.GetMaxBalance();
+  }
+
+  /** Get the quality metric of the embedded tree. */
+  GetTreeQuality(): number {
+    return this.m_tree.GetAreaRatio();
+  }
+
+  BufferMove(proxyId: number): void {
+    if (this.m_moveCount === this.m_moveCapacity) {
+      const oldBuffer = this.m_moveBuffer;
+      this.m_moveCapacity *= 2;
+      this.m_moveBuffer = new Int32Array(this.m_moveCapacity);
+      this.m_moveBuffer.set(oldBuffer.subarray(0, this.m_moveCount));
+    }
+
+    this.m_moveBuffer[this.m_moveCount] = proxyId;
+    ++this.m_moveCount;
+  }
+
+  UnBufferMove(proxyId: number): void {
+    for (let i = 0; i < this.m_moveCount; ++i) {
+      if (this.m_moveBuffer[i] === proxyId) {
+        this.m_moveBuffer[i] = b2BroadPhase.e_nullProxy;
+        return;
+      }
+    }
+  }
+
+  /** This is called from b2DynamicTree::Query when we are gathering pairs. */
+  QueryCallback(proxyId: number): boolean {
+    // A proxy cannot form a pair with itself.
+    if (proxyId === this.m_queryProxyId) {
+      return true;
+    }
+
+    // Grow the pair buffer as needed.
+    if (this.m_pairCount === this.m_pairCapacity) {
+      this.m_pairCapacity *= 2;
+      for (let i = this.m_pairCount; i < this.m_pairCapacity; ++i) {
+        this.m_pairBuffer.push(new b2Pair());
+      }
+    }
+
+    const pair = this.m_pairBuffer[this.m_pairCount];
+    pair.proxyIdA = b2Min(proxyId, this.m_queryProxyId);
+    pair.proxyIdB = b2Max(proxyId, this.m_queryProxyId);
+    ++this.m_pairCount;
+
+    return true;
+  }
+}
+
+/*
+ * std::sort of pairs[0, count) under b2PairLessThan, in place and without allocating: an
+ * introsort (median-of-three quicksort, heapsort past a depth limit, insertion sort for short
+ * runs). Elements that compare equal are duplicates with identical ids, so the sequence of id
+ * pairs it leaves is the one std::sort leaves.
+ */
+function b2SortPairs(pairs: b2Pair[], count: number): void {
+  if (count < 2) {
+    return;
+  }
+  let depthLimit = 0;
+  for (let n = count; n > 1; n >>= 1) {
+    depthLimit += 2;
+  }
+  b2IntroSort(pairs, 0, count, depthLimit);
+  b2InsertionSort(pairs, 0, count);
+}
+
+/**
+ * Ranges this short are left for the final insertion sort (std::sort's 16; the unguarded partition
+ * needs at least 3 elements).
+ */
+const b2_sortThreshold = 16;
+
+function b2IntroSort(pairs: b2Pair[], first: number, last: number, depthLimit: number): void {
+  while (last - first > b2_sortThreshold) {
+    if (depthLimit === 0) {
+      b2HeapSort(pairs, first, last);
+      return;
+    }
+    --depthLimit;
+
+    // Median of three moved to pairs[first] as the pivot.
+    const mid = first + ((last - first) >> 1);
+    b2MoveMedianToFirst(pairs, first, first + 1, mid, last - 1);
+    const pivot = pairs[first];
+
+    // Unguarded Hoare partition of [first + 1, last): the median guards both ends.
+    let lo = first + 1;
+    let hi = last;
+    for (;;) {
+      while (b2PairLessThan(pairs[lo], pivot)) {
+        ++lo;
+      }
+      --hi;
+      while (b2PairLessThan(pivot, pairs[hi])) {
+        --hi;
+      }
+      if (!(lo < hi)) {
+        break;
+      }
+      const t = pairs[lo];
+      pairs[lo] = pairs[hi];
+      pairs[hi] = t;
+      ++lo;
+    }
+
+    // Recurse into the shorter side, loop on the longer one, so the stack stays logarithmic.
+    if (lo - first < last - lo) {
+      b2IntroSort(pairs, first, lo, depthLimit);
+      first = lo;
+    } else {
+      b2IntroSort(pairs, lo, last, depthLimit);
+      last = lo;
+    }
+  }
+}
+
+function b2MoveMedianToFirst(pairs: b2Pair[], result: number, a: number, b: number, c: number): void {
+  const pa = pairs[a];
+  const pb = pairs[b];
+  const pc = pairs[c];
+  let median: number;
+  if (b2PairLessThan(pa, pb)) {
+    if (b2PairLessThan(pb, pc)) {
+      median = b;
+    } else if (b2PairLessThan(pa, pc)) {
+      median = c;
+    } else {
+      median = a;
+    }
+  } else if (b2PairLessThan(pa, pc)) {
+    median = a;
+  } else if (b2PairLessThan(pb, pc)) {
+    median = c;
+  } else {
+    median = b;
+  }
+  const t = pairs[result];
+  pairs[result] = pairs[median];
+  pairs[median] = t;
+}
+
+function b2HeapSort(pairs: b2Pair[], first: number, last: number): void {
+  const n = last - first;
+  for (let start = (n >> 1) - 1; start >= 0; --start) {
+    b2SiftDown(pairs, first, start, n);
+  }
+  for (let end = n - 1; end > 0; --end) {
+    const t = pairs[first];
+    pairs[first] = pairs[first + end];
+    pairs[first + end] = t;
+    b2SiftDown(pairs, first, 0, end);
+  }
+}
+
+function b2SiftDown(pairs: b2Pair[], first: number, root: number, n: number): void {
+  for (;;) {
+    let child = 2 * root + 1;
+    if (child >= n) {
+      return;
+    }
+    if (child + 1 < n && b2PairLessThan(pairs[first + child], pairs[first + child + 1])) {
+      ++child;
+    }
+    if (!b2PairLessThan(pairs[first + root], pairs[first + child])) {
+      return;
+    }
+    const t = pairs[first + root];
+    pairs[first + root] = pairs[first + child];
+    pairs[first + child] = t;
+    root = child;
+  }
+}
+
+function b2InsertionSort(pairs: b2Pair[], first: number, last: number): void {
+  for (let i = first + 1; i < last; ++i) {
+    const value = pairs[i];
+    let j = i;
+    while (j > first && b2PairLessThan(value, pairs[j - 1])) {
+      pairs[j] = pairs[j - 1];
+      --j;
+    }
+    pairs[j] = value;
+  }
+}

@@ -1,0 +1,345 @@
+/*
+ * Polygon-polygon manifolds: separating axis search plus clipping (b2CollidePolygon.cpp).
+ */
+
+import { b2Vec2 } from '../common/b2Math';
+import type { b2Transform } from '../common/b2Math';
+import { b2_maxFloat, b2_maxManifoldPoints, b2Assert } from '../common/b2Settings';
+import { b2ClipSegmentToLine, b2ClipVertex, b2ContactFeature, b2Manifold } from './b2Collision';
+import type { b2PolygonShape } from './shapes/b2PolygonShape';
+
+/** Find the separation between poly1 and poly2 for a give edge normal on poly1. */
+function b2EdgeSeparation(
+  poly1: Readonly<b2PolygonShape>,
+  xf1: Readonly<b2Transform>,
+  edge1: number,
+  poly2: Readonly<b2PolygonShape>,
+  xf2: Readonly<b2Transform>,
+): number {
+  const vertices1 = poly1.m_vertices;
+  const normals1 = poly1.m_normals;
+
+  const count2 = poly2.m_vertexCount;
+  const vertices2 = poly2.m_vertices;
+
+  b2Assert(0 <= edge1 && edge1 < poly1.m_vertexCount);
+
+  // Convert normal from poly1's frame into poly2's frame.
+  const n = normals1[edge1];
+  const normal1WorldX = xf1.q.c * n.x - xf1.q.s * n.y;
+  const normal1WorldY = xf1.q.s * n.x + xf1.q.c * n.y;
+  const normal1X = xf2.q.c * normal1WorldX + xf2.q.s * normal1WorldY;
+  const normal1Y = -xf2.q.s * normal1WorldX + xf2.q.c * normal1WorldY;
+
+  // Find support vertex on poly2 for -normal.
+  let index = 0;
+  let minDot = b2_maxFloat;
+
+  for (let i = 0; i < count2; ++i) {
+    const dot = vertices2[i].x * normal1X + vertices2[i].y * normal1Y;
+    if (dot < minDot) {
+      minDot = dot;
+      index = i;
+    }
+  }
+
+  const a = vertices1[edge1];
+  const v1x = xf1.q.c * a.x - xf1.q.s * a.y + xf1.p.x;
+  const v1y = xf1.q.s * a.x + xf1.q.c * a.y + xf1.p.y;
+  const b = vertices2[index];
+  const v2x = xf2.q.c * b.x - xf2.q.s * b.y + xf2.p.x;
+  const v2y = xf2.q.s * b.x + xf2.q.c * b.y + xf2.p.y;
+  const separation = (v2x - v1x) * normal1WorldX + (v2y - v1y) * normal1WorldY;
+  return separation;
+}
+
+/**
+ * Find the max separation between poly1 and poly2 using edge normals from poly1. The edge is
+ * written to edgeIndex[0].
+ */
+function b2FindMaxSeparation(
+  edgeIndex: number[],
+  poly1: Readonly<b2PolygonShape>,
+  xf1: Readonly<b2Transform>,
+  poly2: Readonly<b2PolygonShape>,
+  xf2: Readonly<b2Transform>,
+): number {
+  const count1 = poly1.m_vertexCount;
+  const normals1 = poly1.m_normals;
+
+  // Vector pointing from the centroid of poly1 to the centroid of poly2.
+  const c2 = poly2.m_centroid;
+  const c1 = poly1.m_centroid;
+  const dx = xf2.q.c * c2.x - xf2.q.s * c2.y + xf2.p.x - (xf1.q.c * c1.x - xf1.q.s * c1.y + xf1.p.x);
+  const dy = xf2.q.s * c2.x + xf2.q.c * c2.y + xf2.p.y - (xf1.q.s * c1.x + xf1.q.c * c1.y + xf1.p.y);
+  const dLocal1X = xf1.q.c * dx + xf1.q.s * dy;
+  const dLocal1Y = -xf1.q.s * dx + xf1.q.c * dy;
+
+  // Find edge normal on poly1 that has the largest projection onto d.
+  let edge = 0;
+  let maxDot = -b2_maxFloat;
+  for (let i = 0; i < count1; ++i) {
+    const dot = normals1[i].x * dLocal1X + normals1[i].y * dLocal1Y;
+    if (dot > maxDot) {
+      maxDot = dot;
+      edge = i;
+    }
+  }
+
+  // Get the separation for the edge normal.
+  let s = b2EdgeSeparation(poly1, xf1, edge, poly2, xf2);
+
+  // Check the separation for the previous edge normal.
+  const prevEdge = edge - 1 >= 0 ? edge - 1 : count1 - 1;
+  const sPrev = b2EdgeSeparation(poly1, xf1, prevEdge, poly2, xf2);
+
+  // Check the separation for the next edge normal.
+  const nextEdge = edge + 1 < count1 ? edge + 1 : 0;
+  const sNext = b2EdgeSeparation(poly1, xf1, nextEdge, poly2, xf2);
+
+  // Find the best edge and the search direction.
+  let bestEdge: number;
+  let bestSeparation: number;
+  let increment: number;
+  if (sPrev > s && sPrev > sNext) {
+    increment = -1;
+    bestEdge = prevEdge;
+    bestSeparation = sPrev;
+  } else if (sNext > s) {
+    increment = 1;
+    bestEdge = nextEdge;
+    bestSeparation = sNext;
+  } else {
+    edgeIndex[0] = edge;
+    return s;
+  }
+
+  // Perform a local search for the best edge normal.
+  for (;;) {
+    if (increment === -1) edge = bestEdge - 1 >= 0 ? bestEdge - 1 : count1 - 1;
+    else edge = bestEdge + 1 < count1 ? bestEdge + 1 : 0;
+
+    s = b2EdgeSeparation(poly1, xf1, edge, poly2, xf2);
+
+    if (s > bestSeparation) {
+      bestEdge = edge;
+      bestSeparation = s;
+    } else {
+      break;
+    }
+  }
+
+  edgeIndex[0] = bestEdge;
+  return bestSeparation;
+}
+
+function b2FindIncidentEdge(
+  c: readonly b2ClipVertex[],
+  poly1: Readonly<b2PolygonShape>,
+  xf1: Readonly<b2Transform>,
+  edge1: number,
+  poly2: Readonly<b2PolygonShape>,
+  xf2: Readonly<b2Transform>,
+): void {
+  const normals1 = poly1.m_normals;
+
+  const count2 = poly2.m_vertexCount;
+  const vertices2 = poly2.m_vertices;
+  const normals2 = poly2.m_normals;
+
+  b2Assert(0 <= edge1 && edge1 < poly1.m_vertexCount);
+
+  // Get the normal of the reference edge in poly2's frame.
+  const n = normals1[edge1];
+  const wx = xf1.q.c * n.x - xf1.q.s * n.y;
+  const wy = xf1.q.s * n.x + xf1.q.c * n.y;
+  const normal1X = xf2.q.c * wx + xf2.q.s * wy;
+  const normal1Y = -xf2.q.s * wx + xf2.q.c * wy;
+
+  // Find the incident edge on poly2.
+  let index = 0;
+  let minDot = b2_maxFloat;
+  for (let i = 0; i < count2; ++i) {
+    const dot = normal1X * normals2[i].x + normal1Y * normals2[i].y;
+    if (dot < minDot) {
+      minDot = dot;
+      index = i;
+    }
+  }
+
+  // Build the clip vertices for the incident edge.
+  const i1 = index;
+  const i2 = i1 + 1 < count2 ? i1 + 1 : 0;
+
+  const a = vertices2[i1];
+  const c0 = c[0];
+  c0.v.x = xf2.q.c * a.x - xf2.q.s * a.y + xf2.p.x;
+  c0.v.y = xf2.q.s * a.x + xf2.q.c * a.y + xf2.p.y;
+  c0.id.cf.indexA = edge1 & 0xff;
+  c0.id.cf.indexB = i1 & 0xff;
+  c0.id.cf.typeA = b2ContactFeature.e_face;
+  c0.id.cf.typeB = b2ContactFeature.e_vertex;
+
+  const b = vertices2[i2];
+  const c1 = c[1];
+  c1.v.x = xf2.q.c * b.x - xf2.q.s * b.y + xf2.p.x;
+  c1.v.y = xf2.q.s * b.x + xf2.q.c * b.y + xf2.p.y;
+  c1.id.cf.indexA = edge1 & 0xff;
+  c1.id.cf.indexB = i2 & 0xff;
+  c1.id.cf.typeA = b2ContactFeature.e_face;
+  c1.id.cf.typeB = b2ContactFeature.e_vertex;
+}
+
+const s_edgeA = [0];
+const s_edgeB = [0];
+const s_incidentEdge = [new b2ClipVertex(), new b2ClipVertex()];
+const s_clipPoints1 = [new b2ClipVertex(), new b2ClipVertex()];
+const s_clipPoints2 = [new b2ClipVertex(), new b2ClipVertex()];
+const s_localTangent = new b2Vec2();
+const s_tangent = new b2Vec2();
+const s_negTangent = new b2Vec2();
+
+/**
+ * Compute the collision manifold between two polygons.
+ *
+ * Find edge normal of max separation on A - return if separating axis is found
+ * Find edge normal of max separation on B - return if separation axis is found
+ * Choose reference edge as min(minA, minB)
+ * Find incident edge
+ * Clip
+ *
+ * The normal points from 1 to 2
+ */
+export function b2CollidePolygons(
+  manifold: b2Manifold,
+  polyA: Readonly<b2PolygonShape>,
+  xfA: Readonly<b2Transform>,
+  polyB: Readonly<b2PolygonShape>,
+  xfB: Readonly<b2Transform>,
+): void {
+  manifold.pointCount = 0;
+  const totalRadius = polyA.m_radius + polyB.m_radius;
+
+  const separationA = b2FindMaxSeparation(s_edgeA, polyA, xfA, polyB, xfB);
+  const edgeA = s_edgeA[0];
+  if (separationA > totalRadius) return;
+
+  const separationB = b2FindMaxSeparation(s_edgeB, polyB, xfB, polyA, xfA);
+  const edgeB = s_edgeB[0];
+  if (separationB > totalRadius) return;
+
+  let poly1: Readonly<b2PolygonShape>; // reference polygon
+  let poly2: Readonly<b2PolygonShape>; // incident polygon
+  let xf1: Readonly<b2Transform>;
+  let xf2: Readonly<b2Transform>;
+  let edge1: number; // reference edge
+  let flip: number;
+  const k_relativeTol = 0.98;
+  const k_absoluteTol = 0.001;
+
+  if (separationB > k_relativeTol * separationA + k_absoluteTol) {
+    poly1 = polyB;
+    poly2 = polyA;
+    xf1 = xfB;
+    xf2 = xfA;
+    edge1 = edgeB;
+    manifold.type = b2Manifold.e_faceB;
+    flip = 1;
+  } else {
+    poly1 = polyA;
+    poly2 = polyB;
+    xf1 = xfA;
+    xf2 = xfB;
+    edge1 = edgeA;
+    manifold.type = b2Manifold.e_faceA;
+    flip = 0;
+  }
+
+  const incidentEdge = s_incidentEdge;
+  b2FindIncidentEdge(incidentEdge, poly1, xf1, edge1, poly2, xf2);
+
+  const count1 = poly1.m_vertexCount;
+  const vertices1 = poly1.m_vertices;
+
+  const iv1 = edge1;
+  const iv2 = edge1 + 1 < count1 ? edge1 + 1 : 0;
+
+  const v11 = vertices1[iv1];
+  const v12 = vertices1[iv2];
+
+  const localTangent = s_localTangent.Set(v12.x - v11.x, v12.y - v11.y);
+  localTangent.Normalize();
+
+  // b2Cross(localTangent, 1.0)
+  const localNormalX = 1.0 * localTangent.y;
+  const localNormalY = -1.0 * localTangent.x;
+  const planePointX = 0.5 * (v11.x + v12.x);
+  const planePointY = 0.5 * (v11.y + v12.y);
+
+  const qc = xf1.q.c;
+  const qs = xf1.q.s;
+  const tangentX = qc * localTangent.x - qs * localTangent.y;
+  const tangentY = qs * localTangent.x + qc * localTangent.y;
+  const normalX = 1.0 * tangentY;
+  const normalY = -1.0 * tangentX;
+
+  const v11x = qc * v11.x - qs * v11.y + xf1.p.x;
+  const v11y = qs * v11.x + qc * v11.y + xf1.p.y;
+  const v12x = qc * v12.x - qs * v12.y + xf1.p.x;
+  const v12y = qs * v12.x + qc * v12.y + xf1.p.y;
+
+  // Face offset.
+  const frontOffset = normalX * v11x + normalY * v11y;
+
+  // Side offsets, extended by polytope skin thickness.
+  const sideOffset1 = -(tangentX * v11x + tangentY * v11y) + totalRadius;
+  const sideOffset2 = tangentX * v12x + tangentY * v12y + totalRadius;
+
+  // Clip incident edge against extruded edge1 side edges.
+  const clipPoints1 = s_clipPoints1;
+  const clipPoints2 = s_clipPoints2;
+
+  // Clip to box side 1
+  let np = b2ClipSegmentToLine(clipPoints1, incidentEdge, s_negTangent.Set(-tangentX, -tangentY), sideOffset1, iv1);
+
+  if (np < 2) return;
+
+  // Clip to negative box side 1
+  np = b2ClipSegmentToLine(clipPoints2, clipPoints1, s_tangent.Set(tangentX, tangentY), sideOffset2, iv2);
+
+  if (np < 2) {
+    return;
+  }
+
+  // Now clipPoints2 contains the clipped points.
+  manifold.localNormal.Set(localNormalX, localNormalY);
+  manifold.localPoint.Set(planePointX, planePointY);
+
+  let pointCount = 0;
+  for (let i = 0; i < b2_maxManifoldPoints; ++i) {
+    const cv = clipPoints2[i].v;
+    const separation = normalX * cv.x + normalY * cv.y - frontOffset;
+
+    if (separation <= totalRadius) {
+      const cp = manifold.points[pointCount];
+      const px = cv.x - xf2.p.x;
+      const py = cv.y - xf2.p.y;
+      cp.localPoint.x = xf2.q.c * px + xf2.q.s * py;
+      cp.localPoint.y = -xf2.q.s * px + xf2.q.c * py;
+      cp.id.Assign(clipPoints2[i].id);
+      if (flip) {
+        // Swap features
+        const cf = cp.id.cf;
+        const indexA = cf.indexA;
+        const typeA = cf.typeA;
+        cf.indexA = cf.indexB;
+        cf.indexB = indexA;
+        cf.typeA = cf.typeB;
+        cf.typeB = typeA;
+      }
+      ++pointCount;
+    }
+  }
+
+  manifold.pointCount = pointCount;
+}

@@ -1,0 +1,601 @@
+/*
+ * Structures and functions used for computing contact points, distance queries, and TOI queries
+ * (b2Collision.h, b2Collision.cpp).
+ */
+
+import { b2Abs, b2Dot, b2Max, b2Min, b2MulRV, b2MulXV, b2Vec2 } from '../common/b2Math';
+import type { b2Transform } from '../common/b2Math';
+import { b2_epsilon, b2_maxFloat, b2_maxManifoldPoints } from '../common/b2Settings';
+import { b2Distance, b2DistanceInput, b2DistanceOutput, b2SimplexCache } from './b2Distance';
+import type { b2Shape } from './shapes/b2Shape';
+
+/** A fixed-size C++ array: `count` preallocated objects. */
+function makeArray<T>(count: number, make: () => T): T[] {
+  const array: T[] = [];
+  for (let i = 0; i < count; ++i) {
+    array.push(make());
+  }
+  return array;
+}
+
+/** Unused by the library; kept from the header. */
+export const b2_nullFeature = 0xff;
+
+/** The features that intersect to form the contact point. This must be 4 bytes or less. */
+export class b2ContactFeature {
+  static readonly e_vertex = 0;
+  static readonly e_face = 1;
+
+  /** Feature index on shapeA (uint8) */
+  indexA = 0;
+  /** Feature index on shapeB (uint8) */
+  indexB = 0;
+  /** The feature type on shapeA (uint8) */
+  typeA = 0;
+  /** The feature type on shapeB (uint8) */
+  typeB = 0;
+
+  Clone(): b2ContactFeature {
+    return new b2ContactFeature().Assign(this);
+  }
+
+  Assign(cf: Readonly<b2ContactFeature>): this {
+    this.indexA = cf.indexA;
+    this.indexB = cf.indexB;
+    this.typeA = cf.typeA;
+    this.typeB = cf.typeB;
+    return this;
+  }
+}
+
+/**
+ * Contact ids to facilitate warm starting. The C++ union's `key` is the uint32 view of the four
+ * feature bytes in x86 order; here it is computed from `cf`, and writing it writes the bytes.
+ */
+export class b2ContactID {
+  readonly cf = new b2ContactFeature();
+
+  /** Used to quickly compare contact ids. */
+  get key(): number {
+    const cf = this.cf;
+    return (cf.indexA | (cf.indexB << 8) | (cf.typeA << 16) | (cf.typeB << 24)) >>> 0;
+  }
+
+  set key(value: number) {
+    const cf = this.cf;
+    cf.indexA = value & 0xff;
+    cf.indexB = (value >>> 8) & 0xff;
+    cf.typeA = (value >>> 16) & 0xff;
+    cf.typeB = (value >>> 24) & 0xff;
+  }
+
+  Clone(): b2ContactID {
+    return new b2ContactID().Assign(this);
+  }
+
+  Assign(id: Readonly<b2ContactID>): this {
+    this.cf.Assign(id.cf);
+    return this;
+  }
+}
+
+/**
+ * A manifold point is a contact point belonging to a contact manifold. It holds details related
+ * to the geometry and dynamics of the contact points.
+ * The local point usage depends on the manifold type:
+ * -e_circles: the local center of circleB
+ * -e_faceA: the local center of cirlceB or the clip point of polygonB
+ * -e_faceB: the clip point of polygonA
+ * This structure is stored across time steps, so we keep it small.
+ * Note: the impulses are used for internal caching and may not provide reliable contact forces,
+ * especially for high speed collisions.
+ */
+export class b2ManifoldPoint {
+  /** usage depends on manifold type */
+  readonly localPoint = new b2Vec2();
+  /** the non-penetration impulse */
+  normalImpulse = 0.0;
+  /** the friction impulse */
+  tangentImpulse = 0.0;
+  /** uniquely identifies a contact point between two shapes */
+  readonly id = new b2ContactID();
+
+  Clone(): b2ManifoldPoint {
+    return new b2ManifoldPoint().Assign(this);
+  }
+
+  Assign(mp: Readonly<b2ManifoldPoint>): this {
+    this.localPoint.Assign(mp.localPoint);
+    this.normalImpulse = mp.normalImpulse;
+    this.tangentImpulse = mp.tangentImpulse;
+    this.id.Assign(mp.id);
+    return this;
+  }
+}
+
+/**
+ * A manifold for two touching convex shapes.
+ * Box2D supports multiple types of contact:
+ * - clip point versus plane with radius
+ * - point versus point with radius (circles)
+ * The local point usage depends on the manifold type:
+ * -e_circles: the local center of circleA
+ * -e_faceA: the center of faceA
+ * -e_faceB: the center of faceB
+ * Similarly the local normal usage:
+ * -e_circles: not used
+ * -e_faceA: the normal on polygonA
+ * -e_faceB: the normal on polygonB
+ * We store contacts in this way so that position correction can account for movement, which is
+ * critical for continuous physics. All contact scenarios must be expressed in one of these types.
+ * This structure is stored across time steps, so we keep it small.
+ */
+export class b2Manifold {
+  static readonly e_circles = 0;
+  static readonly e_faceA = 1;
+  static readonly e_faceB = 2;
+
+  /** the points of contact */
+  readonly points: readonly b2ManifoldPoint[] = makeArray(b2_maxManifoldPoints, () => new b2ManifoldPoint());
+  /** not use for Type::e_points */
+  readonly localNormal = new b2Vec2();
+  /** usage depends on manifold type */
+  readonly localPoint = new b2Vec2();
+  type = b2Manifold.e_circles;
+  /** the number of manifold points */
+  pointCount = 0;
+
+  Clone(): b2Manifold {
+    return new b2Manifold().Assign(this);
+  }
+
+  /** Deep copy, as the C++ struct assignment. */
+  Assign(m: Readonly<b2Manifold>): this {
+    for (let i = 0; i < b2_maxManifoldPoints; ++i) {
+      this.points[i].Assign(m.points[i]);
+    }
+    this.localNormal.Assign(m.localNormal);
+    this.localPoint.Assign(m.localPoint);
+    this.type = m.type;
+    this.pointCount = m.pointCount;
+    return this;
+  }
+}
+
+const s_pointA = new b2Vec2();
+const s_pointB = new b2Vec2();
+const s_planePoint = new b2Vec2();
+const s_clipPoint = new b2Vec2();
+
+/** This is used to compute the current state of a contact manifold. */
+export class b2WorldManifold {
+  /** world vector pointing from A to B */
+  readonly normal = new b2Vec2();
+  /** world contact point (point of intersection) */
+  readonly points: readonly b2Vec2[] = makeArray(b2_maxManifoldPoints, () => new b2Vec2());
+
+  /**
+   * Evaluate the manifold with supplied transforms. This assumes modest motion from the original
+   * state. This does not change the point count, impulses, etc. The radii must come from the
+   * shapes that generated the manifold.
+   */
+  Initialize(
+    manifold: Readonly<b2Manifold>,
+    xfA: Readonly<b2Transform>,
+    radiusA: number,
+    xfB: Readonly<b2Transform>,
+    radiusB: number,
+  ): void {
+    if (manifold.pointCount === 0) {
+      return;
+    }
+
+    const normal = this.normal;
+    switch (manifold.type) {
+      case b2Manifold.e_circles: {
+        normal.Set(1.0, 0.0);
+        const pointA = b2MulXV(xfA, manifold.localPoint, s_pointA);
+        const pointB = b2MulXV(xfB, manifold.points[0].localPoint, s_pointB);
+        const dx = pointA.x - pointB.x;
+        const dy = pointA.y - pointB.y;
+        if (dx * dx + dy * dy > b2_epsilon * b2_epsilon) {
+          normal.x = pointB.x - pointA.x;
+          normal.y = pointB.y - pointA.y;
+          normal.Normalize();
+        }
+
+        const cAx = pointA.x + radiusA * normal.x;
+        const cAy = pointA.y + radiusA * normal.y;
+        const cBx = pointB.x - radiusB * normal.x;
+        const cBy = pointB.y - radiusB * normal.y;
+        this.points[0].x = 0.5 * (cAx + cBx);
+        this.points[0].y = 0.5 * (cAy + cBy);
+        break;
+      }
+
+      case b2Manifold.e_faceA: {
+        b2MulRV(xfA.q, manifold.localNormal, normal);
+        const planePoint = b2MulXV(xfA, manifold.localPoint, s_planePoint);
+
+        for (let i = 0; i < manifold.pointCount; ++i) {
+          const clipPoint = b2MulXV(xfB, manifold.points[i].localPoint, s_clipPoint);
+          const k = radiusA - ((clipPoint.x - planePoint.x) * normal.x + (clipPoint.y - planePoint.y) * normal.y);
+          const cAx = clipPoint.x + k * normal.x;
+          const cAy = clipPoint.y + k * normal.y;
+          const cBx = clipPoint.x - radiusB * normal.x;
+          const cBy = clipPoint.y - radiusB * normal.y;
+          this.points[i].x = 0.5 * (cAx + cBx);
+          this.points[i].y = 0.5 * (cAy + cBy);
+        }
+        break;
+      }
+
+      case b2Manifold.e_faceB: {
+        b2MulRV(xfB.q, manifold.localNormal, normal);
+        const planePoint = b2MulXV(xfB, manifold.localPoint, s_planePoint);
+
+        for (let i = 0; i < manifold.pointCount; ++i) {
+          const clipPoint = b2MulXV(xfA, manifold.points[i].localPoint, s_clipPoint);
+          const k = radiusB - ((clipPoint.x - planePoint.x) * normal.x + (clipPoint.y - planePoint.y) * normal.y);
+          const cBx = clipPoint.x + k * normal.x;
+          const cBy = clipPoint.y + k * normal.y;
+          const cAx = clipPoint.x - radiusA * normal.x;
+          const cAy = clipPoint.y - radiusA * normal.y;
+          this.points[i].x = 0.5 * (cAx + cBx);
+          this.points[i].y = 0.5 * (cAy + cBy);
+        }
+
+        // Ensure normal points from A to B.
+        normal.x = -normal.x;
+        normal.y = -normal.y;
+        break;
+      }
+    }
+  }
+}
+
+/** This is used for determining the state of contact points. */
+export enum b2PointState {
+  /** point does not exist */
+  b2_nullState,
+  /** point was added in the update */
+  b2_addState,
+  /** point persisted across the update */
+  b2_persistState,
+  /** point was removed in the update */
+  b2_removeState,
+}
+
+export const b2_nullState = b2PointState.b2_nullState;
+export const b2_addState = b2PointState.b2_addState;
+export const b2_persistState = b2PointState.b2_persistState;
+export const b2_removeState = b2PointState.b2_removeState;
+
+/**
+ * Compute the point states given two manifolds. The states pertain to the transition from
+ * manifold1 to manifold2. So state1 is either persist or remove while state2 is either add or
+ * persist.
+ */
+export function b2GetPointStates(
+  state1: b2PointState[],
+  state2: b2PointState[],
+  manifold1: Readonly<b2Manifold>,
+  manifold2: Readonly<b2Manifold>,
+): void {
+  for (let i = 0; i < b2_maxManifoldPoints; ++i) {
+    state1[i] = b2_nullState;
+    state2[i] = b2_nullState;
+  }
+
+  // Detect persists and removes.
+  for (let i = 0; i < manifold1.pointCount; ++i) {
+    const key = manifold1.points[i].id.key;
+
+    state1[i] = b2_removeState;
+
+    for (let j = 0; j < manifold2.pointCount; ++j) {
+      if (manifold2.points[j].id.key === key) {
+        state1[i] = b2_persistState;
+        break;
+      }
+    }
+  }
+
+  // Detect persists and adds.
+  for (let i = 0; i < manifold2.pointCount; ++i) {
+    const key = manifold2.points[i].id.key;
+
+    state2[i] = b2_addState;
+
+    for (let j = 0; j < manifold1.pointCount; ++j) {
+      if (manifold1.points[j].id.key === key) {
+        state2[i] = b2_persistState;
+        break;
+      }
+    }
+  }
+}
+
+/** Used for computing contact manifolds. */
+export class b2ClipVertex {
+  readonly v = new b2Vec2();
+  readonly id = new b2ContactID();
+
+  Clone(): b2ClipVertex {
+    return new b2ClipVertex().Assign(this);
+  }
+
+  Assign(cv: Readonly<b2ClipVertex>): this {
+    this.v.Assign(cv.v);
+    this.id.Assign(cv.id);
+    return this;
+  }
+}
+
+/** Ray-cast input data. The ray extends from p1 to p1 + maxFraction * (p2 - p1). */
+export class b2RayCastInput {
+  readonly p1 = new b2Vec2();
+  readonly p2 = new b2Vec2();
+  maxFraction = 1.0;
+
+  Clone(): b2RayCastInput {
+    return new b2RayCastInput().Assign(this);
+  }
+
+  Assign(input: Readonly<b2RayCastInput>): this {
+    this.p1.Assign(input.p1);
+    this.p2.Assign(input.p2);
+    this.maxFraction = input.maxFraction;
+    return this;
+  }
+}
+
+/**
+ * Ray-cast output data. The ray hits at p1 + fraction * (p2 - p1), where p1 and p2 come from
+ * b2RayCastInput.
+ */
+export class b2RayCastOutput {
+  readonly normal = new b2Vec2();
+  fraction = 0.0;
+
+  Clone(): b2RayCastOutput {
+    return new b2RayCastOutput().Assign(this);
+  }
+
+  Assign(output: Readonly<b2RayCastOutput>): this {
+    this.normal.Assign(output.normal);
+    this.fraction = output.fraction;
+    return this;
+  }
+}
+
+/** An axis aligned bounding box. */
+export class b2AABB {
+  /** the lower vertex */
+  readonly lowerBound = new b2Vec2();
+  /** the upper vertex */
+  readonly upperBound = new b2Vec2();
+
+  Clone(): b2AABB {
+    return new b2AABB().Assign(this);
+  }
+
+  Assign(aabb: Readonly<b2AABB>): this {
+    this.lowerBound.Assign(aabb.lowerBound);
+    this.upperBound.Assign(aabb.upperBound);
+    return this;
+  }
+
+  /** Verify that the bounds are sorted. */
+  IsValid(): boolean {
+    const dx = this.upperBound.x - this.lowerBound.x;
+    const dy = this.upperBound.y - this.lowerBound.y;
+    let valid = dx >= 0.0 && dy >= 0.0;
+    valid = valid && this.lowerBound.IsValid() && this.upperBound.IsValid();
+    return valid;
+  }
+
+  /** Get the center of the AABB. */
+  GetCenter(out: b2Vec2): b2Vec2 {
+    const x = 0.5 * (this.lowerBound.x + this.upperBound.x);
+    const y = 0.5 * (this.lowerBound.y + this.upperBound.y);
+    return out.Set(x, y);
+  }
+
+  /** Get the extents of the AABB (half-widths). */
+  GetExtents(out: b2Vec2): b2Vec2 {
+    const x = 0.5 * (this.upperBound.x - this.lowerBound.x);
+    const y = 0.5 * (this.upperBound.y - this.lowerBound.y);
+    return out.Set(x, y);
+  }
+
+  /** Get the perimeter length */
+  GetPerimeter(): number {
+    const wx = this.upperBound.x - this.lowerBound.x;
+    const wy = this.upperBound.y - this.lowerBound.y;
+    return 2.0 * (wx + wy);
+  }
+
+  /** Combine an AABB into this one. */
+  Combine(aabb: Readonly<b2AABB>): void {
+    this.lowerBound.x = b2Min(this.lowerBound.x, aabb.lowerBound.x);
+    this.lowerBound.y = b2Min(this.lowerBound.y, aabb.lowerBound.y);
+    this.upperBound.x = b2Max(this.upperBound.x, aabb.upperBound.x);
+    this.upperBound.y = b2Max(this.upperBound.y, aabb.upperBound.y);
+  }
+
+  /** Combine two AABBs into this one (the C++ two-argument Combine). */
+  Combine2(aabb1: Readonly<b2AABB>, aabb2: Readonly<b2AABB>): void {
+    this.lowerBound.x = b2Min(aabb1.lowerBound.x, aabb2.lowerBound.x);
+    this.lowerBound.y = b2Min(aabb1.lowerBound.y, aabb2.lowerBound.y);
+    this.upperBound.x = b2Max(aabb1.upperBound.x, aabb2.upperBound.x);
+    this.upperBound.y = b2Max(aabb1.upperBound.y, aabb2.upperBound.y);
+  }
+
+  /** Does this aabb contain the provided AABB. */
+  Contains(aabb: Readonly<b2AABB>): boolean {
+    let result = true;
+    result = result && this.lowerBound.x <= aabb.lowerBound.x;
+    result = result && this.lowerBound.y <= aabb.lowerBound.y;
+    result = result && aabb.upperBound.x <= this.upperBound.x;
+    result = result && aabb.upperBound.y <= this.upperBound.y;
+    return result;
+  }
+
+  /** From Real-time Collision Detection, p179. */
+  RayCast(output: b2RayCastOutput, input: Readonly<b2RayCastInput>): boolean {
+    let tmin = -b2_maxFloat;
+    let tmax = b2_maxFloat;
+
+    const px = input.p1.x;
+    const py = input.p1.y;
+    const dx = input.p2.x - input.p1.x;
+    const dy = input.p2.y - input.p1.y;
+
+    let normalX = 0.0;
+    let normalY = 0.0;
+
+    // The two slabs, x then y, as the C++ loop over i.
+    for (let i = 0; i < 2; ++i) {
+      const p_i = i === 0 ? px : py;
+      const d_i = i === 0 ? dx : dy;
+      const lower_i = i === 0 ? this.lowerBound.x : this.lowerBound.y;
+      const upper_i = i === 0 ? this.upperBound.x : this.upperBound.y;
+
+      if (b2Abs(d_i) < b2_epsilon) {
+        // Parallel.
+        if (p_i < lower_i || upper_i < p_i) {
+          return false;
+        }
+      } else {
+        const inv_d = 1.0 / d_i;
+        let t1 = (lower_i - p_i) * inv_d;
+        let t2 = (upper_i - p_i) * inv_d;
+
+        // Sign of the normal vector.
+        let s = -1.0;
+
+        if (t1 > t2) {
+          const t = t1;
+          t1 = t2;
+          t2 = t;
+          s = 1.0;
+        }
+
+        // Push the min up
+        if (t1 > tmin) {
+          normalX = i === 0 ? s : 0.0;
+          normalY = i === 0 ? 0.0 : s;
+          tmin = t1;
+        }
+
+        // Pull the max down
+        tmax = b2Min(tmax, t2);
+
+        if (tmin > tmax) {
+          return false;
+        }
+      }
+    }
+
+    // Does the ray start inside the box?
+    // Does the ray intersect beyond the max fraction?
+    if (tmin < 0.0 || input.maxFraction < tmin) {
+      return false;
+    }
+
+    // Intersection.
+    output.fraction = tmin;
+    output.normal.Set(normalX, normalY);
+    return true;
+  }
+}
+
+/**
+ * Clipping for contact manifolds (Sutherland-Hodgman). vOut and vIn are arrays of two clip
+ * vertices each and must not be the same array. Returns the number of output points.
+ */
+export function b2ClipSegmentToLine(
+  vOut: readonly b2ClipVertex[],
+  vIn: readonly b2ClipVertex[],
+  normal: Readonly<b2Vec2>,
+  offset: number,
+  vertexIndexA: number,
+): number {
+  const vIn0 = vIn[0];
+  const vIn1 = vIn[1];
+
+  // Start with no output points
+  let numOut = 0;
+
+  // Calculate the distance of end points to the line
+  const distance0 = b2Dot(normal, vIn0.v) - offset;
+  const distance1 = b2Dot(normal, vIn1.v) - offset;
+
+  // If the points are behind the plane
+  if (distance0 <= 0.0) vOut[numOut++].Assign(vIn0);
+  if (distance1 <= 0.0) vOut[numOut++].Assign(vIn1);
+
+  // If the points are on different sides of the plane
+  if (distance0 * distance1 < 0.0) {
+    // Find intersection point of edge and plane
+    const interp = distance0 / (distance0 - distance1);
+    const out = vOut[numOut];
+    out.v.x = vIn0.v.x + interp * (vIn1.v.x - vIn0.v.x);
+    out.v.y = vIn0.v.y + interp * (vIn1.v.y - vIn0.v.y);
+
+    // VertexA is hitting edgeB.
+    const cf = out.id.cf;
+    cf.indexA = vertexIndexA & 0xff;
+    cf.indexB = vIn0.id.cf.indexB;
+    cf.typeA = b2ContactFeature.e_vertex;
+    cf.typeB = b2ContactFeature.e_face;
+    ++numOut;
+  }
+
+  return numOut;
+}
+
+const s_overlapInput = new b2DistanceInput();
+const s_overlapCache = new b2SimplexCache();
+const s_overlapOutput = new b2DistanceOutput();
+
+/** Determine if two generic shapes overlap (the C++ b2TestOverlap shape overload). */
+export function b2TestOverlapShapes(
+  shapeA: b2Shape,
+  indexA: number,
+  shapeB: b2Shape,
+  indexB: number,
+  xfA: Readonly<b2Transform>,
+  xfB: Readonly<b2Transform>,
+): boolean {
+  const input = s_overlapInput;
+  input.proxyA.Set(shapeA, indexA);
+  input.proxyB.Set(shapeB, indexB);
+  input.transformA.Assign(xfA);
+  input.transformB.Assign(xfB);
+  input.useRadii = true;
+
+  const cache = s_overlapCache;
+  cache.count = 0;
+
+  const output = s_overlapOutput;
+
+  b2Distance(output, cache, input);
+
+  return output.distance < 10.0 * b2_epsilon;
+}
+
+/** Test two AABBs for overlap (touching counts). */
+export function b2TestOverlap(a: Readonly<b2AABB>, b: Readonly<b2AABB>): boolean {
+  const d1x = b.lowerBound.x - a.upperBound.x;
+  const d1y = b.lowerBound.y - a.upperBound.y;
+  const d2x = a.lowerBound.x - b.upperBound.x;
+  const d2y = a.lowerBound.y - b.upperBound.y;
+
+  if (d1x > 0.0 || d1y > 0.0) return false;
+
+  if (d2x > 0.0 || d2y > 0.0) return false;
+
+  return true;
+}
