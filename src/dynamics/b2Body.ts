@@ -1,0 +1,1109 @@
+/*
+ * Rigid bodies (b2Body.h, b2Body.cpp).
+ *
+ * Bodies are created through b2World.CreateBody. Fields keep the C++ names; the ones C++ kept
+ * private for its friends (world, island, contact manager, solver, joints) are public here.
+ */
+
+import { b2Assert, b2Log } from '../common/b2Settings';
+import { b2IsValid, b2Transform, b2Sweep, b2Vec2 } from '../common/b2Math';
+import { b2MassData, b2Shape } from '../collision/shapes/b2Shape';
+import { b2Fixture, b2FixtureDef } from './b2Fixture';
+import { b2World } from './b2World';
+import type { b2ContactEdge } from './contacts/b2Contact';
+import type { b2JointEdge } from './joints/b2Joint';
+
+/**
+ * The body type.
+ * static: zero mass, zero velocity, may be manually moved
+ * kinematic: zero mass, non-zero velocity set by user, moved by solver
+ * dynamic: positive mass, non-zero velocity determined by forces, moved by solver
+ */
+export enum b2BodyType {
+  b2_staticBody = 0,
+  b2_kinematicBody = 1,
+  b2_dynamicBody = 2,
+}
+
+export const b2_staticBody = b2BodyType.b2_staticBody;
+export const b2_kinematicBody = b2BodyType.b2_kinematicBody;
+export const b2_dynamicBody = b2BodyType.b2_dynamicBody;
+
+/**
+ * A body definition holds all the data needed to construct a rigid body.
+ * You can safely re-use body definitions. Shapes are added to a body after construction.
+ */
+export class b2BodyDef {
+  /**
+   * The body type: static, kinematic, or dynamic.
+   * Note: if a dynamic body would have zero mass, the mass is set to one.
+   */
+  type: b2BodyType = b2BodyType.b2_staticBody;
+
+  /**
+   * The world position of the body. Avoid creating bodies at the origin
+   * since this can lead to many overlapping shapes.
+   */
+  readonly position = new b2Vec2(0.0, 0.0);
+
+  /** The world angle of the body in radians. */
+  angle = 0.0;
+
+  /** The linear velocity of the body's origin in world co-ordinates. */
+  readonly linearVelocity = new b2Vec2(0.0, 0.0);
+
+  /** The angular velocity of the body. */
+  angularVelocity = 0.0;
+
+  /**
+   * Linear damping is use to reduce the linear velocity. The damping parameter
+   * can be larger than 1.0f but the damping effect becomes sensitive to the
+   * time step when the damping parameter is large.
+   */
+  linearDamping = 0.0;
+
+  /**
+   * Angular damping is use to reduce the angular velocity. The damping parameter
+   * can be larger than 1.0f but the damping effect becomes sensitive to the
+   * time step when the damping parameter is large.
+   */
+  angularDamping = 0.0;
+
+  /**
+   * Set this flag to false if this body should never fall asleep. Note that
+   * this increases CPU usage.
+   */
+  allowSleep = true;
+
+  /** Is this body initially awake or sleeping? */
+  awake = true;
+
+  /** Should this body be prevented from rotating? Useful for characters. */
+  fixedRotation = false;
+
+  /**
+   * Is this a fast moving body that should be prevented from tunneling through
+   * other moving bodies? Note that all bodies are prevented from tunneling through
+   * kinematic and static bodies. This setting is only considered on dynamic bodies.
+   * @warning You should use this flag sparingly since it increases processing time.
+   */
+  bullet = false;
+
+  /** Does this body start out active? */
+  active = true;
+
+  /** Use this to store application specific body data. */
+  userData: any = null;
+
+  /** Scale the gravity applied to this body. */
+  gravityScale = 1.0;
+}
+
+// Scratch for SynchronizeFixtures and ResetMassData/SetMassData: neither calls user code while
+// holding them, and neither can re-enter itself.
+const s_xf1 = new b2Transform();
+const s_massData = new b2MassData();
+const s_localCenter = new b2Vec2();
+const s_oldCenter = new b2Vec2();
+
+/** A rigid body. These are created via b2World::CreateBody. */
+export class b2Body {
+  // m_flags
+  static readonly e_islandFlag = 0x0001;
+  static readonly e_awakeFlag = 0x0002;
+  static readonly e_autoSleepFlag = 0x0004;
+  static readonly e_bulletFlag = 0x0008;
+  static readonly e_fixedRotationFlag = 0x0010;
+  static readonly e_activeFlag = 0x0020;
+  static readonly e_toiFlag = 0x0040;
+
+  m_type: b2BodyType;
+
+  m_flags = 0;
+
+  m_islandIndex = 0;
+
+  /** The body origin transform. */
+  readonly m_xf = new b2Transform();
+  /** The swept motion for CCD. */
+  readonly m_sweep = new b2Sweep();
+
+  readonly m_linearVelocity = new b2Vec2();
+  m_angularVelocity = 0.0;
+
+  readonly m_force = new b2Vec2();
+  m_torque = 0.0;
+
+  m_world: b2World;
+  m_prev: b2Body | null = null;
+  m_next: b2Body | null = null;
+
+  m_fixtureList: b2Fixture | null = null;
+  m_fixtureCount = 0;
+
+  m_jointList: b2JointEdge | null = null;
+  m_contactList: b2ContactEdge | null = null;
+
+  m_mass = 0.0;
+  m_invMass = 0.0;
+
+  /** Rotational inertia about the center of mass. */
+  m_I = 0.0;
+  m_invI = 0.0;
+
+  m_linearDamping = 0.0;
+  m_angularDamping = 0.0;
+  m_gravityScale = 1.0;
+
+  m_sleepTime = 0.0;
+
+  m_userData: any = null;
+
+  constructor(bd: b2BodyDef, world: b2World) {
+    b2Assert(bd.position.IsValid(), 'b2Body: bd.position is not finite');
+    b2Assert(bd.linearVelocity.IsValid(), 'b2Body: bd.linearVelocity is not finite');
+    b2Assert(b2IsValid(bd.angle), 'b2Body: bd.angle is not finite');
+    b2Assert(b2IsValid(bd.angularVelocity), 'b2Body: bd.angularVelocity is not finite');
+    b2Assert(
+      b2IsValid(bd.angularDamping) && bd.angularDamping >= 0.0,
+      'b2Body: bd.angularDamping must be finite and >= 0',
+    );
+    b2Assert(
+      b2IsValid(bd.linearDamping) && bd.linearDamping >= 0.0,
+      'b2Body: bd.linearDamping must be finite and >= 0',
+    );
+
+    if (bd.bullet) {
+      this.m_flags |= b2Body.e_bulletFlag;
+    }
+    if (bd.fixedRotation) {
+      this.m_flags |= b2Body.e_fixedRotationFlag;
+    }
+    if (bd.allowSleep) {
+      this.m_flags |= b2Body.e_autoSleepFlag;
+    }
+    if (bd.awake) {
+      this.m_flags |= b2Body.e_awakeFlag;
+    }
+    if (bd.active) {
+      this.m_flags |= b2Body.e_activeFlag;
+    }
+
+    this.m_world = world;
+
+    this.m_xf.p.Assign(bd.position);
+    this.m_xf.q.Set(bd.angle);
+
+    this.m_sweep.localCenter.SetZero();
+    this.m_sweep.c0.Assign(this.m_xf.p);
+    this.m_sweep.c.Assign(this.m_xf.p);
+    this.m_sweep.a0 = bd.angle;
+    this.m_sweep.a = bd.angle;
+    this.m_sweep.alpha0 = 0.0;
+
+    this.m_linearVelocity.Assign(bd.linearVelocity);
+    this.m_angularVelocity = bd.angularVelocity;
+
+    this.m_linearDamping = bd.linearDamping;
+    this.m_angularDamping = bd.angularDamping;
+    this.m_gravityScale = bd.gravityScale;
+
+    this.m_type = bd.type;
+
+    if (this.m_type === b2BodyType.b2_dynamicBody) {
+      this.m_mass = 1.0;
+      this.m_invMass = 1.0;
+    } else {
+      this.m_mass = 0.0;
+      this.m_invMass = 0.0;
+    }
+
+    this.m_userData = bd.userData;
+  }
+
+  /**
+   * Creates a fixture and attach it to this body. Pass a b2FixtureDef if you need to set
+   * parameters like friction, restitution, user data, or filtering; or pass a shape and a
+   * density (the C++ CreateFixture(shape, density) convenience overload).
+   * The shape is cloned. If the density is non-zero, this function automatically updates the
+   * mass of the body. Contacts are not created until the next time step.
+   * @warning This function is locked during callbacks.
+   */
+  CreateFixture(defOrShape: b2FixtureDef | b2Shape, density = 0.0): b2Fixture {
+    if (this.m_world.IsLocked()) {
+      throw new Error('b2Body.CreateFixture: the world is locked (called from inside a time step or callback)');
+    }
+
+    let def: b2FixtureDef;
+    if (defOrShape instanceof b2Shape) {
+      def = new b2FixtureDef();
+      def.shape = defOrShape;
+      def.density = density;
+    } else {
+      def = defOrShape;
+    }
+
+    const fixture = new b2Fixture(this, def);
+
+    if (this.m_flags & b2Body.e_activeFlag) {
+      const broadPhase = this.m_world.m_contactManager.m_broadPhase;
+      fixture.CreateProxies(broadPhase, this.m_xf);
+    }
+
+    fixture.m_next = this.m_fixtureList;
+    this.m_fixtureList = fixture;
+    ++this.m_fixtureCount;
+
+    fixture.m_body = this;
+
+    // Adjust mass properties if needed.
+    if (fixture.m_density > 0.0) {
+      this.ResetMassData();
+    }
+
+    // Let the world know we have a new fixture. This will cause new contacts
+    // to be created at the beginning of the next time step.
+    this.m_world.m_flags |= b2World.e_newFixture;
+
+    return fixture;
+  }
+
+  /**
+   * Destroy a fixture. This removes the fixture from the broad-phase and
+   * destroys all contacts associated with this fixture. This will
+   * automatically adjust the mass of the body if the body is dynamic and the
+   * fixture has positive density.
+   * All fixtures attached to a body are implicitly destroyed when the body is destroyed.
+   * @param fixture the fixture to be removed.
+   * @warning This function is locked during callbacks.
+   */
+  DestroyFixture(fixture: b2Fixture): void {
+    if (this.m_world.IsLocked()) {
+      throw new Error('b2Body.DestroyFixture: the world is locked (called from inside a time step or callback)');
+    }
+
+    b2Assert(fixture.m_body === this, 'b2Body.DestroyFixture: the fixture belongs to another body');
+
+    // Remove the fixture from this body's singly linked list.
+    b2Assert(this.m_fixtureCount > 0, 'b2Body.DestroyFixture: the body has no fixtures');
+    let prev: b2Fixture | null = null;
+    let node = this.m_fixtureList;
+    let found = false;
+    while (node !== null) {
+      if (node === fixture) {
+        if (prev === null) {
+          this.m_fixtureList = fixture.m_next;
+        } else {
+          prev.m_next = fixture.m_next;
+        }
+        found = true;
+        break;
+      }
+
+      prev = node;
+      node = node.m_next;
+    }
+
+    // You tried to remove a shape that is not attached to this body.
+    b2Assert(found, 'b2Body.DestroyFixture: the fixture is not attached to this body');
+
+    // Destroy any contacts associated with the fixture.
+    let edge = this.m_contactList;
+    while (edge) {
+      const c = edge.contact;
+      edge = edge.next;
+
+      const fixtureA = c.GetFixtureA();
+      const fixtureB = c.GetFixtureB();
+
+      if (fixture === fixtureA || fixture === fixtureB) {
+        // This destroys the contact and removes it from
+        // this body's contact list.
+        this.m_world.m_contactManager.Destroy(c);
+      }
+    }
+
+    if (this.m_flags & b2Body.e_activeFlag) {
+      const broadPhase = this.m_world.m_contactManager.m_broadPhase;
+      fixture.DestroyProxies(broadPhase);
+    }
+
+    fixture.Destroy();
+    fixture.m_next = null;
+
+    --this.m_fixtureCount;
+
+    // Reset the mass data.
+    this.ResetMassData();
+  }
+
+  /**
+   * Set the position of the body's origin and rotation.
+   * This breaks any contacts and wakes the other bodies.
+   * Manipulating a body's transform may cause non-physical behavior.
+   * @param position the world position of the body's local origin.
+   * @param angle the world rotation in radians.
+   */
+  SetTransform(position: Readonly<b2Vec2>, angle: number): void {
+    if (this.m_world.IsLocked()) {
+      throw new Error('b2Body.SetTransform: the world is locked (called from inside a time step or callback)');
+    }
+
+    const xf = this.m_xf;
+    xf.q.Set(angle);
+    xf.p.Assign(position);
+
+    // m_sweep.c = b2Mul(m_xf, m_sweep.localCenter)
+    const lc = this.m_sweep.localCenter;
+    const lcx = lc.x;
+    const lcy = lc.y;
+    this.m_sweep.c.x = xf.q.c * lcx - xf.q.s * lcy + xf.p.x;
+    this.m_sweep.c.y = xf.q.s * lcx + xf.q.c * lcy + xf.p.y;
+    this.m_sweep.a = angle;
+
+    this.m_sweep.c0.Assign(this.m_sweep.c);
+    this.m_sweep.a0 = angle;
+
+    const broadPhase = this.m_world.m_contactManager.m_broadPhase;
+    for (let f = this.m_fixtureList; f; f = f.m_next) {
+      f.Synchronize(broadPhase, xf, xf);
+    }
+
+    this.m_world.m_contactManager.FindNewContacts();
+  }
+
+  /** Get the body transform for the body's origin (the body's own object: treat it as read-only). */
+  GetTransform(): Readonly<b2Transform> {
+    return this.m_xf;
+  }
+
+  /** Get the world body origin position (the body's own object: treat it as read-only). */
+  GetPosition(): Readonly<b2Vec2> {
+    return this.m_xf.p;
+  }
+
+  /** Get the angle in radians. */
+  GetAngle(): number {
+    return this.m_sweep.a;
+  }
+
+  /** Get the world position of the center of mass (the body's own object: treat it as read-only). */
+  GetWorldCenter(): Readonly<b2Vec2> {
+    return this.m_sweep.c;
+  }
+
+  /** Get the local position of the center of mass (the body's own object: treat it as read-only). */
+  GetLocalCenter(): Readonly<b2Vec2> {
+    return this.m_sweep.localCenter;
+  }
+
+  /**
+   * Set the linear velocity of the center of mass.
+   * @param v the new linear velocity of the center of mass.
+   */
+  SetLinearVelocity(v: Readonly<b2Vec2>): void {
+    if (this.m_type === b2BodyType.b2_staticBody) {
+      return;
+    }
+
+    if (v.x * v.x + v.y * v.y > 0.0) {
+      this.SetAwake(true);
+    }
+
+    this.m_linearVelocity.Assign(v);
+  }
+
+  /** Get the linear velocity of the center of mass (a copy, written to `out` when given). */
+  GetLinearVelocity(out: b2Vec2 = new b2Vec2()): b2Vec2 {
+    return out.Assign(this.m_linearVelocity);
+  }
+
+  /**
+   * Set the angular velocity.
+   * @param omega the new angular velocity in radians/second.
+   */
+  SetAngularVelocity(w: number): void {
+    if (this.m_type === b2BodyType.b2_staticBody) {
+      return;
+    }
+
+    if (w * w > 0.0) {
+      this.SetAwake(true);
+    }
+
+    this.m_angularVelocity = w;
+  }
+
+  /** Get the angular velocity in radians/second. */
+  GetAngularVelocity(): number {
+    return this.m_angularVelocity;
+  }
+
+  /**
+   * Apply a force at a world point. If the force is not
+   * applied at the center of mass, it will generate a torque and
+   * affect the angular velocity. This wakes up the body.
+   * @param force the world force vector, usually in Newtons (N).
+   * @param point the world position of the point of application.
+   */
+  ApplyForce(force: Readonly<b2Vec2>, point: Readonly<b2Vec2>): void {
+    if (this.m_type !== b2BodyType.b2_dynamicBody) {
+      return;
+    }
+
+    if (this.IsAwake() === false) {
+      this.SetAwake(true);
+    }
+
+    const fx = force.x;
+    const fy = force.y;
+    this.m_force.x += fx;
+    this.m_force.y += fy;
+    // b2Cross(point - m_sweep.c, force)
+    const rx = point.x - this.m_sweep.c.x;
+    const ry = point.y - this.m_sweep.c.y;
+    this.m_torque += rx * fy - ry * fx;
+  }
+
+  /**
+   * Apply a force to the center of mass. This wakes up the body.
+   * @param force the world force vector, usually in Newtons (N).
+   */
+  ApplyForceToCenter(force: Readonly<b2Vec2>): void {
+    if (this.m_type !== b2BodyType.b2_dynamicBody) {
+      return;
+    }
+
+    if (this.IsAwake() === false) {
+      this.SetAwake(true);
+    }
+
+    this.m_force.x += force.x;
+    this.m_force.y += force.y;
+  }
+
+  /**
+   * Apply a torque. This affects the angular velocity
+   * without affecting the linear velocity of the center of mass.
+   * This wakes up the body.
+   * @param torque about the z-axis (out of the screen), usually in N-m.
+   */
+  ApplyTorque(torque: number): void {
+    if (this.m_type !== b2BodyType.b2_dynamicBody) {
+      return;
+    }
+
+    if (this.IsAwake() === false) {
+      this.SetAwake(true);
+    }
+
+    this.m_torque += torque;
+  }
+
+  /**
+   * Apply an impulse at a point. This immediately modifies the velocity.
+   * It also modifies the angular velocity if the point of application
+   * is not at the center of mass. This wakes up the body.
+   * @param impulse the world impulse vector, usually in N-seconds or kg-m/s.
+   * @param point the world position of the point of application.
+   */
+  ApplyLinearImpulse(impulse: Readonly<b2Vec2>, point: Readonly<b2Vec2>): void {
+    if (this.m_type !== b2BodyType.b2_dynamicBody) {
+      return;
+    }
+
+    if (this.IsAwake() === false) {
+      this.SetAwake(true);
+    }
+    const ix = impulse.x;
+    const iy = impulse.y;
+    this.m_linearVelocity.x += this.m_invMass * ix;
+    this.m_linearVelocity.y += this.m_invMass * iy;
+    // m_invI * b2Cross(point - m_sweep.c, impulse)
+    const rx = point.x - this.m_sweep.c.x;
+    const ry = point.y - this.m_sweep.c.y;
+    this.m_angularVelocity += this.m_invI * (rx * iy - ry * ix);
+  }
+
+  /**
+   * Apply an angular impulse.
+   * @param impulse the angular impulse in units of kg*m*m/s
+   */
+  ApplyAngularImpulse(impulse: number): void {
+    if (this.m_type !== b2BodyType.b2_dynamicBody) {
+      return;
+    }
+
+    if (this.IsAwake() === false) {
+      this.SetAwake(true);
+    }
+    this.m_angularVelocity += this.m_invI * impulse;
+  }
+
+  /**
+   * Get the total mass of the body.
+   * @return the mass, usually in kilograms (kg).
+   */
+  GetMass(): number {
+    return this.m_mass;
+  }
+
+  /**
+   * Get the rotational inertia of the body about the local origin.
+   * @return the rotational inertia, usually in kg-m^2.
+   */
+  GetInertia(): number {
+    const lc = this.m_sweep.localCenter;
+    return this.m_I + this.m_mass * (lc.x * lc.x + lc.y * lc.y);
+  }
+
+  /**
+   * Get the mass data of the body.
+   * @return a struct containing the mass, inertia and center of the body.
+   */
+  GetMassData(data: b2MassData): b2MassData {
+    const lc = this.m_sweep.localCenter;
+    data.mass = this.m_mass;
+    data.I = this.m_I + this.m_mass * (lc.x * lc.x + lc.y * lc.y);
+    data.center.Assign(lc);
+    return data;
+  }
+
+  /**
+   * Set the mass properties to override the mass properties of the fixtures.
+   * Note that this changes the center of mass position.
+   * Note that creating or destroying fixtures can also alter the mass.
+   * This function has no effect if the body isn't dynamic.
+   * @param massData the mass properties.
+   */
+  SetMassData(massData: Readonly<b2MassData>): void {
+    if (this.m_world.IsLocked()) {
+      throw new Error('b2Body.SetMassData: the world is locked (called from inside a time step or callback)');
+    }
+
+    if (this.m_type !== b2BodyType.b2_dynamicBody) {
+      return;
+    }
+
+    this.m_invMass = 0.0;
+    this.m_I = 0.0;
+    this.m_invI = 0.0;
+
+    this.m_mass = massData.mass;
+    if (this.m_mass <= 0.0) {
+      this.m_mass = 1.0;
+    }
+
+    this.m_invMass = 1.0 / this.m_mass;
+
+    if (massData.I > 0.0 && (this.m_flags & b2Body.e_fixedRotationFlag) === 0) {
+      const center = massData.center;
+      this.m_I = massData.I - this.m_mass * (center.x * center.x + center.y * center.y);
+      b2Assert(this.m_I > 0.0, 'b2Body.SetMassData: the rotational inertia about the center of mass must be positive');
+      this.m_invI = 1.0 / this.m_I;
+    }
+
+    // Move center of mass.
+    this.m_sweep.localCenter.Assign(massData.center);
+    this.MoveCenterOfMass();
+  }
+
+  /**
+   * This resets the mass properties to the sum of the mass properties of the fixtures.
+   * This normally does not need to be called unless you called SetMassData to override
+   * the mass and you later want to reset the mass.
+   */
+  ResetMassData(): void {
+    // Compute mass data from shapes. Each shape has its own density.
+    this.m_mass = 0.0;
+    this.m_invMass = 0.0;
+    this.m_I = 0.0;
+    this.m_invI = 0.0;
+    this.m_sweep.localCenter.SetZero();
+
+    // Static and kinematic bodies have zero mass.
+    if (this.m_type === b2BodyType.b2_staticBody || this.m_type === b2BodyType.b2_kinematicBody) {
+      this.m_sweep.c0.Assign(this.m_xf.p);
+      this.m_sweep.c.Assign(this.m_xf.p);
+      this.m_sweep.a0 = this.m_sweep.a;
+      return;
+    }
+
+    b2Assert(this.m_type === b2BodyType.b2_dynamicBody, 'b2Body.ResetMassData: unknown body type');
+
+    // Accumulate mass over all fixtures.
+    const localCenter = s_localCenter.SetZero();
+    const massData = s_massData;
+    for (let f = this.m_fixtureList; f; f = f.m_next) {
+      if (f.m_density === 0.0) {
+        continue;
+      }
+
+      f.GetMassData(massData);
+      this.m_mass += massData.mass;
+      localCenter.x += massData.mass * massData.center.x;
+      localCenter.y += massData.mass * massData.center.y;
+      this.m_I += massData.I;
+    }
+
+    // Compute center of mass.
+    if (this.m_mass > 0.0) {
+      this.m_invMass = 1.0 / this.m_mass;
+      localCenter.x *= this.m_invMass;
+      localCenter.y *= this.m_invMass;
+    } else {
+      // Force all dynamic bodies to have a positive mass.
+      this.m_mass = 1.0;
+      this.m_invMass = 1.0;
+    }
+
+    if (this.m_I > 0.0 && (this.m_flags & b2Body.e_fixedRotationFlag) === 0) {
+      // Center the inertia about the center of mass.
+      this.m_I -= this.m_mass * (localCenter.x * localCenter.x + localCenter.y * localCenter.y);
+      b2Assert(this.m_I > 0.0, 'b2Body.ResetMassData: the rotational inertia about the center of mass must be positive');
+      this.m_invI = 1.0 / this.m_I;
+    } else {
+      this.m_I = 0.0;
+      this.m_invI = 0.0;
+    }
+
+    // Move center of mass.
+    this.m_sweep.localCenter.Assign(localCenter);
+    this.MoveCenterOfMass();
+  }
+
+  /**
+   * The tail shared by SetMassData and ResetMassData once m_sweep.localCenter holds the new
+   * center: move the world center there and keep the velocity of the body origin.
+   */
+  private MoveCenterOfMass(): void {
+    const oldCenter = s_oldCenter.Assign(this.m_sweep.c);
+    const xf = this.m_xf;
+    const lc = this.m_sweep.localCenter;
+    // m_sweep.c0 = m_sweep.c = b2Mul(m_xf, m_sweep.localCenter)
+    this.m_sweep.c.x = xf.q.c * lc.x - xf.q.s * lc.y + xf.p.x;
+    this.m_sweep.c.y = xf.q.s * lc.x + xf.q.c * lc.y + xf.p.y;
+    this.m_sweep.c0.Assign(this.m_sweep.c);
+
+    // Update center of mass velocity: m_linearVelocity += b2Cross(m_angularVelocity, m_sweep.c - oldCenter)
+    const w = this.m_angularVelocity;
+    const dx = this.m_sweep.c.x - oldCenter.x;
+    const dy = this.m_sweep.c.y - oldCenter.y;
+    this.m_linearVelocity.x += -w * dy;
+    this.m_linearVelocity.y += w * dx;
+  }
+
+  /**
+   * Get the world coordinates of a point given the local coordinates.
+   * @param localPoint a point on the body measured relative the the body's origin.
+   * @return the same point expressed in world coordinates (in `out` when given).
+   */
+  GetWorldPoint(localPoint: Readonly<b2Vec2>, out: b2Vec2 = new b2Vec2()): b2Vec2 {
+    const xf = this.m_xf;
+    const x = localPoint.x;
+    const y = localPoint.y;
+    out.x = xf.q.c * x - xf.q.s * y + xf.p.x;
+    out.y = xf.q.s * x + xf.q.c * y + xf.p.y;
+    return out;
+  }
+
+  /**
+   * Get the world coordinates of a vector given the local coordinates.
+   * @param localVector a vector fixed in the body.
+   * @return the same vector expressed in world coordinates (in `out` when given).
+   */
+  GetWorldVector(localVector: Readonly<b2Vec2>, out: b2Vec2 = new b2Vec2()): b2Vec2 {
+    const q = this.m_xf.q;
+    const x = localVector.x;
+    const y = localVector.y;
+    out.x = q.c * x - q.s * y;
+    out.y = q.s * x + q.c * y;
+    return out;
+  }
+
+  /**
+   * Gets a local point relative to the body's origin given a world point.
+   * @param a point in world coordinates.
+   * @return the corresponding local point relative to the body's origin (in `out` when given).
+   */
+  GetLocalPoint(worldPoint: Readonly<b2Vec2>, out: b2Vec2 = new b2Vec2()): b2Vec2 {
+    const xf = this.m_xf;
+    const px = worldPoint.x - xf.p.x;
+    const py = worldPoint.y - xf.p.y;
+    out.x = xf.q.c * px + xf.q.s * py;
+    out.y = -xf.q.s * px + xf.q.c * py;
+    return out;
+  }
+
+  /**
+   * Gets a local vector given a world vector.
+   * @param a vector in world coordinates.
+   * @return the corresponding local vector (in `out` when given).
+   */
+  GetLocalVector(worldVector: Readonly<b2Vec2>, out: b2Vec2 = new b2Vec2()): b2Vec2 {
+    const q = this.m_xf.q;
+    const x = worldVector.x;
+    const y = worldVector.y;
+    out.x = q.c * x + q.s * y;
+    out.y = -q.s * x + q.c * y;
+    return out;
+  }
+
+  /**
+   * Get the world linear velocity of a world point attached to this body.
+   * @param a point in world coordinates.
+   * @return the world velocity of a point (in `out` when given).
+   */
+  GetLinearVelocityFromWorldPoint(worldPoint: Readonly<b2Vec2>, out: b2Vec2 = new b2Vec2()): b2Vec2 {
+    // m_linearVelocity + b2Cross(m_angularVelocity, worldPoint - m_sweep.c)
+    const w = this.m_angularVelocity;
+    const dx = worldPoint.x - this.m_sweep.c.x;
+    const dy = worldPoint.y - this.m_sweep.c.y;
+    out.x = this.m_linearVelocity.x + -w * dy;
+    out.y = this.m_linearVelocity.y + w * dx;
+    return out;
+  }
+
+  /**
+   * Get the world velocity of a local point.
+   * @param a point in local coordinates.
+   * @return the world velocity of a point (in `out` when given).
+   */
+  GetLinearVelocityFromLocalPoint(localPoint: Readonly<b2Vec2>, out: b2Vec2 = new b2Vec2()): b2Vec2 {
+    return this.GetLinearVelocityFromWorldPoint(this.GetWorldPoint(localPoint, out), out);
+  }
+
+  /** Get the linear damping of the body. */
+  GetLinearDamping(): number {
+    return this.m_linearDamping;
+  }
+
+  /** Set the linear damping of the body. */
+  SetLinearDamping(linearDamping: number): void {
+    this.m_linearDamping = linearDamping;
+  }
+
+  /** Get the angular damping of the body. */
+  GetAngularDamping(): number {
+    return this.m_angularDamping;
+  }
+
+  /** Set the angular damping of the body. */
+  SetAngularDamping(angularDamping: number): void {
+    this.m_angularDamping = angularDamping;
+  }
+
+  /** Get the gravity scale of the body. */
+  GetGravityScale(): number {
+    return this.m_gravityScale;
+  }
+
+  /** Set the gravity scale of the body. */
+  SetGravityScale(scale: number): void {
+    this.m_gravityScale = scale;
+  }
+
+  /**
+   * Set the type of this body. This may alter the mass and velocity.
+   * Contacts are flagged for filtering: those the new type rules out are destroyed by the
+   * next time step's collide phase.
+   */
+  SetType(type: b2BodyType): void {
+    if (this.m_world.IsLocked()) {
+      throw new Error('b2Body.SetType: the world is locked (called from inside a time step or callback)');
+    }
+
+    if (this.m_type === type) {
+      return;
+    }
+
+    this.m_type = type;
+
+    this.ResetMassData();
+
+    if (this.m_type === b2BodyType.b2_staticBody) {
+      this.m_linearVelocity.SetZero();
+      this.m_angularVelocity = 0.0;
+      this.m_sweep.a0 = this.m_sweep.a;
+      this.m_sweep.c0.Assign(this.m_sweep.c);
+      this.SynchronizeFixtures();
+    }
+
+    this.SetAwake(true);
+
+    this.m_force.SetZero();
+    this.m_torque = 0.0;
+
+    // Since the body type changed, we need to flag contacts for filtering.
+    for (let f = this.m_fixtureList; f; f = f.m_next) {
+      f.Refilter();
+    }
+  }
+
+  /** Get the type of this body. */
+  GetType(): b2BodyType {
+    return this.m_type;
+  }
+
+  /** Should this body be treated like a bullet for continuous collision detection? */
+  SetBullet(flag: boolean): void {
+    if (flag) {
+      this.m_flags |= b2Body.e_bulletFlag;
+    } else {
+      this.m_flags &= ~b2Body.e_bulletFlag;
+    }
+  }
+
+  /** Is this body treated like a bullet for continuous collision detection? */
+  IsBullet(): boolean {
+    return (this.m_flags & b2Body.e_bulletFlag) === b2Body.e_bulletFlag;
+  }
+
+  /**
+   * You can disable sleeping on this body. If you disable sleeping, the
+   * body will be woken.
+   */
+  SetSleepingAllowed(flag: boolean): void {
+    if (flag) {
+      this.m_flags |= b2Body.e_autoSleepFlag;
+    } else {
+      this.m_flags &= ~b2Body.e_autoSleepFlag;
+      this.SetAwake(true);
+    }
+  }
+
+  /** Is this body allowed to sleep */
+  IsSleepingAllowed(): boolean {
+    return (this.m_flags & b2Body.e_autoSleepFlag) === b2Body.e_autoSleepFlag;
+  }
+
+  /**
+   * Set the sleep state of the body. A sleeping body has very
+   * low CPU cost.
+   * @param flag set to true to put body to sleep, false to wake it.
+   */
+  SetAwake(flag: boolean): void {
+    if (flag) {
+      if ((this.m_flags & b2Body.e_awakeFlag) === 0) {
+        this.m_flags |= b2Body.e_awakeFlag;
+        this.m_sleepTime = 0.0;
+      }
+    } else {
+      this.m_flags &= ~b2Body.e_awakeFlag;
+      this.m_sleepTime = 0.0;
+      this.m_linearVelocity.SetZero();
+      this.m_angularVelocity = 0.0;
+      this.m_force.SetZero();
+      this.m_torque = 0.0;
+    }
+  }
+
+  /**
+   * Get the sleeping state of this body.
+   * @return true if the body is awake.
+   */
+  IsAwake(): boolean {
+    return (this.m_flags & b2Body.e_awakeFlag) === b2Body.e_awakeFlag;
+  }
+
+  /**
+   * Set the active state of the body. An inactive body is not
+   * simulated and cannot be collided with or woken up.
+   * If you pass a flag of true, all fixtures will be added to the
+   * broad-phase.
+   * If you pass a flag of false, all fixtures will be removed from
+   * the broad-phase and all contacts will be destroyed.
+   * Fixtures and joints are otherwise unaffected. You may continue
+   * to create/destroy fixtures and joints on inactive bodies.
+   * Fixtures on an inactive body are implicitly inactive and will
+   * not participate in collisions, ray-casts, or queries.
+   * Joints connected to an inactive body are implicitly inactive.
+   * An inactive body is still owned by a b2World object and remains
+   * in the body list.
+   */
+  SetActive(flag: boolean): void {
+    if (this.m_world.IsLocked()) {
+      throw new Error('b2Body.SetActive: the world is locked (called from inside a time step or callback)');
+    }
+
+    if (flag === this.IsActive()) {
+      return;
+    }
+
+    if (flag) {
+      this.m_flags |= b2Body.e_activeFlag;
+
+      // Create all proxies.
+      const broadPhase = this.m_world.m_contactManager.m_broadPhase;
+      for (let f = this.m_fixtureList; f; f = f.m_next) {
+        f.CreateProxies(broadPhase, this.m_xf);
+      }
+
+      // Contacts are created the next time step.
+    } else {
+      this.m_flags &= ~b2Body.e_activeFlag;
+
+      // Destroy all proxies.
+      const broadPhase = this.m_world.m_contactManager.m_broadPhase;
+      for (let f = this.m_fixtureList; f; f = f.m_next) {
+        f.DestroyProxies(broadPhase);
+      }
+
+      // Destroy the attached contacts.
+      let ce = this.m_contactList;
+      while (ce) {
+        const ce0 = ce;
+        ce = ce.next;
+        this.m_world.m_contactManager.Destroy(ce0.contact);
+      }
+      this.m_contactList = null;
+    }
+  }
+
+  /** Get the active state of the body. */
+  IsActive(): boolean {
+    return (this.m_flags & b2Body.e_activeFlag) === b2Body.e_activeFlag;
+  }
+
+  /**
+   * Set this body to have fixed rotation. This causes the mass
+   * to be reset.
+   */
+  SetFixedRotation(flag: boolean): void {
+    if (flag) {
+      this.m_flags |= b2Body.e_fixedRotationFlag;
+    } else {
+      this.m_flags &= ~b2Body.e_fixedRotationFlag;
+    }
+
+    this.ResetMassData();
+  }
+
+  /** Does this body have fixed rotation? */
+  IsFixedRotation(): boolean {
+    return (this.m_flags & b2Body.e_fixedRotationFlag) === b2Body.e_fixedRotationFlag;
+  }
+
+  /** Get the list of all fixtures attached to this body. */
+  GetFixtureList(): b2Fixture | null {
+    return this.m_fixtureList;
+  }
+
+  /** Get the list of all joints attached to this body. */
+  GetJointList(): b2JointEdge | null {
+    return this.m_jointList;
+  }
+
+  /**
+   * Get the list of all contacts attached to this body.
+   * @warning this list changes during the time step and you may
+   * miss some collisions if you don't use b2ContactListener.
+   */
+  GetContactList(): b2ContactEdge | null {
+    return this.m_contactList;
+  }
+
+  /** Get the next body in the world's body list. */
+  GetNext(): b2Body | null {
+    return this.m_next;
+  }
+
+  /** Get the user data pointer that was provided in the body definition. */
+  GetUserData(): any {
+    return this.m_userData;
+  }
+
+  /** Set the user data. Use this to store your application specific data. */
+  SetUserData(data: any): void {
+    this.m_userData = data;
+  }
+
+  /** Get the parent world of this body. */
+  GetWorld(): b2World {
+    return this.m_world;
+  }
+
+  /** Dump this body to a log file */
+  Dump(): void {
+    const bodyIndex = this.m_islandIndex;
+
+    b2Log('{\n');
+    b2Log('  b2BodyDef bd;\n');
+    b2Log('  bd.type = b2BodyType(%d);\n', this.m_type);
+    b2Log('  bd.position.Set(%.15lef, %.15lef);\n', this.m_xf.p.x, this.m_xf.p.y);
+    b2Log('  bd.angle = %.15lef;\n', this.m_sweep.a);
+    b2Log('  bd.linearVelocity.Set(%.15lef, %.15lef);\n', this.m_linearVelocity.x, this.m_linearVelocity.y);
+    b2Log('  bd.angularVelocity = %.15lef;\n', this.m_angularVelocity);
+    b2Log('  bd.linearDamping = %.15lef;\n', this.m_linearDamping);
+    b2Log('  bd.angularDamping = %.15lef;\n', this.m_angularDamping);
+    b2Log('  bd.allowSleep = bool(%d);\n', this.m_flags & b2Body.e_autoSleepFlag);
+    b2Log('  bd.awake = bool(%d);\n', this.m_flags & b2Body.e_awakeFlag);
+    b2Log('  bd.fixedRotation = bool(%d);\n', this.m_flags & b2Body.e_fixedRotationFlag);
+    b2Log('  bd.bullet = bool(%d);\n', this.m_flags & b2Body.e_bulletFlag);
+    b2Log('  bd.active = bool(%d);\n', this.m_flags & b2Body.e_activeFlag);
+    b2Log('  bd.gravityScale = %.15lef;\n', this.m_gravityScale);
+    b2Log('  bodies[%d] = m_world->CreateBody(&bd);\n', this.m_islandIndex);
+    b2Log('\n');
+    for (let f = this.m_fixtureList; f; f = f.m_next) {
+      b2Log('  {\n');
+      f.Dump(bodyIndex);
+      b2Log('  }\n');
+    }
+    b2Log('}\n');
+  }
+
+  /** Recompute the broad-phase proxies for the motion from (c0, a0) to the current transform. */
+  SynchronizeFixtures(): void {
+    const xf1 = s_xf1;
+    xf1.q.Set(this.m_sweep.a0);
+    // xf1.p = m_sweep.c0 - b2Mul(xf1.q, m_sweep.localCenter)
+    const lc = this.m_sweep.localCenter;
+    xf1.p.x = this.m_sweep.c0.x - (xf1.q.c * lc.x - xf1.q.s * lc.y);
+    xf1.p.y = this.m_sweep.c0.y - (xf1.q.s * lc.x + xf1.q.c * lc.y);
+
+    const broadPhase = this.m_world.m_contactManager.m_broadPhase;
+    for (let f = this.m_fixtureList; f; f = f.m_next) {
+      f.Synchronize(broadPhase, xf1, this.m_xf);
+    }
+  }
+
+  /** Rebuild the origin transform from the sweep's current center and angle. */
+  SynchronizeTransform(): void {
+    const xf = this.m_xf;
+    xf.q.Set(this.m_sweep.a);
+    // m_xf.p = m_sweep.c - b2Mul(m_xf.q, m_sweep.localCenter)
+    const lc = this.m_sweep.localCenter;
+    xf.p.x = this.m_sweep.c.x - (xf.q.c * lc.x - xf.q.s * lc.y);
+    xf.p.y = this.m_sweep.c.y - (xf.q.s * lc.x + xf.q.c * lc.y);
+  }
+
+  /**
+   * This is used to prevent connected bodies from colliding.
+   * It may lie, depending on the collideConnected flag.
+   */
+  ShouldCollide(other: b2Body): boolean {
+    // At least one body should be dynamic.
+    if (this.m_type !== b2BodyType.b2_dynamicBody && other.m_type !== b2BodyType.b2_dynamicBody) {
+      return false;
+    }
+
+    // Does a joint prevent collision?
+    for (let jn = this.m_jointList; jn; jn = jn.next) {
+      if (jn.other === other) {
+        if (jn.joint.m_collideConnected === false) {
+          return false;
+        }
+      }
+    }
+
+    return true;
+  }
+
+  /** Advance to the new safe time. This doesn't sync the broad-phase. */
+  Advance(alpha: number): void {
+    this.m_sweep.Advance(alpha);
+    this.m_sweep.c.Assign(this.m_sweep.c0);
+    this.m_sweep.a = this.m_sweep.a0;
+    this.SynchronizeTransform();
+  }
+}

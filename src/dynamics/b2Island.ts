@@ -1,0 +1,404 @@
+/*
+ * The island solver (b2Island.h, b2Island.cpp).
+ *
+ * The C++ builds an island and a contact solver from the stack allocator for every solve. Here
+ * the world keeps one island and re-initialises it with Initialize(), and the island keeps one
+ * contact solver: the capacities are the C++ ones (SolveTOI stops growing its mini island when
+ * they are reached), while the backing arrays only grow, so steady-state steps do not allocate.
+ */
+
+import { b2Abs, b2Clamp, b2Max, b2Min, type b2Vec2 } from '../common/b2Math';
+import {
+  b2Assert,
+  b2_angularSleepTolerance,
+  b2_linearSleepTolerance,
+  b2_maxFloat,
+  b2_maxRotation,
+  b2_maxRotationSquared,
+  b2_maxTranslation,
+  b2_maxTranslationSquared,
+  b2_timeToSleep,
+} from '../common/b2Settings';
+import { b2Timer } from '../common/b2Timer';
+import { b2Body, b2BodyType } from './b2Body';
+import { b2Position, b2SolverData, b2Velocity, type b2Profile, type b2TimeStep } from './b2TimeStep';
+import { b2ContactImpulse, type b2ContactListener } from './b2WorldCallbacks';
+import type { b2Contact } from './contacts/b2Contact';
+import { b2ContactSolver, b2ContactSolverDef, type b2ContactVelocityConstraint } from './contacts/b2ContactSolver';
+import type { b2Joint } from './joints/b2Joint';
+
+/** This is an internal class. */
+export class b2Island {
+  m_listener: b2ContactListener | null = null;
+
+  // Never replaced: the solver data and the contact solver def share these arrays.
+  readonly m_bodies: b2Body[] = [];
+  readonly m_contacts: b2Contact[] = [];
+  readonly m_joints: b2Joint[] = [];
+
+  readonly m_positions: b2Position[] = [];
+  readonly m_velocities: b2Velocity[] = [];
+
+  m_bodyCount = 0;
+  m_jointCount = 0;
+  m_contactCount = 0;
+
+  m_bodyCapacity = 0;
+  m_contactCapacity = 0;
+  m_jointCapacity = 0;
+
+  private readonly m_timer = new b2Timer();
+  private readonly m_solverData = new b2SolverData();
+  private readonly m_contactSolverDef = new b2ContactSolverDef();
+  private readonly m_contactSolver = new b2ContactSolver();
+  private readonly m_impulse = new b2ContactImpulse();
+
+  constructor(bodyCapacity: number, contactCapacity: number, jointCapacity: number, listener: b2ContactListener | null) {
+    this.m_solverData.positions = this.m_positions;
+    this.m_solverData.velocities = this.m_velocities;
+    this.m_contactSolverDef.contacts = this.m_contacts;
+    this.m_contactSolverDef.positions = this.m_positions;
+    this.m_contactSolverDef.velocities = this.m_velocities;
+    this.Initialize(bodyCapacity, contactCapacity, jointCapacity, listener);
+  }
+
+  /**
+   * Make this island the one the C++ constructor would build: empty, with these capacities and
+   * this listener. The position and velocity buffers grow geometrically and are never shrunk.
+   */
+  Initialize(bodyCapacity: number, contactCapacity: number, jointCapacity: number, listener: b2ContactListener | null): void {
+    this.m_bodyCapacity = bodyCapacity;
+    this.m_contactCapacity = contactCapacity;
+    this.m_jointCapacity = jointCapacity;
+    this.m_bodyCount = 0;
+    this.m_contactCount = 0;
+    this.m_jointCount = 0;
+
+    this.m_listener = listener;
+
+    const length = this.m_positions.length;
+    if (length < bodyCapacity) {
+      const newLength = b2Max(bodyCapacity, 2 * length);
+      for (let i = length; i < newLength; ++i) {
+        this.m_positions.push(new b2Position());
+        this.m_velocities.push(new b2Velocity());
+      }
+    }
+  }
+
+  Clear(): void {
+    this.m_bodyCount = 0;
+    this.m_contactCount = 0;
+    this.m_jointCount = 0;
+  }
+
+  Solve(profile: b2Profile, step: Readonly<b2TimeStep>, gravity: Readonly<b2Vec2>, allowSleep: boolean): void {
+    const timer = this.m_timer;
+    timer.Reset();
+
+    const h = step.dt;
+    const positions = this.m_positions;
+    const velocities = this.m_velocities;
+
+    // Integrate velocities and apply damping. Initialize the body state.
+    for (let i = 0; i < this.m_bodyCount; ++i) {
+      const b = this.m_bodies[i];
+      const sweep = b.m_sweep;
+
+      const cx = sweep.c.x;
+      const cy = sweep.c.y;
+      const a = sweep.a;
+      let vx = b.m_linearVelocity.x;
+      let vy = b.m_linearVelocity.y;
+      let w = b.m_angularVelocity;
+
+      // Store positions for continuous collision.
+      sweep.c0.Assign(sweep.c);
+      sweep.a0 = sweep.a;
+
+      if (b.m_type === b2BodyType.b2_dynamicBody) {
+        // Integrate velocities.
+        vx += h * (b.m_gravityScale * gravity.x + b.m_invMass * b.m_force.x);
+        vy += h * (b.m_gravityScale * gravity.y + b.m_invMass * b.m_force.y);
+        w += h * b.m_invI * b.m_torque;
+
+        // Apply damping.
+        // ODE: dv/dt + c * v = 0
+        // Solution: v(t) = v0 * exp(-c * t)
+        // Time step: v(t + dt) = v0 * exp(-c * (t + dt)) = v0 * exp(-c * t) * exp(-c * dt) = v * exp(-c * dt)
+        // v2 = exp(-c * dt) * v1
+        // Taylor expansion:
+        // v2 = (1.0f - c * dt) * v1
+        const linearScale = b2Clamp(1.0 - h * b.m_linearDamping, 0.0, 1.0);
+        vx *= linearScale;
+        vy *= linearScale;
+        w *= b2Clamp(1.0 - h * b.m_angularDamping, 0.0, 1.0);
+      }
+
+      const position = positions[i];
+      position.c.x = cx;
+      position.c.y = cy;
+      position.a = a;
+      const velocity = velocities[i];
+      velocity.v.x = vx;
+      velocity.v.y = vy;
+      velocity.w = w;
+    }
+
+    timer.Reset();
+
+    // Solver data
+    const solverData = this.m_solverData;
+    solverData.step.Assign(step);
+
+    // Initialize velocity constraints.
+    const contactSolver = this.CreateContactSolver(step);
+    contactSolver.InitializeVelocityConstraints();
+
+    if (step.warmStarting) {
+      contactSolver.WarmStart();
+    }
+
+    for (let i = 0; i < this.m_jointCount; ++i) {
+      this.m_joints[i].InitVelocityConstraints(solverData);
+    }
+
+    profile.solveInit = timer.GetMilliseconds();
+
+    // Solve velocity constraints
+    timer.Reset();
+    for (let i = 0; i < step.velocityIterations; ++i) {
+      for (let j = 0; j < this.m_jointCount; ++j) {
+        this.m_joints[j].SolveVelocityConstraints(solverData);
+      }
+
+      contactSolver.SolveVelocityConstraints();
+    }
+
+    // Store impulses for warm starting
+    contactSolver.StoreImpulses();
+    profile.solveVelocity = timer.GetMilliseconds();
+
+    // Integrate positions
+    for (let i = 0; i < this.m_bodyCount; ++i) {
+      this.IntegratePosition(i, h);
+    }
+
+    // Solve position constraints
+    timer.Reset();
+    let positionSolved = false;
+    for (let i = 0; i < step.positionIterations; ++i) {
+      const contactsOkay = contactSolver.SolvePositionConstraints();
+
+      let jointsOkay = true;
+      for (let j = 0; j < this.m_jointCount; ++j) {
+        const jointOkay = this.m_joints[j].SolvePositionConstraints(solverData);
+        jointsOkay = jointsOkay && jointOkay;
+      }
+
+      if (contactsOkay && jointsOkay) {
+        // Exit early if the position errors are small.
+        positionSolved = true;
+        break;
+      }
+    }
+
+    // Copy state buffers back to the bodies
+    for (let i = 0; i < this.m_bodyCount; ++i) {
+      const body = this.m_bodies[i];
+      body.m_sweep.c.Assign(positions[i].c);
+      body.m_sweep.a = positions[i].a;
+      body.m_linearVelocity.Assign(velocities[i].v);
+      body.m_angularVelocity = velocities[i].w;
+      body.SynchronizeTransform();
+    }
+
+    profile.solvePosition = timer.GetMilliseconds();
+
+    this.Report(contactSolver.m_velocityConstraints);
+
+    if (allowSleep) {
+      let minSleepTime = b2_maxFloat;
+
+      const linTolSqr = b2_linearSleepTolerance * b2_linearSleepTolerance;
+      const angTolSqr = b2_angularSleepTolerance * b2_angularSleepTolerance;
+
+      for (let i = 0; i < this.m_bodyCount; ++i) {
+        const b = this.m_bodies[i];
+        if (b.GetType() === b2BodyType.b2_staticBody) {
+          continue;
+        }
+
+        const v = b.m_linearVelocity;
+        if (
+          (b.m_flags & b2Body.e_autoSleepFlag) === 0 ||
+          b.m_angularVelocity * b.m_angularVelocity > angTolSqr ||
+          v.x * v.x + v.y * v.y > linTolSqr
+        ) {
+          b.m_sleepTime = 0.0;
+          minSleepTime = 0.0;
+        } else {
+          b.m_sleepTime += h;
+          minSleepTime = b2Min(minSleepTime, b.m_sleepTime);
+        }
+      }
+
+      if (minSleepTime >= b2_timeToSleep && positionSolved) {
+        for (let i = 0; i < this.m_bodyCount; ++i) {
+          const b = this.m_bodies[i];
+          b.SetAwake(false);
+        }
+      }
+    }
+  }
+
+  SolveTOI(subStep: Readonly<b2TimeStep>, toiIndexA: number, toiIndexB: number): void {
+    b2Assert(toiIndexA < this.m_bodyCount);
+    b2Assert(toiIndexB < this.m_bodyCount);
+
+    const positions = this.m_positions;
+    const velocities = this.m_velocities;
+
+    // Initialize the body state.
+    for (let i = 0; i < this.m_bodyCount; ++i) {
+      const b = this.m_bodies[i];
+      positions[i].c.Assign(b.m_sweep.c);
+      positions[i].a = b.m_sweep.a;
+      velocities[i].v.Assign(b.m_linearVelocity);
+      velocities[i].w = b.m_angularVelocity;
+    }
+
+    const contactSolver = this.CreateContactSolver(subStep);
+
+    // Solve position constraints.
+    for (let i = 0; i < subStep.positionIterations; ++i) {
+      const contactsOkay = contactSolver.SolveTOIPositionConstraints(toiIndexA, toiIndexB);
+      if (contactsOkay) {
+        break;
+      }
+    }
+
+    // Leap of faith to new safe state.
+    const sweepA = this.m_bodies[toiIndexA].m_sweep;
+    sweepA.c0.Assign(positions[toiIndexA].c);
+    sweepA.a0 = positions[toiIndexA].a;
+    const sweepB = this.m_bodies[toiIndexB].m_sweep;
+    sweepB.c0.Assign(positions[toiIndexB].c);
+    sweepB.a0 = positions[toiIndexB].a;
+
+    // No warm starting is needed for TOI events because warm
+    // starting impulses were applied in the discrete solver.
+    contactSolver.InitializeVelocityConstraints();
+
+    // Solve velocity constraints.
+    for (let i = 0; i < subStep.velocityIterations; ++i) {
+      contactSolver.SolveVelocityConstraints();
+    }
+
+    // Don't store the TOI contact forces for warm starting
+    // because they can be quite large.
+
+    const h = subStep.dt;
+
+    // Integrate positions
+    for (let i = 0; i < this.m_bodyCount; ++i) {
+      this.IntegratePosition(i, h);
+      const position = positions[i];
+      const velocity = velocities[i];
+
+      // Sync bodies
+      const body = this.m_bodies[i];
+      body.m_sweep.c.Assign(position.c);
+      body.m_sweep.a = position.a;
+      body.m_linearVelocity.Assign(velocity.v);
+      body.m_angularVelocity = velocity.w;
+      body.SynchronizeTransform();
+    }
+
+    this.Report(contactSolver.m_velocityConstraints);
+  }
+
+  Add(body: b2Body): void {
+    b2Assert(this.m_bodyCount < this.m_bodyCapacity);
+    body.m_islandIndex = this.m_bodyCount;
+    this.m_bodies[this.m_bodyCount] = body;
+    ++this.m_bodyCount;
+  }
+
+  AddContact(contact: b2Contact): void {
+    b2Assert(this.m_contactCount < this.m_contactCapacity);
+    this.m_contacts[this.m_contactCount++] = contact;
+  }
+
+  AddJoint(joint: b2Joint): void {
+    b2Assert(this.m_jointCount < this.m_jointCapacity);
+    this.m_joints[this.m_jointCount++] = joint;
+  }
+
+  Report(constraints: readonly b2ContactVelocityConstraint[]): void {
+    const listener = this.m_listener;
+    if (listener === null) {
+      return;
+    }
+
+    const impulse = this.m_impulse;
+    for (let i = 0; i < this.m_contactCount; ++i) {
+      const c = this.m_contacts[i];
+
+      const vc = constraints[i];
+
+      impulse.count = vc.pointCount;
+      for (let j = 0; j < vc.pointCount; ++j) {
+        impulse.normalImpulses[j] = vc.points[j].normalImpulse;
+        impulse.tangentImpulses[j] = vc.points[j].tangentImpulse;
+      }
+
+      listener.PostSolve(c, impulse);
+    }
+  }
+
+  /** The C++ constructs a b2ContactSolver here; the island re-initialises its own. */
+  private CreateContactSolver(step: Readonly<b2TimeStep>): b2ContactSolver {
+    const def = this.m_contactSolverDef;
+    def.step.Assign(step);
+    def.count = this.m_contactCount;
+    return this.m_contactSolver.Initialize(def);
+  }
+
+  /**
+   * The position integration of one body, shared by Solve and SolveTOI: clamp the velocity to
+   * b2_maxTranslation and b2_maxRotation per step, then c += h * v and a += h * w, in the
+   * island's buffers.
+   */
+  private IntegratePosition(i: number, h: number): void {
+    const position = this.m_positions[i];
+    const velocity = this.m_velocities[i];
+    let vx = velocity.v.x;
+    let vy = velocity.v.y;
+    let w = velocity.w;
+
+    // Check for large velocities
+    const translationX = h * vx;
+    const translationY = h * vy;
+    const translationSquared = translationX * translationX + translationY * translationY;
+    if (translationSquared > b2_maxTranslationSquared) {
+      const ratio = b2_maxTranslation / Math.sqrt(translationSquared);
+      vx *= ratio;
+      vy *= ratio;
+    }
+
+    const rotation = h * w;
+    if (rotation * rotation > b2_maxRotationSquared) {
+      const ratio = b2_maxRotation / b2Abs(rotation);
+      w *= ratio;
+    }
+
+    // Integrate
+    position.c.x += h * vx;
+    position.c.y += h * vy;
+    position.a += h * w;
+    velocity.v.x = vx;
+    velocity.v.y = vy;
+    velocity.w = w;
+  }
+}

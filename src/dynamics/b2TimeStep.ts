@@ -1,0 +1,114 @@
+/*
+ * Time step and solver state types (b2TimeStep.h). The C++ copies these structs by value; here
+ * every one has Assign and Clone, and code that keeps a copy fills a preallocated object.
+ */
+
+import { b2Vec2 } from '../common/b2Math';
+
+/** Profiling data. Times are in milliseconds. */
+export class b2Profile {
+  step = 0.0;
+  collide = 0.0;
+  solve = 0.0;
+  solveInit = 0.0;
+  solveVelocity = 0.0;
+  solvePosition = 0.0;
+  broadphase = 0.0;
+  solveTOI = 0.0;
+
+  Clone(): b2Profile {
+    return new b2Profile().Assign(this);
+  }
+
+  Assign(p: Readonly<b2Profile>): this {
+    this.step = p.step;
+    this.collide = p.collide;
+    this.solve = p.solve;
+    this.solveInit = p.solveInit;
+    this.solveVelocity = p.solveVelocity;
+    this.solvePosition = p.solvePosition;
+    this.broadphase = p.broadphase;
+    this.solveTOI = p.solveTOI;
+    return this;
+  }
+}
+
+/** This is an internal structure. */
+export class b2TimeStep {
+  /** time step */
+  dt = 0.0;
+  /** inverse time step (0 if dt == 0). */
+  inv_dt = 0.0;
+  /** dt * inv_dt0 */
+  dtRatio = 0.0;
+  velocityIterations = 0;
+  positionIterations = 0;
+  warmStarting = false;
+
+  Clone(): b2TimeStep {
+    return new b2TimeStep().Assign(this);
+  }
+
+  Assign(step: Readonly<b2TimeStep>): this {
+    this.dt = step.dt;
+    this.inv_dt = step.inv_dt;
+    this.dtRatio = step.dtRatio;
+    this.velocityIterations = step.velocityIterations;
+    this.positionIterations = step.positionIterations;
+    this.warmStarting = step.warmStarting;
+    return this;
+  }
+}
+
+/** This is an internal structure. */
+export class b2Position {
+  readonly c = new b2Vec2();
+  a = 0.0;
+
+  Clone(): b2Position {
+    return new b2Position().Assign(this);
+  }
+
+  Assign(p: Readonly<b2Position>): this {
+    this.c.Assign(p.c);
+    this.a = p.a;
+    return this;
+  }
+}
+
+/** This is an internal structure. */
+export class b2Velocity {
+  readonly v = new b2Vec2();
+  w = 0.0;
+
+  Clone(): b2Velocity {
+    return new b2Velocity().Assign(this);
+  }
+
+  Assign(v: Readonly<b2Velocity>): this {
+    this.v.Assign(v.v);
+    this.w = v.w;
+    return this;
+  }
+}
+
+/**
+ * Solver Data. `positions` and `velocities` are the island's arrays, shared by reference as the
+ * C++ pointers are; `step` is a copy.
+ */
+export class b2SolverData {
+  readonly step = new b2TimeStep();
+  positions: b2Position[] = [];
+  velocities: b2Velocity[] = [];
+
+  Clone(): b2SolverData {
+    return new b2SolverData().Assign(this);
+  }
+
+  Assign(data: Readonly<b2SolverData>): this {
+    this.step.Assign(data.step);
+    this.positions = data.positions;
+    this.velocities = data.velocities;
+    return this;
+  }
+}

@@ -1,0 +1,1401 @@
+/*
+ * The world (b2World.h, b2World.cpp): bodies, joints, the contact manager, the time step with its
+ * discrete island solve and continuous (TOI) solve, queries and debug drawing.
+ *
+ * Where the C++ builds an island, a DFS stack or a struct on the stack for every solve, the world
+ * here keeps one and re-initialises it, so steady-state steps do not allocate. The C++ asserts
+ * that the world is unlocked in CreateBody, DestroyBody, CreateJoint and DestroyJoint and returns
+ * without effect in release builds; here those calls throw, leaving the world unchanged.
+ */
+
+import type { b2BroadPhase } from '../collision/b2BroadPhase';
+import { b2RayCastInput, b2RayCastOutput, type b2AABB } from '../collision/b2Collision';
+import type { b2ChainShape } from '../collision/shapes/b2ChainShape';
+import type { b2CircleShape } from '../collision/shapes/b2CircleShape';
+import type { b2EdgeShape } from '../collision/shapes/b2EdgeShape';
+import type { b2PolygonShape } from '../collision/shapes/b2PolygonShape';
+import { b2Shape } from '../collision/shapes/b2Shape';
+import { b2TOIInput, b2TOIOutput, b2TimeOfImpact } from '../collision/b2TimeOfImpact';
+import { b2Color, b2Draw } from '../common/b2Draw';
+import { b2Min, b2MulRV, b2MulXV, b2Sweep, b2Transform, b2Vec2 } from '../common/b2Math';
+import { b2Assert, b2Log, b2_epsilon, b2_maxPolygonVertices, b2_maxSubSteps, b2_maxTOIContacts } from '../common/b2Settings';
+import { b2Timer } from '../common/b2Timer';
+import { b2Body, b2BodyType, type b2BodyDef } from './b2Body';
+import { b2ContactManager } from './b2ContactManager';
+import type { b2Fixture, b2FixtureProxy } from './b2Fixture';
+import { b2Island } from './b2Island';
+import { b2Profile, b2TimeStep } from './b2TimeStep';
+import type {
+  b2ContactFilter,
+  b2ContactListener,
+  b2DestructionListener,
+  b2QueryCallback,
+  b2RayCastCallback,
+} from './b2WorldCallbacks';
+import { b2Contact } from './contacts/b2Contact';
+import { b2JointType, type b2Joint, type b2JointDef } from './joints/b2Joint';
+import { b2JointFactory } from './joints/b2JointFactory';
+import type { b2PulleyJoint } from './joints/b2PulleyJoint';
+
+/** The broad-phase query callback of b2World.QueryAABB (the .cpp's b2WorldQueryWrapper). */
+class b2WorldQueryWrapper {
+  readonly broadPhase: b2BroadPhase;
+  callback: b2QueryCallback | null = null;
+
+  constructor(broadPhase: b2BroadPhase) {
+    this.broadPhase = broadPhase;
+  }
+
+  QueryCallback(proxyId: number): boolean {
+    const proxy = this.broadPhase.GetUserData(proxyId) as b2FixtureProxy;
+    return (this.callback as b2QueryCallback).ReportFixture(proxy.fixture);
+  }
+}
+
+/** The broad-phase ray-cast callback of b2World.RayCast (the .cpp's b2WorldRayCastWrapper). */
+class b2WorldRayCastWrapper {
+  readonly broadPhase: b2BroadPhase;
+  callback: b2RayCastCallback | null = null;
+  readonly input = new b2RayCastInput();
+  private readonly output = new b2RayCastOutput();
+  private readonly point = new b2Vec2();
+
+  constructor(broadPhase: b2BroadPhase) {
+    this.broadPhase = broadPhase;
+  }
+
+  RayCastCallback(input: Readonly<b2RayCastInput>, proxyId: number): number {
+    const proxy = this.broadPhase.GetUserData(proxyId) as b2FixtureProxy;
+    const fixture = proxy.fixture;
+    const index = proxy.childIndex;
+    const output = this.output;
+    const hit = fixture.RayCast(output, input, index);
+
+    if (hit) {
+      const fraction = output.fraction;
+      const point = this.point;
+      point.x = (1.0 - fraction) * input.p1.x + fraction * input.p2.x;
+      point.y = (1.0 - fraction) * input.p1.y + fraction * input.p2.y;
+      return (this.callback as b2RayCastCallback).ReportFixture(fixture, point, output.normal, fraction);
+    }
+
+    return input.maxFraction;
+  }
+}
+
+// Debug draw colors, as the .cpp's b2Color temporaries.
+const s_inactiveColor = new b2Color(0.5, 0.5, 0.3);
+const s_staticColor = new b2Color(0.5, 0.9, 0.5);
+const s_kinematicColor = new b2Color(0.5, 0.5, 0.9);
+const s_sleepingColor = new b2Color(0.6, 0.6, 0.6);
+const s_awakeColor = new b2Color(0.9, 0.7, 0.7);
+const s_jointColor = new b2Color(0.5, 0.8, 0.8);
+const s_aabbColor = new b2Color(0.9, 0.3, 0.9);
+const s_unitX: Readonly<b2Vec2> = new b2Vec2(1.0, 0.0);
+
+function lockedError(method: string): Error {
+  return new Error(`b2World.${method}: the world is locked (called during a time step or a callback)`);
+}
+
+/**
+ * The world class manages all physics entities, dynamic simulation, and asynchronous queries.
+ * The world also contains efficient memory management facilities.
+ */
+export class b2World {
+  // m_flags
+  static readonly e_newFixture = 0x0001;
+  static readonly e_locked = 0x0002;
+  static readonly e_clearForces = 0x0004;
+
+  m_flags = b2World.e_clearForces;
+
+  readonly m_contactManager = new b2ContactManager();
+
+  m_bodyList: b2Body | null = null;
+  m_jointList: b2Joint | null = null;
+
+  m_bodyCount = 0;
+  m_jointCount = 0;
+
+  readonly m_gravity = new b2Vec2();
+  m_allowSleep = true;
+
+  m_destructionListener: b2DestructionListener | null = null;
+  m_debugDraw: b2Draw | null = null;
+
+  /** This is used to compute the time step ratio to support a variable time step. */
+  m_inv_dt0 = 0.0;
+
+  // These are for debugging the solver.
+  m_warmStarting = true;
+  m_continuousPhysics = true;
+  m_subStepping = false;
+
+  m_stepComplete = true;
+
+  readonly m_profile = new b2Profile();
+
+  // Reused in place of the C++ stack temporaries of Step, Solve and SolveTOI.
+  private readonly m_island = new b2Island(0, 0, 0, null);
+  private readonly m_stack: b2Body[] = [];
+  private readonly m_step = new b2TimeStep();
+  private readonly m_subStep = new b2TimeStep();
+  private readonly m_islandProfile = new b2Profile();
+  private readonly m_stepTimer = new b2Timer();
+  private readonly m_timer = new b2Timer();
+  private readonly m_broadphaseTimer = new b2Timer();
+  private readonly m_toiInput = new b2TOIInput();
+  private readonly m_toiOutput = new b2TOIOutput();
+  private readonly m_backup = new b2Sweep();
+  private readonly m_backup1 = new b2Sweep();
+  private readonly m_backup2 = new b2Sweep();
+  private readonly m_toiBodies: b2Body[] = [];
+
+  // One query/ray-cast wrapper per nesting level, so a callback may query the world again.
+  private readonly m_queryWrappers: b2WorldQueryWrapper[] = [];
+  private m_queryDepth = 0;
+  private readonly m_rayCastWrappers: b2WorldRayCastWrapper[] = [];
+  private m_rayCastDepth = 0;
+
+  // Debug draw scratch.
+  private readonly m_drawVertices: b2Vec2[] = [];
+  private readonly m_drawCenter = new b2Vec2();
+  private readonly m_drawAxis = new b2Vec2();
+  private readonly m_drawV1 = new b2Vec2();
+  private readonly m_drawV2 = new b2Vec2();
+  private readonly m_drawP1 = new b2Vec2();
+  private readonly m_drawP2 = new b2Vec2();
+  private readonly m_drawS1 = new b2Vec2();
+  private readonly m_drawS2 = new b2Vec2();
+  private readonly m_drawXf = new b2Transform();
+
+  /**
+   * Construct a world object.
+   * @param gravity the world gravity vector.
+   */
+  constructor(gravity: Readonly<b2Vec2>) {
+    // The other fields start with the C++ constructor's values (see their declarations).
+    this.m_gravity.Assign(gravity);
+
+    for (let i = 0; i < b2_maxPolygonVertices; ++i) {
+      this.m_drawVertices.push(new b2Vec2());
+    }
+  }
+
+  /** Register a destruction listener. The listener is owned by you and must remain in scope. */
+  SetDestructionListener(listener: b2DestructionListener | null): void {
+    this.m_destructionListener = listener;
+  }
+
+  /**
+   * Register a contact filter to provide specific control over collision. Otherwise the default
+   * filter is used (b2_defaultFilter). The listener is owned by you and must remain in scope.
+   */
+  SetContactFilter(filter: b2ContactFilter | null): void {
+    this.m_contactManager.m_contactFilter = filter;
+  }
+
+  /** Register a contact event listener. The listener is owned by you and must remain in scope. */
+  SetContactListener(listener: b2ContactListener | null): void {
+    this.m_contactManager.m_contactListener = listener;
+  }
+
+  /**
+   * Register a routine for debug drawing. The debug draw functions are called inside with
+   * b2World.DrawDebugData method. The debug draw object is owned by you and must remain in scope.
+   */
+  SetDebugDraw(debugDraw: b2Draw | null): void {
+    this.m_debugDraw = debugDraw;
+  }
+
+  /**
+   * Create a rigid body given a definition. No reference to the definition is retained.
+   * @warning This function is locked during callbacks.
+   */
+  CreateBody(def: Readonly<b2BodyDef>): b2Body {
+    if (this.IsLocked()) {
+      throw lockedError('CreateBody');
+    }
+
+    const b = new b2Body(def, this);
+
+    // Add to world doubly linked list.
+    b.m_prev = null;
+    b.m_next = this.m_bodyList;
+    if (this.m_bodyList) {
+      this.m_bodyList.m_prev = b;
+    }
+    this.m_bodyList = b;
+    ++this.m_bodyCount;
+
+    return b;
+  }
+
+  /**
+   * Destroy a rigid body given a definition. No reference to the definition is retained. This
+   * function is locked during callbacks.
+   * @warning This automatically deletes all associated shapes and joints.
+   * @warning This function is locked during callbacks.
+   */
+  DestroyBody(b: b2Body): void {
+    if (this.IsLocked()) {
+      throw lockedError('DestroyBody');
+    }
+    b2Assert(this.m_bodyCount > 0);
+
+    // Delete the attached joints.
+    let je = b.m_jointList;
+    while (je) {
+      const je0 = je;
+      je = je.next;
+
+      if (this.m_destructionListener) {
+        this.m_destructionListener.SayGoodbyeJoint(je0.joint);
+      }
+
+      this.DestroyJoint(je0.joint);
+
+      b.m_jointList = je;
+    }
+    b.m_jointList = null;
+
+    // Delete the attached contacts.
+    let ce = b.m_contactList;
+    while (ce) {
+      const ce0 = ce;
+      ce = ce.next;
+      this.m_contactManager.Destroy(ce0.contact);
+    }
+    b.m_contactList = null;
+
+    // Delete the attached fixtures. This destroys broad-phase proxies.
+    let f = b.m_fixtureList;
+    while (f) {
+      const f0 = f;
+      f = f.m_next;
+
+      if (this.m_destructionListener) {
+        this.m_destructionListener.SayGoodbyeFixture(f0);
+      }
+
+      f0.DestroyProxies(this.m_contactManager.m_broadPhase);
+      f0.Destroy();
+
+      b.m_fixtureList = f;
+      b.m_fixtureCount -= 1;
+    }
+    b.m_fixtureList = null;
+    b.m_fixtureCount = 0;
+
+    // Remove world body list.
+    if (b.m_prev) {
+      b.m_prev.m_next = b.m_next;
+    }
+
+    if (b.m_next) {
+      b.m_next.m_prev = b.m_prev;
+    }
+
+    if (b === this.m_bodyList) {
+      this.m_bodyList = b.m_next;
+    }
+
+    --this.m_bodyCount;
+  }
+
+  /**
+   * Create a joint to constrain bodies together. No reference to the definition is retained.
+   * This may cause the connected bodies to cease colliding.
+   * @warning This function is locked during callbacks.
+   */
+  CreateJoint(def: Readonly<b2JointDef>): b2Joint {
+    if (this.IsLocked()) {
+      throw lockedError('CreateJoint');
+    }
+
+    const j = b2JointFactory.Create(def);
+
+    // Connect to the world list.
+    j.m_prev = null;
+    j.m_next = this.m_jointList;
+    if (this.m_jointList) {
+      this.m_jointList.m_prev = j;
+    }
+    this.m_jointList = j;
+    ++this.m_jointCount;
+
+    // Connect to the bodies' doubly linked lists.
+    j.m_edgeA.joint = j;
+    j.m_edgeA.other = j.m_bodyB;
+    j.m_edgeA.prev = null;
+    j.m_edgeA.next = j.m_bodyA.m_jointList;
+    if (j.m_bodyA.m_jointList) j.m_bodyA.m_jointList.prev = j.m_edgeA;
+    j.m_bodyA.m_jointList = j.m_edgeA;
+
+    j.m_edgeB.joint = j;
+    j.m_edgeB.other = j.m_bodyA;
+    j.m_edgeB.prev = null;
+    j.m_edgeB.next = j.m_bodyB.m_jointList;
+    if (j.m_bodyB.m_jointList) j.m_bodyB.m_jointList.prev = j.m_edgeB;
+    j.m_bodyB.m_jointList = j.m_edgeB;
+
+    // The def's bodies, not the joint's: a gear joint's m_bodyA/m_bodyB differ from them.
+    const bodyA = def.bodyA as b2Body;
+    const bodyB = def.bodyB as b2Body;
+
+    // If the joint prevents collisions, then flag any contacts for filtering.
+    if (def.collideConnected === false) {
+      this.FlagContactsForFiltering(bodyA, bodyB);
+    }
+
+    // Note: creating a joint doesn't wake the bodies.
+
+    return j;
+  }
+
+  /**
+   * Destroy a joint. This may cause the connected bodies to begin colliding.
+   * @warning This function is locked during callbacks.
+   */
+  DestroyJoint(j: b2Joint): void {
+    if (this.IsLocked()) {
+      throw lockedError('DestroyJoint');
+    }
+
+    const collideConnected = j.m_collideConnected;
+
+    // Remove from the doubly linked list.
+    if (j.m_prev) {
+      j.m_prev.m_next = j.m_next;
+    }
+
+    if (j.m_next) {
+      j.m_next.m_prev = j.m_prev;
+    }
+
+    if (j === this.m_jointList) {
+      this.m_jointList = j.m_next;
+    }
+
+    // Disconnect from island graph.
+    const bodyA = j.m_bodyA;
+    const bodyB = j.m_bodyB;
+
+    // Wake up connected bodies.
+    bodyA.SetAwake(true);
+    bodyB.SetAwake(true);
+
+    // Remove from body 1.
+    if (j.m_edgeA.prev) {
+      j.m_edgeA.prev.next = j.m_edgeA.next;
+    }
+
+    if (j.m_edgeA.next) {
+      j.m_edgeA.next.prev = j.m_edgeA.prev;
+    }
+
+    if (j.m_edgeA === bodyA.m_jointList) {
+      bodyA.m_jointList = j.m_edgeA.next;
+    }
+
+    j.m_edgeA.prev = null;
+    j.m_edgeA.next = null;
+
+    // Remove from body 2
+    if (j.m_edgeB.prev) {
+      j.m_edgeB.prev.next = j.m_edgeB.next;
+    }
+
+    if (j.m_edgeB.next) {
+      j.m_edgeB.next.prev = j.m_edgeB.prev;
+    }
+
+    if (j.m_edgeB === bodyB.m_jointList) {
+      bodyB.m_jointList = j.m_edgeB.next;
+    }
+
+    j.m_edgeB.prev = null;
+    j.m_edgeB.next = null;
+
+    b2JointFactory.Destroy(j);
+
+    b2Assert(this.m_jointCount > 0);
+    --this.m_jointCount;
+
+    // If the joint prevents collisions, then flag any contacts for filtering.
+    if (collideConnected === false) {
+      this.FlagContactsForFiltering(bodyA, bodyB);
+    }
+  }
+
+  /**
+   * Take a time step. This performs collision detection, integration, and constraint solution.
+   * @param dt the amount of time to simulate, this should not vary.
+   * @param velocityIterations for the velocity constraint solver.
+   * @param positionIterations for the position constraint solver.
+   */
+  Step(dt: number, velocityIterations: number, positionIterations: number): void {
+    const stepTimer = this.m_stepTimer;
+    stepTimer.Reset();
+
+    // If new fixtures were added, we need to find the new contacts.
+    if (this.m_flags & b2World.e_newFixture) {
+      this.m_contactManager.FindNewContacts();
+      this.m_flags &= ~b2World.e_newFixture;
+    }
+
+    this.m_flags |= b2World.e_locked;
+
+    // A callback that throws leaves the step unfinished; unlocking keeps the world usable.
+    try {
+      const step = this.m_step;
+      step.dt = dt;
+      step.velocityIterations = velocityIterations;
+      step.positionIterations = positionIterations;
+      if (dt > 0.0) {
+        step.inv_dt = 1.0 / dt;
+      } else {
+        step.inv_dt = 0.0;
+      }
+
+      step.dtRatio = this.m_inv_dt0 * dt;
+
+      step.warmStarting = this.m_warmStarting;
+
+      const timer = this.m_timer;
+
+      // Update contacts. This is where some contacts are destroyed.
+      timer.Reset();
+      this.m_contactManager.Collide();
+      this.m_profile.collide = timer.GetMilliseconds();
+
+      // Integrate velocities, solve velocity constraints, and integrate positions.
+      if (this.m_stepComplete && step.dt > 0.0) {
+        timer.Reset();
+        this.Solve(step);
+        this.m_profile.solve = timer.GetMilliseconds();
+      }
+
+      // Handle TOI events.
+      if (this.m_continuousPhysics && step.dt > 0.0) {
+        timer.Reset();
+        this.SolveTOI(step);
+        this.m_profile.solveTOI = timer.GetMilliseconds();
+      }
+
+      if (step.dt > 0.0) {
+        this.m_inv_dt0 = step.inv_dt;
+      }
+
+      if (this.m_flags & b2World.e_clearForces) {
+        this.ClearForces();
+      }
+    } finally {
+      this.m_flags &= ~b2World.e_locked;
+    }
+
+    this.m_profile.step = stepTimer.GetMilliseconds();
+  }
+
+  /**
+   * Manually clear the force buffer on all bodies. By default, forces are cleared automatically
+   * after each call to Step. The default behavior is modified by calling SetAutoClearForces.
+   * The purpose of this function is to support sub-stepping. Sub-stepping is often used to
+   * maintain a fixed sized time step under a variable frame-rate. When you perform sub-stepping
+   * you will disable auto clearing of forces and instead call ClearForces after all sub-steps
+   * are complete in one pass of your game loop.
+   * @see SetAutoClearForces
+   */
+  ClearForces(): void {
+    for (let body = this.m_bodyList; body; body = body.GetNext()) {
+      body.m_force.SetZero();
+      body.m_torque = 0.0;
+    }
+  }
+
+  /** Call this to draw shapes and other debug draw data. */
+  DrawDebugData(): void {
+    const debugDraw = this.m_debugDraw;
+    if (debugDraw === null) {
+      return;
+    }
+
+    const flags = debugDraw.GetFlags();
+
+    if (flags & b2Draw.e_shapeBit) {
+      for (let b = this.m_bodyList; b; b = b.GetNext()) {
+        const xf = b.GetTransform();
+        for (let f = b.GetFixtureList(); f; f = f.GetNext()) {
+          if (b.IsActive() === false) {
+            this.DrawShape(f, xf, s_inactiveColor);
+          } else if (b.GetType() === b2BodyType.b2_staticBody) {
+            this.DrawShape(f, xf, s_staticColor);
+          } else if (b.GetType() === b2BodyType.b2_kinematicBody) {
+            this.DrawShape(f, xf, s_kinematicColor);
+          } else if (b.IsAwake() === false) {
+            this.DrawShape(f, xf, s_sleepingColor);
+          } else {
+            this.DrawShape(f, xf, s_awakeColor);
+          }
+        }
+      }
+    }
+
+    if (flags & b2Draw.e_jointBit) {
+      for (let j = this.m_jointList; j; j = j.GetNext()) {
+        this.DrawJoint(j);
+      }
+    }
+
+    // e_pairBit draws nothing: its drawing code is commented out in Box2D 2.2.1.
+
+    if (flags & b2Draw.e_aabbBit) {
+      const bp = this.m_contactManager.m_broadPhase;
+      const vs = this.m_drawVertices;
+
+      for (let b = this.m_bodyList; b; b = b.GetNext()) {
+        if (b.IsActive() === false) {
+          continue;
+        }
+
+        for (let f = b.GetFixtureList(); f; f = f.GetNext()) {
+          for (let i = 0; i < f.m_proxyCount; ++i) {
+            const proxy = f.m_proxies[i];
+            const aabb = bp.GetFatAABB(proxy.proxyId);
+            vs[0].Set(aabb.lowerBound.x, aabb.lowerBound.y);
+            vs[1].Set(aabb.upperBound.x, aabb.lowerBound.y);
+            vs[2].Set(aabb.upperBound.x, aabb.upperBound.y);
+            vs[3].Set(aabb.lowerBound.x, aabb.upperBound.y);
+
+            debugDraw.DrawPolygon(vs, 4, s_aabbColor);
+          }
+        }
+      }
+    }
+
+    if (flags & b2Draw.e_centerOfMassBit) {
+      const xf = this.m_drawXf;
+      for (let b = this.m_bodyList; b; b = b.GetNext()) {
+        xf.Assign(b.GetTransform());
+        xf.p.Assign(b.GetWorldCenter());
+        debugDraw.DrawTransform(xf);
+      }
+    }
+  }
+
+  /**
+   * Query the world for all fixtures that potentially overlap the provided AABB.
+   * @param callback a user implemented callback class.
+   * @param aabb the query box.
+   */
+  QueryAABB(callback: b2QueryCallback, aabb: Readonly<b2AABB>): void {
+    const depth = this.m_queryDepth;
+    if (depth === this.m_queryWrappers.length) {
+      this.m_queryWrappers.push(new b2WorldQueryWrapper(this.m_contactManager.m_broadPhase));
+    }
+    const wrapper = this.m_queryWrappers[depth];
+    wrapper.callback = callback;
+    this.m_queryDepth = depth + 1;
+    try {
+      this.m_contactManager.m_broadPhase.Query(wrapper, aabb);
+    } finally {
+      wrapper.callback = null;
+      this.m_queryDepth = depth;
+    }
+  }
+
+  /**
+   * Ray-cast the world for all fixtures in the path of the ray. Your callback controls whether
+   * you get the closest point, any point, or n-points. The ray-cast ignores shapes that contain
+   * the starting point. The point and normal passed to the callback are reused: copy them to
+   * keep them.
+   * @param callback a user implemented callback class.
+   * @param point1 the ray starting point
+   * @param point2 the ray ending point
+   */
+  RayCast(callback: b2RayCastCallback, point1: Readonly<b2Vec2>, point2: Readonly<b2Vec2>): void {
+    const depth = this.m_rayCastDepth;
+    if (depth === this.m_rayCastWrappers.length) {
+      this.m_rayCastWrappers.push(new b2WorldRayCastWrapper(this.m_contactManager.m_broadPhase));
+    }
+    const wrapper = this.m_rayCastWrappers[depth];
+    wrapper.callback = callback;
+    const input = wrapper.input;
+    input.maxFraction = 1.0;
+    input.p1.Assign(point1);
+    input.p2.Assign(point2);
+    this.m_rayCastDepth = depth + 1;
+    try {
+      this.m_contactManager.m_broadPhase.RayCast(wrapper, input);
+    } finally {
+      wrapper.callback = null;
+      this.m_rayCastDepth = depth;
+    }
+  }
+
+  /**
+   * Get the world body list. With the returned body, use b2Body.GetNext to get the next body in
+   * the world list. A null body indicates the end of the list.
+   * @return the head of the world body list.
+   */
+  GetBodyList(): b2Body | null {
+    return this.m_bodyList;
+  }
+
+  /**
+   * Get the world joint list. With the returned joint, use b2Joint.GetNext to get the next joint
+   * in the world list. A null joint indicates the end of the list.
+   * @return the head of the world joint list.
+   */
+  GetJointList(): b2Joint | null {
+    return this.m_jointList;
+  }
+
+  /**
+   * Get the world contact list. With the returned contact, use b2Contact.GetNext to get the next
+   * contact in the world list. A null contact indicates the end of the list.
+   * @return the head of the world contact list.
+   * @warning contacts are created and destroyed in the middle of a time step.
+   * Use b2ContactListener to avoid missing contacts.
+   */
+  GetContactList(): b2Contact | null {
+    return this.m_contactManager.m_contactList;
+  }
+
+  /** Enable/disable sleep. */
+  SetAllowSleeping(flag: boolean): void {
+    if (flag === this.m_allowSleep) {
+      return;
+    }
+
+    this.m_allowSleep = flag;
+    if (this.m_allowSleep === false) {
+      for (let b = this.m_bodyList; b; b = b.m_next) {
+        b.SetAwake(true);
+      }
+    }
+  }
+
+  GetAllowSleeping(): boolean {
+    return this.m_allowSleep;
+  }
+
+  /** Enable/disable warm starting. For testing. */
+  SetWarmStarting(flag: boolean): void {
+    this.m_warmStarting = flag;
+  }
+
+  GetWarmStarting(): boolean {
+    return this.m_warmStarting;
+  }
+
+  /** Enable/disable continuous physics. For testing. */
+  SetContinuousPhysics(flag: boolean): void {
+    this.m_continuousPhysics = flag;
+  }
+
+  GetContinuousPhysics(): boolean {
+    return this.m_continuousPhysics;
+  }
+
+  /** Enable/disable single stepped continuous physics. For testing. */
+  SetSubStepping(flag: boolean): void {
+    this.m_subStepping = flag;
+  }
+
+  GetSubStepping(): boolean {
+    return this.m_subStepping;
+  }
+
+  /** Get the number of broad-phase proxies. */
+  GetProxyCount(): number {
+    return this.m_contactManager.m_broadPhase.GetProxyCount();
+  }
+
+  /** Get the number of bodies. */
+  GetBodyCount(): number {
+    return this.m_bodyCount;
+  }
+
+  /** Get the number of joints. */
+  GetJointCount(): number {
+    return this.m_jointCount;
+  }
+
+  /** Get the number of contacts (each may have 0 or more contact points). */
+  GetContactCount(): number {
+    return this.m_contactManager.m_contactCount;
+  }
+
+  /** Get the height of the dynamic tree. */
+  GetTreeHeight(): number {
+    return this.m_contactManager.m_broadPhase.GetTreeHeight();
+  }
+
+  /** Get the balance of the dynamic tree. */
+  GetTreeBalance(): number {
+    return this.m_contactManager.m_broadPhase.GetTreeBalance();
+  }
+
+  /** Get the quality metric of the dynamic tree. The smaller the better. The minimum is 1. */
+  GetTreeQuality(): number {
+    return this.m_contactManager.m_broadPhase.GetTreeQuality();
+  }
+
+  /** Change the global gravity vector. */
+  SetGravity(gravity: Readonly<b2Vec2>): void {
+    this.m_gravity.Assign(gravity);
+  }
+
+  /** Get the global gravity vector. */
+  GetGravity(out: b2Vec2): b2Vec2 {
+    return out.Assign(this.m_gravity);
+  }
+
+  /** Is the world locked (in the middle of a time step). */
+  IsLocked(): boolean {
+    return (this.m_flags & b2World.e_locked) === b2World.e_locked;
+  }
+
+  /** Set flag to control automatic clearing of forces after each time step. */
+  SetAutoClearForces(flag: boolean): void {
+    if (flag) {
+      this.m_flags |= b2World.e_clearForces;
+    } else {
+      this.m_flags &= ~b2World.e_clearForces;
+    }
+  }
+
+  /** Get the flag that controls automatic clearing of forces after each time step. */
+  GetAutoClearForces(): boolean {
+    return (this.m_flags & b2World.e_clearForces) === b2World.e_clearForces;
+  }
+
+  /** Get the contact manager for testing. */
+  GetContactManager(): b2ContactManager {
+    return this.m_contactManager;
+  }
+
+  /** Get the current profile. */
+  GetProfile(): Readonly<b2Profile> {
+    return this.m_profile;
+  }
+
+  /**
+   * Dump the world into the log file.
+   * @warning this should be called outside of a time step.
+   */
+  Dump(): void {
+    if ((this.m_flags & b2World.e_locked) === b2World.e_locked) {
+      return;
+    }
+
+    b2Log('b2Vec2 g(%.15lef, %.15lef);\n', this.m_gravity.x, this.m_gravity.y);
+    b2Log('m_world->SetGravity(g);\n');
+
+    b2Log('b2Body** bodies = (b2Body**)b2Alloc(%d * sizeof(b2Body*));\n', this.m_bodyCount);
+    b2Log('b2Joint** joints = (b2Joint**)b2Alloc(%d * sizeof(b2Joint*));\n', this.m_jointCount);
+    let i = 0;
+    for (let b = this.m_bodyList; b; b = b.m_next) {
+      b.m_islandIndex = i;
+      b.Dump();
+      ++i;
+    }
+
+    i = 0;
+    for (let j = this.m_jointList; j; j = j.m_next) {
+      j.m_index = i;
+      ++i;
+    }
+
+    // First pass on joints, skip gear joints.
+    for (let j = this.m_jointList; j; j = j.m_next) {
+      if (j.m_type === b2JointType.e_gearJoint) {
+        continue;
+      }
+
+      b2Log('{\n');
+      j.Dump();
+      b2Log('}\n');
+    }
+
+    // Second pass on joints, only gear joints.
+    for (let j = this.m_jointList; j; j = j.m_next) {
+      if (j.m_type !== b2JointType.e_gearJoint) {
+        continue;
+      }
+
+      b2Log('{\n');
+      j.Dump();
+      b2Log('}\n');
+    }
+
+    b2Log('b2Free(joints);\n');
+    b2Log('b2Free(bodies);\n');
+    b2Log('joints = NULL;\n');
+    b2Log('bodies = NULL;\n');
+  }
+
+  /** Find islands, integrate and solve constraints, solve position constraints. */
+  Solve(step: Readonly<b2TimeStep>): void {
+    this.m_profile.solveInit = 0.0;
+    this.m_profile.solveVelocity = 0.0;
+    this.m_profile.solvePosition = 0.0;
+
+    // Size the island for the worst case.
+    const island = this.m_island;
+    island.Initialize(
+      this.m_bodyCount,
+      this.m_contactManager.m_contactCount,
+      this.m_jointCount,
+      this.m_contactManager.m_contactListener,
+    );
+
+    // Clear all the island flags.
+    for (let b = this.m_bodyList; b; b = b.m_next) {
+      b.m_flags &= ~b2Body.e_islandFlag;
+    }
+    for (let c = this.m_contactManager.m_contactList; c; c = c.m_next) {
+      c.m_flags &= ~b2Contact.e_islandFlag;
+    }
+    for (let j = this.m_jointList; j; j = j.m_next) {
+      j.m_islandFlag = false;
+    }
+
+    // Build and simulate all awake islands.
+    const stackSize = this.m_bodyCount;
+    const stack = this.m_stack;
+    for (let seed = this.m_bodyList; seed; seed = seed.m_next) {
+      if (seed.m_flags & b2Body.e_islandFlag) {
+        continue;
+      }
+
+      if (seed.IsAwake() === false || seed.IsActive() === false) {
+        continue;
+      }
+
+      // The seed can be dynamic or kinematic.
+      if (seed.GetType() === b2BodyType.b2_staticBody) {
+        continue;
+      }
+
+      // Reset island and stack.
+      island.Clear();
+      let stackCount = 0;
+      stack[stackCount++] = seed;
+      seed.m_flags |= b2Body.e_islandFlag;
+
+      // Perform a depth first search (DFS) on the constraint graph.
+      while (stackCount > 0) {
+        // Grab the next body off the stack and add it to the island.
+        const b = stack[--stackCount];
+        b2Assert(b.IsActive() === true);
+        island.Add(b);
+
+        // Make sure the body is awake.
+        b.SetAwake(true);
+
+        // To keep islands as small as possible, we don't
+        // propagate islands across static bodies.
+        if (b.GetType() === b2BodyType.b2_staticBody) {
+          continue;
+        }
+
+        // Search all contacts connected to this body.
+        for (let ce = b.m_contactList; ce; ce = ce.next) {
+          const contact = ce.contact;
+
+          // Has this contact already been added to an island?
+          if (contact.m_flags & b2Contact.e_islandFlag) {
+            continue;
+          }
+
+          // Is this contact solid and touching?
+          if (contact.IsEnabled() === false || contact.IsTouching() === false) {
+            continue;
+          }
+
+          // Skip sensors.
+          const sensorA = contact.m_fixtureA.m_isSensor;
+          const sensorB = contact.m_fixtureB.m_isSensor;
+          if (sensorA || sensorB) {
+            continue;
+          }
+
+          island.AddContact(contact);
+          contact.m_flags |= b2Contact.e_islandFlag;
+
+          const other = ce.other;
+
+          // Was the other body already added to this island?
+          if (other.m_flags & b2Body.e_islandFlag) {
+            continue;
+          }
+
+          b2Assert(stackCount < stackSize);
+          stack[stackCount++] = other;
+          other.m_flags |= b2Body.e_islandFlag;
+        }
+
+        // Search all joints connect to this body.
+        for (let je = b.m_jointList; je; je = je.next) {
+          if (je.joint.m_islandFlag === true) {
+            continue;
+          }
+
+          const other = je.other;
+
+          // Don't simulate joints connected to inactive bodies.
+          if (other.IsActive() === false) {
+            continue;
+          }
+
+          island.AddJoint(je.joint);
+          je.joint.m_islandFlag = true;
+
+          if (other.m_flags & b2Body.e_islandFlag) {
+            continue;
+          }
+
+          b2Assert(stackCount < stackSize);
+          stack[stackCount++] = other;
+          other.m_flags |= b2Body.e_islandFlag;
+        }
+      }
+
+      const profile = this.m_islandProfile;
+      island.Solve(profile, step, this.m_gravity, this.m_allowSleep);
+      this.m_profile.solveInit += profile.solveInit;
+      this.m_profile.solveVelocity += profile.solveVelocity;
+      this.m_profile.solvePosition += profile.solvePosition;
+
+      // Post solve cleanup.
+      for (let i = 0; i < island.m_bodyCount; ++i) {
+        // Allow static bodies to participate in other islands.
+        const b = island.m_bodies[i];
+        if (b.GetType() === b2BodyType.b2_staticBody) {
+          b.m_flags &= ~b2Body.e_islandFlag;
+        }
+      }
+    }
+
+    {
+      const timer = this.m_broadphaseTimer;
+      timer.Reset();
+      // Synchronize fixtures, check for out of range bodies.
+      for (let b = this.m_bodyList; b; b = b.GetNext()) {
+        // If a body was not in an island then it did not move.
+        if ((b.m_flags & b2Body.e_islandFlag) === 0) {
+          continue;
+        }
+
+        if (b.GetType() === b2BodyType.b2_staticBody) {
+          continue;
+        }
+
+        // Update fixtures (for broad-phase).
+        b.SynchronizeFixtures();
+      }
+
+      // Look for new contacts.
+      this.m_contactManager.FindNewContacts();
+      this.m_profile.broadphase = timer.GetMilliseconds();
+    }
+  }
+
+  /** Find TOI contacts and solve them. */
+  SolveTOI(step: Readonly<b2TimeStep>): void {
+    const island = this.m_island;
+    island.Initialize(2 * b2_maxTOIContacts, b2_maxTOIContacts, 0, this.m_contactManager.m_contactListener);
+
+    if (this.m_stepComplete) {
+      for (let b = this.m_bodyList; b; b = b.m_next) {
+        b.m_flags &= ~b2Body.e_islandFlag;
+        b.m_sweep.alpha0 = 0.0;
+      }
+
+      for (let c = this.m_contactManager.m_contactList; c; c = c.m_next) {
+        // Invalidate TOI
+        c.m_flags &= ~(b2Contact.e_toiFlag | b2Contact.e_islandFlag);
+        c.m_toiCount = 0;
+        c.m_toi = 1.0;
+      }
+    }
+
+    const input = this.m_toiInput;
+    const output = this.m_toiOutput;
+    const backup1 = this.m_backup1;
+    const backup2 = this.m_backup2;
+    const backup = this.m_backup;
+    const bodies = this.m_toiBodies;
+
+    // Find TOI events and solve them.
+    for (;;) {
+      // Find the first TOI.
+      let minContact: b2Contact | null = null;
+      let minAlpha = 1.0;
+
+      for (let c = this.m_contactManager.m_contactList; c; c = c.m_next) {
+        // Is this contact disabled?
+        if (c.IsEnabled() === false) {
+          continue;
+        }
+
+        // Prevent excessive sub-stepping.
+        if (c.m_toiCount > b2_maxSubSteps) {
+          continue;
+        }
+
+        let alpha = 1.0;
+        if (c.m_flags & b2Contact.e_toiFlag) {
+          // This contact has a valid cached TOI.
+          alpha = c.m_toi;
+        } else {
+          const fA = c.GetFixtureA();
+          const fB = c.GetFixtureB();
+
+          // Is there a sensor?
+          if (fA.IsSensor() || fB.IsSensor()) {
+            continue;
+          }
+
+          const bA = fA.GetBody();
+          const bB = fB.GetBody();
+
+          const typeA = bA.m_type;
+          const typeB = bB.m_type;
+          b2Assert(typeA === b2BodyType.b2_dynamicBody || typeB === b2BodyType.b2_dynamicBody);
+
+          const activeA = bA.IsAwake() && typeA !== b2BodyType.b2_staticBody;
+          const activeB = bB.IsAwake() && typeB !== b2BodyType.b2_staticBody;
+
+          // Is at least one body active (awake and dynamic or kinematic)?
+          if (activeA === false && activeB === false) {
+            continue;
+          }
+
+          const collideA = bA.IsBullet() || typeA !== b2BodyType.b2_dynamicBody;
+          const collideB = bB.IsBullet() || typeB !== b2BodyType.b2_dynamicBody;
+
+          // Are these two non-bullet dynamic bodies?
+          if (collideA === false && collideB === false) {
+            continue;
+          }
+
+          // Compute the TOI for this contact.
+          // Put the sweeps onto the same time interval.
+          let alpha0 = bA.m_sweep.alpha0;
+
+          if (bA.m_sweep.alpha0 < bB.m_sweep.alpha0) {
+            alpha0 = bB.m_sweep.alpha0;
+            bA.m_sweep.Advance(alpha0);
+          } else if (bB.m_sweep.alpha0 < bA.m_sweep.alpha0) {
+            alpha0 = bA.m_sweep.alpha0;
+            bB.m_sweep.Advance(alpha0);
+          }
+
+          b2Assert(alpha0 < 1.0);
+
+          const indexA = c.GetChildIndexA();
+          const indexB = c.GetChildIndexB();
+
+          // Compute the time of impact in interval [0, minTOI]
+          input.proxyA.Set(fA.GetShape(), indexA);
+          input.proxyB.Set(fB.GetShape(), indexB);
+          input.sweepA.Assign(bA.m_sweep);
+          input.sweepB.Assign(bB.m_sweep);
+          input.tMax = 1.0;
+
+          b2TimeOfImpact(output, input);
+
+          // Beta is the fraction of the remaining portion of the .
+          const beta = output.t;
+          if (output.state === b2TOIOutput.e_touching) {
+            alpha = b2Min(alpha0 + (1.0 - alpha0) * beta, 1.0);
+          } else {
+            alpha = 1.0;
+          }
+
+          c.m_toi = alpha;
+          c.m_flags |= b2Contact.e_toiFlag;
+        }
+
+        if (alpha < minAlpha) {
+          // This is the minimum TOI found so far.
+          minContact = c;
+          minAlpha = alpha;
+        }
+      }
+
+      if (minContact === null || 1.0 - 10.0 * b2_epsilon < minAlpha) {
+        // No more TOI events. Done!
+        this.m_stepComplete = true;
+        break;
+      }
+
+      // Advance the bodies to the TOI.
+      const fA = minContact.GetFixtureA();
+      const fB = minContact.GetFixtureB();
+      const bA = fA.GetBody();
+      const bB = fB.GetBody();
+
+      backup1.Assign(bA.m_sweep);
+      backup2.Assign(bB.m_sweep);
+
+      bA.Advance(minAlpha);
+      bB.Advance(minAlpha);
+
+      // The TOI contact likely has some new contact points.
+      minContact.Update(this.m_contactManager.m_contactListener);
+      minContact.m_flags &= ~b2Contact.e_toiFlag;
+      ++minContact.m_toiCount;
+
+      // Is the contact solid?
+      if (minContact.IsEnabled() === false || minContact.IsTouching() === false) {
+        // Restore the sweeps.
+        minContact.SetEnabled(false);
+        bA.m_sweep.Assign(backup1);
+        bB.m_sweep.Assign(backup2);
+        bA.SynchronizeTransform();
+        bB.SynchronizeTransform();
+        continue;
+      }
+
+      bA.SetAwake(true);
+      bB.SetAwake(true);
+
+      // Build the island
+      island.Clear();
+      island.Add(bA);
+      island.Add(bB);
+      island.AddContact(minContact);
+
+      bA.m_flags |= b2Body.e_islandFlag;
+      bB.m_flags |= b2Body.e_islandFlag;
+      minContact.m_flags |= b2Contact.e_islandFlag;
+
+      // Get contacts on bodyA and bodyB.
+      bodies[0] = bA;
+      bodies[1] = bB;
+      for (let i = 0; i < 2; ++i) {
+        const body = bodies[i];
+        if (body.m_type === b2BodyType.b2_dynamicBody) {
+          for (let ce = body.m_contactList; ce; ce = ce.next) {
+            if (island.m_bodyCount === island.m_bodyCapacity) {
+              break;
+            }
+
+            if (island.m_contactCount === island.m_contactCapacity) {
+              break;
+            }
+
+            const contact = ce.contact;
+
+            // Has this contact already been added to the island?
+            if (contact.m_flags & b2Contact.e_islandFlag) {
+              continue;
+            }
+
+            // Only add static, kinematic, or bullet bodies.
+            const other = ce.other;
+            if (other.m_type === b2BodyType.b2_dynamicBody && body.IsBullet() === false && other.IsBullet() === false) {
+              continue;
+            }
+
+            // Skip sensors.
+            const sensorA = contact.m_fixtureA.m_isSensor;
+            const sensorB = contact.m_fixtureB.m_isSensor;
+            if (sensorA || sensorB) {
+              continue;
+            }
+
+            // Tentatively advance the body to the TOI.
+            backup.Assign(other.m_sweep);
+            if ((other.m_flags & b2Body.e_islandFlag) === 0) {
+              other.Advance(minAlpha);
+            }
+
+            // Update the contact points
+            contact.Update(this.m_contactManager.m_contactListener);
+
+            // Was the contact disabled by the user?
+            if (contact.IsEnabled() === false) {
+              other.m_sweep.Assign(backup);
+              other.SynchronizeTransform();
+              continue;
+            }
+
+            // Are there contact points?
+            if (contact.IsTouching() === false) {
+              other.m_sweep.Assign(backup);
+              other.SynchronizeTransform();
+              continue;
+            }
+
+            // Add the contact to the island
+            contact.m_flags |= b2Contact.e_islandFlag;
+            island.AddContact(contact);
+
+            // Has the other body already been added to the island?
+            if (other.m_flags & b2Body.e_islandFlag) {
+              continue;
+            }
+
+            // Add the other body to the island.
+            other.m_flags |= b2Body.e_islandFlag;
+
+            if (other.m_type !== b2BodyType.b2_staticBody) {
+              other.SetAwake(true);
+            }
+
+            island.Add(other);
+          }
+        }
+      }
+
+      const subStep = this.m_subStep;
+      subStep.dt = (1.0 - minAlpha) * step.dt;
+      subStep.inv_dt = 1.0 / subStep.dt;
+      subStep.dtRatio = 1.0;
+      subStep.positionIterations = 20;
+      subStep.velocityIterations = step.velocityIterations;
+      subStep.warmStarting = false;
+      island.SolveTOI(subStep, bA.m_islandIndex, bB.m_islandIndex);
+
+      // Reset island flags and synchronize broad-phase proxies.
+      for (let i = 0; i < island.m_bodyCount; ++i) {
+        const body = island.m_bodies[i];
+        body.m_flags &= ~b2Body.e_islandFlag;
+
+        if (body.m_type !== b2BodyType.b2_dynamicBody) {
+          continue;
+        }
+
+        body.SynchronizeFixtures();
+
+        // Invalidate all contact TOIs on this displaced body.
+        for (let ce = body.m_contactList; ce; ce = ce.next) {
+          ce.contact.m_flags &= ~(b2Contact.e_toiFlag | b2Contact.e_islandFlag);
+        }
+      }
+
+      // Commit fixture proxy movements to the broad-phase so that new contacts are created.
+      // Also, some contacts can be destroyed.
+      this.m_contactManager.FindNewContacts();
+
+      if (this.m_subStepping) {
+        this.m_stepComplete = false;
+        break;
+      }
+    }
+  }
+
+  /** The contact loop CreateJoint and DestroyJoint share: bodyB's contacts with bodyA, in list order. */
+  private FlagContactsForFiltering(bodyA: b2Body, bodyB: b2Body): void {
+    let edge = bodyB.GetContactList();
+    while (edge) {
+      if (edge.other === bodyA) {
+        // Flag the contact for filtering at the next time step (where either
+        // body is awake).
+        edge.contact.FlagForFiltering();
+      }
+
+      edge = edge.next;
+    }
+  }
+
+  private DrawJoint(joint: b2Joint): void {
+    const debugDraw = this.m_debugDraw as b2Draw;
+    const bodyA = joint.GetBodyA();
+    const bodyB = joint.GetBodyB();
+    const xf1 = bodyA.GetTransform();
+    const xf2 = bodyB.GetTransform();
+    const x1 = xf1.p;
+    const x2 = xf2.p;
+    const p1 = joint.GetAnchorA(this.m_drawP1);
+    const p2 = joint.GetAnchorB(this.m_drawP2);
+
+    const color = s_jointColor;
+
+    switch (joint.GetType()) {
+      case b2JointType.e_distanceJoint:
+        debugDraw.DrawSegment(p1, p2, color);
+        break;
+
+      case b2JointType.e_pulleyJoint: {
+        const pulley = joint as b2PulleyJoint;
+        const s1 = pulley.GetGroundAnchorA(this.m_drawS1);
+        const s2 = pulley.GetGroundAnchorB(this.m_drawS2);
+        debugDraw.DrawSegment(s1, p1, color);
+        debugDraw.DrawSegment(s2, p2, color);
+        debugDraw.DrawSegment(s1, s2, color);
+        break;
+      }
+
+      case b2JointType.e_mouseJoint:
+        // don't draw this
+        break;
+
+      default:
+        debugDraw.DrawSegment(x1, p1, color);
+        debugDraw.DrawSegment(p1, p2, color);
+        debugDraw.DrawSegment(x2, p2, color);
+    }
+  }
+
+  private DrawShape(fixture: b2Fixture, xf: Readonly<b2Transform>, color: b2Color): void {
+    const debugDraw = this.m_debugDraw as b2Draw;
+    switch (fixture.GetType()) {
+      case b2Shape.e_circle: {
+        const circle = fixture.GetShape() as b2CircleShape;
+
+        const center = b2MulXV(xf, circle.m_p, this.m_drawCenter);
+        const radius = circle.m_radius;
+        const axis = b2MulRV(xf.q, s_unitX, this.m_drawAxis);
+
+        debugDraw.DrawSolidCircle(center, radius, axis, color);
+        break;
+      }
+
+      case b2Shape.e_edge: {
+        const edge = fixture.GetShape() as b2EdgeShape;
+        const v1 = b2MulXV(xf, edge.m_vertex1, this.m_drawV1);
+        const v2 = b2MulXV(xf, edge.m_vertex2, this.m_drawV2);
+        debugDraw.DrawSegment(v1, v2, color);
+        break;
+      }
+
+      case b2Shape.e_chain: {
+        const chain = fixture.GetShape() as b2ChainShape;
+        const count = chain.m_count;
+        const vertices = chain.m_vertices;
+
+        const v1 = b2MulXV(xf, vertices[0], this.m_drawV1);
+        for (let i = 1; i < count; ++i) {
+          const v2 = b2MulXV(xf, vertices[i], this.m_drawV2);
+          debugDraw.DrawSegment(v1, v2, color);
+          debugDraw.DrawCircle(v1, 0.05, color);
+          v1.Assign(v2);
+        }
+        break;
+      }
+
+      case b2Shape.e_polygon: {
+        const poly = fixture.GetShape() as b2PolygonShape;
+        const vertexCount = poly.m_vertexCount;
+        b2Assert(vertexCount <= b2_maxPolygonVertices);
+        const vertices = this.m_drawVertices;
+
+        for (let i = 0; i < vertexCount; ++i) {
+          b2MulXV(xf, poly.m_vertices[i], vertices[i]);
+        }
+
+        debugDraw.DrawSolidPolygon(vertices, vertexCount, color);
+        break;
+      }
+
+      default:
+        break;
+    }
+  }
+}

@@ -1,0 +1,39 @@
+/*
+ * Contact between a chain (fixture A) and a circle (fixture B) (b2ChainAndCircleContact.h, .cpp). Each child
+ * edge of the chain gets its own contact; the child index selects the edge.
+ */
+
+import { b2CollideEdgeAndCircle } from '../../collision/b2CollideEdge';
+import type { b2Manifold } from '../../collision/b2Collision';
+import type { b2ChainShape } from '../../collision/shapes/b2ChainShape';
+import type { b2CircleShape } from '../../collision/shapes/b2CircleShape';
+import { b2EdgeShape } from '../../collision/shapes/b2EdgeShape';
+import { b2Shape } from '../../collision/shapes/b2Shape';
+import type { b2Transform } from '../../common/b2Math';
+import { b2Assert } from '../../common/b2Settings';
+import type { b2Fixture } from '../b2Fixture';
+import { b2Contact } from './b2Contact';
+
+// The child edge is rebuilt for every evaluation; the collide function does not keep it.
+const s_edge = new b2EdgeShape();
+
+export class b2ChainAndCircleContact extends b2Contact {
+  static override Create(fixtureA: b2Fixture, indexA: number, fixtureB: b2Fixture, indexB: number): b2Contact {
+    return new b2ChainAndCircleContact(fixtureA, indexA, fixtureB, indexB);
+  }
+
+  // The block allocator of the C++ frees the memory here; the garbage collector does that now.
+  static override Destroy(contact: b2Contact): void {}
+
+  constructor(fixtureA: b2Fixture, indexA: number, fixtureB: b2Fixture, indexB: number) {
+    super(fixtureA, indexA, fixtureB, indexB);
+    b2Assert(this.m_fixtureA.GetType() === b2Shape.e_chain);
+    b2Assert(this.m_fixtureB.GetType() === b2Shape.e_circle);
+  }
+
+  override Evaluate(manifold: b2Manifold, xfA: b2Transform, xfB: b2Transform): void {
+    const chain = this.m_fixtureA.GetShape() as b2ChainShape;
+    chain.GetChildEdge(s_edge, this.m_indexA);
+    b2CollideEdgeAndCircle(manifold, s_edge, xfA, this.m_fixtureB.GetShape() as b2CircleShape, xfB);
+  }
+}

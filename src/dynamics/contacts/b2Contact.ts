@@ -1,0 +1,405 @@
+/*
+ * The contact base class, the contact graph edge and the contact factory registry
+ * (b2Contact.h, b2Contact.cpp).
+ *
+ * The registry table lives here but is filled by b2InitializeContactRegisters()
+ * (b2ContactRegistry.ts): the concrete contacts extend b2Contact, so this module cannot import
+ * them without breaking ES module load order. b2ContactManager's constructor fills it.
+ */
+
+import { b2Manifold, b2TestOverlapShapes } from '../../collision/b2Collision';
+import type { b2WorldManifold } from '../../collision/b2Collision';
+import { b2Shape } from '../../collision/shapes/b2Shape';
+import type { b2Transform } from '../../common/b2Math';
+import { b2Assert } from '../../common/b2Settings';
+import type { b2Body } from '../b2Body';
+import type { b2Fixture } from '../b2Fixture';
+import type { b2ContactListener } from '../b2WorldCallbacks';
+
+/**
+ * Friction mixing law. The idea is to allow either fixture to drive the restitution to zero.
+ * For example, anything slides on ice.
+ */
+export function b2MixFriction(friction1: number, friction2: number): number {
+  return Math.sqrt(friction1 * friction2);
+}
+
+/**
+ * Restitution mixing law. The idea is allow for anything to bounce off an inelastic surface.
+ * For example, a superball bounces on anything.
+ */
+export function b2MixRestitution(restitution1: number, restitution2: number): number {
+  return restitution1 > restitution2 ? restitution1 : restitution2;
+}
+
+export type b2ContactCreateFcn = (fixtureA: b2Fixture, indexA: number, fixtureB: b2Fixture, indexB: number) => b2Contact;
+export type b2ContactDestroyFcn = (contact: b2Contact) => void;
+
+export class b2ContactRegister {
+  createFcn: b2ContactCreateFcn | null = null;
+  destroyFcn: b2ContactDestroyFcn | null = null;
+  primary = false;
+}
+
+/**
+ * A contact edge is used to connect bodies and contacts together in a contact graph where each
+ * body is a node and each contact is an edge. A contact edge belongs to a doubly linked list
+ * maintained in each attached body. Each contact has two contact nodes, one for each attached
+ * body.
+ *
+ * `contact` and `other` are typed non-null: a contact's edges are created with the contact and
+ * hold the values b2ContactManager.AddPair assigns before the edge joins any list.
+ */
+export class b2ContactEdge {
+  /** provides quick access to the other body attached. */
+  other: b2Body;
+  /** the contact */
+  contact: b2Contact;
+  /** the previous contact edge in the body's contact list */
+  prev: b2ContactEdge | null = null;
+  /** the next contact edge in the body's contact list */
+  next: b2ContactEdge | null = null;
+
+  constructor(contact: b2Contact, other: b2Body) {
+    this.contact = contact;
+    this.other = other;
+  }
+}
+
+/** The zero-initialised static table of the C++: no create function for any pair. */
+function b2MakeRegisters(): b2ContactRegister[][] {
+  const registers: b2ContactRegister[][] = [];
+  for (let i = 0; i < b2Shape.e_typeCount; ++i) {
+    const row: b2ContactRegister[] = [];
+    for (let j = 0; j < b2Shape.e_typeCount; ++j) {
+      row.push(new b2ContactRegister());
+    }
+    registers.push(row);
+  }
+  return registers;
+}
+
+// The C++ copies the manifold onto the stack in Update. Update cannot re-enter: the listener
+// callbacks run while the world is locked, so one copy serves every contact.
+const s_oldManifold = new b2Manifold();
+
+/**
+ * The class manages contact between two shapes. A contact exists for each overlapping AABB in
+ * the broad-phase (except if filtered). Therefore a contact object may exist that has no
+ * contact points.
+ */
+export abstract class b2Contact {
+  // Flags stored in m_flags
+
+  /** Used when crawling contact graph when forming islands. */
+  static readonly e_islandFlag = 0x0001;
+  /** Set when the shapes are touching. */
+  static readonly e_touchingFlag = 0x0002;
+  /** This contact can be disabled (by user) */
+  static readonly e_enabledFlag = 0x0004;
+  /** This contact needs filtering because a fixture filter was changed. */
+  static readonly e_filterFlag = 0x0008;
+  /** This bullet contact had a TOI event */
+  static readonly e_bulletHitFlag = 0x0010;
+  /** This contact has a valid TOI in m_toi */
+  static readonly e_toiFlag = 0x0020;
+
+  static readonly s_registers: b2ContactRegister[][] = b2MakeRegisters();
+  static s_initialized = false;
+
+  m_flags: number;
+
+  // World pool and list pointers.
+  m_prev: b2Contact | null = null;
+  m_next: b2Contact | null = null;
+
+  // Nodes for connecting bodies.
+  readonly m_nodeA: b2ContactEdge;
+  readonly m_nodeB: b2ContactEdge;
+
+  m_fixtureA: b2Fixture;
+  m_fixtureB: b2Fixture;
+
+  m_indexA: number;
+  m_indexB: number;
+
+  readonly m_manifold = new b2Manifold();
+
+  m_toiCount: number;
+  // The C++ leaves m_toi uninitialised; b2World.SolveTOI writes it before any read.
+  m_toi = 1.0;
+
+  m_friction: number;
+  m_restitution: number;
+
+  constructor(fixtureA: b2Fixture, indexA: number, fixtureB: b2Fixture, indexB: number) {
+    this.m_flags = b2Contact.e_enabledFlag;
+
+    this.m_fixtureA = fixtureA;
+    this.m_fixtureB = fixtureB;
+
+    this.m_indexA = indexA;
+    this.m_indexB = indexB;
+
+    this.m_manifold.pointCount = 0;
+
+    this.m_nodeA = new b2ContactEdge(this, fixtureB.GetBody());
+    this.m_nodeB = new b2ContactEdge(this, fixtureA.GetBody());
+
+    this.m_toiCount = 0;
+
+    this.m_friction = b2MixFriction(this.m_fixtureA.m_friction, this.m_fixtureB.m_friction);
+    this.m_restitution = b2MixRestitution(this.m_fixtureA.m_restitution, this.m_fixtureB.m_restitution);
+  }
+
+  /**
+   * Get the contact manifold. Do not modify the manifold unless you understand the internals
+   * of Box2D.
+   */
+  GetManifold(): b2Manifold {
+    return this.m_manifold;
+  }
+
+  /** Get the world manifold. */
+  GetWorldManifold(worldManifold: b2WorldManifold): void {
+    const bodyA = this.m_fixtureA.GetBody();
+    const bodyB = this.m_fixtureB.GetBody();
+    const shapeA = this.m_fixtureA.GetShape();
+    const shapeB = this.m_fixtureB.GetShape();
+
+    worldManifold.Initialize(this.m_manifold, bodyA.GetTransform(), shapeA.m_radius, bodyB.GetTransform(), shapeB.m_radius);
+  }
+
+  /** Is this contact touching? */
+  IsTouching(): boolean {
+    return (this.m_flags & b2Contact.e_touchingFlag) === b2Contact.e_touchingFlag;
+  }
+
+  /**
+   * Enable/disable this contact. This can be used inside the pre-solve contact listener. The
+   * contact is only disabled for the current time step (or sub-step in continuous collisions).
+   */
+  SetEnabled(flag: boolean): void {
+    if (flag) {
+      this.m_flags |= b2Contact.e_enabledFlag;
+    } else {
+      this.m_flags &= ~b2Contact.e_enabledFlag;
+    }
+  }
+
+  /** Has this contact been disabled? */
+  IsEnabled(): boolean {
+    return (this.m_flags & b2Contact.e_enabledFlag) === b2Contact.e_enabledFlag;
+  }
+
+  /** Get the next contact in the world's contact list. */
+  GetNext(): b2Contact | null {
+    return this.m_next;
+  }
+
+  /** Get fixture A in this contact. */
+  GetFixtureA(): b2Fixture {
+    return this.m_fixtureA;
+  }
+
+  /** Get the child primitive index for fixture A. */
+  GetChildIndexA(): number {
+    return this.m_indexA;
+  }
+
+  /** Get fixture B in this contact. */
+  GetFixtureB(): b2Fixture {
+    return this.m_fixtureB;
+  }
+
+  /** Get the child primitive index for fixture B. */
+  GetChildIndexB(): number {
+    return this.m_indexB;
+  }
+
+  /**
+   * Override the default friction mixture. You can call this in b2ContactListener.PreSolve.
+   * This value persists until set or reset.
+   */
+  SetFriction(friction: number): void {
+    this.m_friction = friction;
+  }
+
+  /** Get the friction. */
+  GetFriction(): number {
+    return this.m_friction;
+  }
+
+  /** Reset the friction mixture to the default value. */
+  ResetFriction(): void {
+    this.m_friction = b2MixFriction(this.m_fixtureA.m_friction, this.m_fixtureB.m_friction);
+  }
+
+  /**
+   * Override the default restitution mixture. You can call this in b2ContactListener.PreSolve.
+   * The value persists until you set or reset.
+   */
+  SetRestitution(restitution: number): void {
+    this.m_restitution = restitution;
+  }
+
+  /** Get the restitution. */
+  GetRestitution(): number {
+    return this.m_restitution;
+  }
+
+  /** Reset the restitution to the default value. */
+  ResetRestitution(): void {
+    this.m_restitution = b2MixRestitution(this.m_fixtureA.m_restitution, this.m_fixtureB.m_restitution);
+  }
+
+  /** Evaluate this contact with your own manifold and transforms. */
+  abstract Evaluate(manifold: b2Manifold, xfA: b2Transform, xfB: b2Transform): void;
+
+  /** Flag this contact for filtering. Filtering will occur the next time step. */
+  FlagForFiltering(): void {
+    this.m_flags |= b2Contact.e_filterFlag;
+  }
+
+  static AddType(createFcn: b2ContactCreateFcn, destroyFcn: b2ContactDestroyFcn, type1: number, type2: number): void {
+    b2Assert(0 <= type1 && type1 < b2Shape.e_typeCount);
+    b2Assert(0 <= type2 && type2 < b2Shape.e_typeCount);
+
+    const register = b2Contact.s_registers[type1][type2];
+    register.createFcn = createFcn;
+    register.destroyFcn = destroyFcn;
+    register.primary = true;
+
+    if (type1 !== type2) {
+      const reverse = b2Contact.s_registers[type2][type1];
+      reverse.createFcn = createFcn;
+      reverse.destroyFcn = destroyFcn;
+      reverse.primary = false;
+    }
+  }
+
+  /**
+   * Create the contact for a pair of fixture children, or null when the shape types do not
+   * collide (edge and chain pairs). A reverse-order registration swaps A and B, so fixture A is
+   * always the polygon, edge or chain side.
+   */
+  static Create(fixtureA: b2Fixture, indexA: number, fixtureB: b2Fixture, indexB: number): b2Contact | null {
+    // The C++ fills the registry lazily here; this port fills it from b2ContactManager's
+    // constructor (see the file header).
+    b2Assert(b2Contact.s_initialized, 'b2InitializeContactRegisters() must run before b2Contact.Create');
+
+    const type1 = fixtureA.GetType();
+    const type2 = fixtureB.GetType();
+
+    b2Assert(0 <= type1 && type1 < b2Shape.e_typeCount);
+    b2Assert(0 <= type2 && type2 < b2Shape.e_typeCount);
+
+    const register = b2Contact.s_registers[type1][type2];
+    const createFcn = register.createFcn;
+    if (createFcn) {
+      if (register.primary) {
+        return createFcn(fixtureA, indexA, fixtureB, indexB);
+      } else {
+        return createFcn(fixtureB, indexB, fixtureA, indexA);
+      }
+    } else {
+      return null;
+    }
+  }
+
+  static Destroy(contact: b2Contact): void {
+    b2Assert(b2Contact.s_initialized);
+
+    if (contact.m_manifold.pointCount > 0) {
+      contact.GetFixtureA().GetBody().SetAwake(true);
+      contact.GetFixtureB().GetBody().SetAwake(true);
+    }
+
+    const typeA = contact.GetFixtureA().GetType();
+    const typeB = contact.GetFixtureB().GetType();
+
+    b2Assert(0 <= typeA && typeB < b2Shape.e_typeCount);
+    b2Assert(0 <= typeA && typeB < b2Shape.e_typeCount);
+
+    const destroyFcn = b2Contact.s_registers[typeA][typeB].destroyFcn;
+    destroyFcn!(contact);
+  }
+
+  /**
+   * Update the contact manifold and touching status.
+   * Note: do not assume the fixture AABBs are overlapping or are valid.
+   */
+  Update(listener: b2ContactListener | null): void {
+    const oldManifold = s_oldManifold.Assign(this.m_manifold);
+
+    // Re-enable this contact.
+    this.m_flags |= b2Contact.e_enabledFlag;
+
+    let touching = false;
+    const wasTouching = (this.m_flags & b2Contact.e_touchingFlag) === b2Contact.e_touchingFlag;
+
+    const sensorA = this.m_fixtureA.IsSensor();
+    const sensorB = this.m_fixtureB.IsSensor();
+    const sensor = sensorA || sensorB;
+
+    const bodyA = this.m_fixtureA.GetBody();
+    const bodyB = this.m_fixtureB.GetBody();
+    const xfA = bodyA.GetTransform();
+    const xfB = bodyB.GetTransform();
+
+    // Is this contact a sensor?
+    if (sensor) {
+      const shapeA = this.m_fixtureA.GetShape();
+      const shapeB = this.m_fixtureB.GetShape();
+      touching = b2TestOverlapShapes(shapeA, this.m_indexA, shapeB, this.m_indexB, xfA, xfB);
+
+      // Sensors don't generate manifolds.
+      this.m_manifold.pointCount = 0;
+    } else {
+      this.Evaluate(this.m_manifold, xfA, xfB);
+      touching = this.m_manifold.pointCount > 0;
+
+      // Match old contact ids to new contact ids and copy the
+      // stored impulses to warm start the solver.
+      for (let i = 0; i < this.m_manifold.pointCount; ++i) {
+        const mp2 = this.m_manifold.points[i];
+        mp2.normalImpulse = 0.0;
+        mp2.tangentImpulse = 0.0;
+        const key2 = mp2.id.key;
+
+        for (let j = 0; j < oldManifold.pointCount; ++j) {
+          const mp1 = oldManifold.points[j];
+
+          if (mp1.id.key === key2) {
+            mp2.normalImpulse = mp1.normalImpulse;
+            mp2.tangentImpulse = mp1.tangentImpulse;
+            break;
+          }
+        }
+      }
+
+      if (touching !== wasTouching) {
+        bodyA.SetAwake(true);
+        bodyB.SetAwake(true);
+      }
+    }
+
+    if (touching) {
+      this.m_flags |= b2Contact.e_touchingFlag;
+    } else {
+      this.m_flags &= ~b2Contact.e_touchingFlag;
+    }
+
+    if (wasTouching === false && touching === true && listener) {
+      listener.BeginContact(this);
+    }
+
+    if (wasTouching === true && touching === false && listener) {
+      listener.EndContact(this);
+    }
+
+    if (sensor === false && touching && listener) {
+      listener.PreSolve(this, oldManifold);
+    }
+  }
+}

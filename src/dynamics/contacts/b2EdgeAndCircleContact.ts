@@ -1,0 +1,32 @@
+/*
+ * Contact between an edge (fixture A) and a circle (fixture B) (b2EdgeAndCircleContact.h, .cpp).
+ */
+
+import { b2CollideEdgeAndCircle } from '../../collision/b2CollideEdge';
+import type { b2Manifold } from '../../collision/b2Collision';
+import type { b2CircleShape } from '../../collision/shapes/b2CircleShape';
+import type { b2EdgeShape } from '../../collision/shapes/b2EdgeShape';
+import { b2Shape } from '../../collision/shapes/b2Shape';
+import type { b2Transform } from '../../common/b2Math';
+import { b2Assert } from '../../common/b2Settings';
+import type { b2Fixture } from '../b2Fixture';
+import { b2Contact } from './b2Contact';
+
+export class b2EdgeAndCircleContact extends b2Contact {
+  static override Create(fixtureA: b2Fixture, indexA: number, fixtureB: b2Fixture, indexB: number): b2Contact {
+    return new b2EdgeAndCircleContact(fixtureA, fixtureB);
+  }
+
+  // The block allocator of the C++ frees the memory here; the garbage collector does that now.
+  static override Destroy(contact: b2Contact): void {}
+
+  constructor(fixtureA: b2Fixture, fixtureB: b2Fixture) {
+    super(fixtureA, 0, fixtureB, 0);
+    b2Assert(this.m_fixtureA.GetType() === b2Shape.e_edge);
+    b2Assert(this.m_fixtureB.GetType() === b2Shape.e_circle);
+  }
+
+  override Evaluate(manifold: b2Manifold, xfA: b2Transform, xfB: b2Transform): void {
+    b2CollideEdgeAndCircle(manifold, this.m_fixtureA.GetShape() as b2EdgeShape, xfA, this.m_fixtureB.GetShape() as b2CircleShape, xfB);
+  }
+}

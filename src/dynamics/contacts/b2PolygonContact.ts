@@ -1,0 +1,31 @@
+/*
+ * Contact between two polygons (b2PolygonContact.h, .cpp).
+ */
+
+import { b2CollidePolygons } from '../../collision/b2CollidePolygon';
+import type { b2Manifold } from '../../collision/b2Collision';
+import type { b2PolygonShape } from '../../collision/shapes/b2PolygonShape';
+import { b2Shape } from '../../collision/shapes/b2Shape';
+import type { b2Transform } from '../../common/b2Math';
+import { b2Assert } from '../../common/b2Settings';
+import type { b2Fixture } from '../b2Fixture';
+import { b2Contact } from './b2Contact';
+
+export class b2PolygonContact extends b2Contact {
+  static override Create(fixtureA: b2Fixture, indexA: number, fixtureB: b2Fixture, indexB: number): b2Contact {
+    return new b2PolygonContact(fixtureA, fixtureB);
+  }
+
+  // The block allocator of the C++ frees the memory here; the garbage collector does that now.
+  static override Destroy(contact: b2Contact): void {}
+
+  constructor(fixtureA: b2Fixture, fixtureB: b2Fixture) {
+    super(fixtureA, 0, fixtureB, 0);
+    b2Assert(this.m_fixtureA.GetType() === b2Shape.e_polygon);
+    b2Assert(this.m_fixtureB.GetType() === b2Shape.e_polygon);
+  }
+
+  override Evaluate(manifold: b2Manifold, xfA: b2Transform, xfB: b2Transform): void {
+    b2CollidePolygons(manifold, this.m_fixtureA.GetShape() as b2PolygonShape, xfA, this.m_fixtureB.GetShape() as b2PolygonShape, xfB);
+  }
+}
