@@ -3,26 +3,29 @@
 // (tsconfig.build.json), run by the npm script after this.
 import { build } from 'esbuild';
 import { rmSync } from 'node:fs';
+import path from 'node:path';
 
-rmSync('dist', { recursive: true, force: true });
+// The output folder: dist, or the first argument (the tests build into a temporary folder).
+const outDir = process.argv[2] ?? 'dist';
+rmSync(outDir, { recursive: true, force: true });
 
 const common = {
   bundle: true,
   sourcemap: true,
   target: 'es2020',
-  logLevel: 'info',
+  logLevel: 'warning',
   legalComments: 'inline',
 };
 
 await Promise.all([
-  build({ ...common, entryPoints: ['src/index.ts'], format: 'esm', outfile: 'dist/webphysics.mjs' }),
-  build({ ...common, entryPoints: ['src/api/Box2D.ts'], format: 'iife', globalName: 'Box2D', outfile: 'dist/box2d.js' }),
+  build({ ...common, entryPoints: ['src/index.ts'], format: 'esm', outfile: path.join(outDir, 'webphysics.mjs') }),
+  build({ ...common, entryPoints: ['src/api/Box2D.ts'], format: 'iife', globalName: 'Box2D', outfile: path.join(outDir, 'box2d.js') }),
   build({
     ...common,
     entryPoints: ['src/api/Box2D.ts'],
     format: 'iife',
     globalName: 'Box2D',
     minify: true,
-    outfile: 'dist/box2d.min.js',
+    outfile: path.join(outDir, 'box2d.min.js'),
   }),
 ]);

@@ -1,4 +1,8 @@
-/** Timer for profiling (b2Timer.h), in milliseconds from the host's monotonic clock. */
+// The host's monotonic clock where it has one (browsers, Node, Deno), else the wall clock.
+const now: () => number =
+  typeof performance !== 'undefined' && typeof performance.now === 'function' ? () => performance.now() : () => Date.now();
+
+/** Timer for profiling (b2Timer.h), in milliseconds. */
 export class b2Timer {
   private m_start = 0;
 
@@ -8,11 +12,11 @@ export class b2Timer {
 
   /** Reset the timer. */
   Reset(): void {
-    this.m_start = performance.now();
+    this.m_start = now();
   }
 
   /** Get the time since construction or the last reset. */
   GetMilliseconds(): number {
-    return performance.now() - this.m_start;
+    return now() - this.m_start;
   }
 }

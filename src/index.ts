@@ -1,0 +1,55 @@
+/*
+ * WebPhysics: Box2D 2.2.1 in TypeScript. Every engine module, exported under Box2D's own names;
+ * the Box2DWeb namespace object is in ./api/Box2D.
+ */
+
+export * from './common/b2Settings';
+export * from './common/b2Math';
+export * from './common/b2Trig';
+export * from './common/b2Draw';
+export * from './common/b2Timer';
+export * from './common/b2GrowableStack';
+export * from './collision/b2Collision';
+export * from './collision/b2CollideCircle';
+export * from './collision/b2CollidePolygon';
+export * from './collision/b2CollideEdge';
+export * from './collision/b2Distance';
+export * from './collision/b2TimeOfImpact';
+export * from './collision/b2DynamicTree';
+export * from './collision/b2BroadPhase';
+export * from './collision/shapes/b2Shape';
+export * from './collision/shapes/b2CircleShape';
+export * from './collision/shapes/b2EdgeShape';
+export * from './collision/shapes/b2PolygonShape';
+export * from './collision/shapes/b2ChainShape';
+export * from './dynamics/b2TimeStep';
+export * from './dynamics/b2WorldCallbacks';
+export * from './dynamics/b2Body';
+export * from './dynamics/b2Fixture';
+export * from './dynamics/b2World';
+export * from './dynamics/b2ContactManager';
+export * from './dynamics/b2Island';
+export * from './dynamics/contacts/b2Contact';
+export * from './dynamics/contacts/b2ContactRegistry';
+export * from './dynamics/contacts/b2CircleContact';
+export * from './dynamics/contacts/b2PolygonAndCircleContact';
+export * from './dynamics/contacts/b2PolygonContact';
+export * from './dynamics/contacts/b2EdgeAndCircleContact';
+export * from './dynamics/contacts/b2EdgeAndPolygonContact';
+export * from './dynamics/contacts/b2ChainAndCircleContact';
+export * from './dynamics/contacts/b2ChainAndPolygonContact';
+export * from './dynamics/contacts/b2ContactSolver';
+export * from './dynamics/joints/b2Joint';
+export * from './dynamics/joints/b2JointFactory';
+export * from './dynamics/joints/b2DistanceJoint';
+export * from './dynamics/joints/b2FrictionJoint';
+export * from './dynamics/joints/b2GearJoint';
+export * from './dynamics/joints/b2MouseJoint';
+export * from './dynamics/joints/b2PrismaticJoint';
+export * from './dynamics/joints/b2PulleyJoint';
+export * from './dynamics/joints/b2RevoluteJoint';
+export * from './dynamics/joints/b2RopeJoint';
+export * from './dynamics/joints/b2WeldJoint';
+export * from './dynamics/joints/b2WheelJoint';
+export * from './rope/b2Rope';
+export * from './io/b2dJson';
