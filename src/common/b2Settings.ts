@@ -108,33 +108,38 @@ export function b2SetLogSink(sink: (text: string) => void): void {
 }
 
 /**
- * Logging function with the printf conversions Box2D's Dump() uses: %d, %s, %f, %.15lef
- * (and %% for a percent sign).
+ * C's %.<digits>e: like toExponential, except that an exact tie rounds to even as printf does
+ * (toExponential rounds ties up), -0 keeps its sign, and the exponent has at least two digits.
+ */
+function formatExponential(x: number, digits: number): string {
+  const sign = x < 0 || Object.is(x, -0) ? '-' : '';
+  const magnitude = Math.abs(x);
+  let text = magnitude.toExponential(digits);
+  if (Number.isFinite(magnitude) && digits < 99) {
+    // A tie at digit digits + 1 means the exact decimal value ends there with a 5; an exact
+    // expansion that long fits in 101 significant digits, which toExponential(100) prints exactly.
+    const [mantissa, exponent] = magnitude.toExponential(100).split('e');
+    const all = mantissa.replace('.', '');
+    const kept = all.slice(0, digits + 1);
+    const isTie = all[digits + 1] === '5' && /^0*$/.test(all.slice(digits + 2));
+    if (isTie && Number(kept[digits]) % 2 === 0) {
+      text = `${kept[0]}${digits > 0 ? '.' : ''}${kept.slice(1)}e${exponent}`;
+    }
+  }
+  return sign + text.replace(/e([+-])(\d)$/, 'e$10$2');
+}
+
+/**
+ * Logging function (b2Log). Box2D's Dump() uses only %d and %.15lef; %s and %% are accepted too.
  */
 export function b2Log(format: string, ...args: (number | string | boolean)[]): void {
   let argIndex = 0;
-  const text = format.replace(/%(%|[-+ 0#]*\d*(?:\.(\d+))?(?:l|ll|h)?([dieEfgsu]))/g, (match, _all, precision, conv) => {
+  const text = format.replace(/%(%|d|s|\.(\d+)l?e)/g, (match, _conversion, precision) => {
     if (match === '%%') return '%';
     const arg = args[argIndex++];
-    switch (conv) {
-      case 'd':
-      case 'i':
-      case 'u':
-        return String(Math.trunc(Number(arg)));
-      case 's':
-        return String(arg);
-      case 'e':
-      case 'E': {
-        const digits = precision === undefined ? 6 : Number(precision);
-        // C prints at least two exponent digits: 1.5e+00, not JavaScript's 1.5e+0.
-        const s = Number(arg).toExponential(digits).replace(/e([+-])(\d)$/, 'e$10$2');
-        return conv === 'E' ? s.toUpperCase() : s;
-      }
-      case 'f':
-        return Number(arg).toFixed(precision === undefined ? 6 : Number(precision));
-      default:
-        return String(arg);
-    }
+    if (match === '%d') return String(Math.trunc(Number(arg)));
+    if (match === '%s') return String(arg);
+    return formatExponential(Number(arg), Number(precision));
   });
   b2LogSink(text);
 }

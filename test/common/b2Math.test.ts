@@ -23,17 +23,7 @@ import {
   b2Vec2,
   b2Vec3,
 } from '../../src/common/b2Math';
-import { b2_angularSlop, b2_epsilon, b2_maxFloat, b2_pi } from '../../src/common/b2Settings';
-
-describe('b2Settings', () => {
-  it('keeps the literals of b2Settings.h as doubles, not Math.PI or float-rounded values', () => {
-    expect(b2_pi).toBe(3.14159265359);
-    expect(b2_pi).not.toBe(Math.PI);
-    expect(b2_epsilon).toBe(1.1920928955078125e-7);
-    expect(b2_maxFloat).toBe(3.4028234663852886e38);
-    expect(b2_angularSlop).toBe((2.0 / 180.0) * 3.14159265359);
-  });
-});
+import { b2_pi } from '../../src/common/b2Settings';
 
 describe('b2Vec2', () => {
   it('Normalize returns the length and leaves vectors shorter than b2_epsilon unchanged', () => {
