@@ -65,6 +65,13 @@ export class b2Vec2 {
     return this;
   }
 
+  /** -this (the C++ unary operator -). */
+  Negate(out: b2Vec2): b2Vec2 {
+    out.x = -this.x;
+    out.y = -this.y;
+    return out;
+  }
+
   /** this += v */
   Add(v: Readonly<b2Vec2>): this {
     this.x += v.x;
@@ -169,6 +176,14 @@ export class b2Vec3 {
     return this;
   }
 
+  /** -this (the C++ unary operator -). */
+  Negate(out: b2Vec3): b2Vec3 {
+    out.x = -this.x;
+    out.y = -this.y;
+    out.z = -this.z;
+    return out;
+  }
+
   Add(v: Readonly<b2Vec3>): this {
     this.x += v.x;
     this.y += v.y;
@@ -195,6 +210,15 @@ export class b2Vec3 {
 export class b2Mat22 {
   readonly ex = new b2Vec2(1.0, 0.0);
   readonly ey = new b2Vec2(0.0, 1.0);
+
+  /**
+   * Construct this matrix using columns (the identity when omitted; the C++ default constructor
+   * leaves it uninitialised).
+   */
+  constructor(c1?: Readonly<b2Vec2>, c2?: Readonly<b2Vec2>) {
+    if (c1 !== undefined) this.ex.Assign(c1);
+    if (c2 !== undefined) this.ey.Assign(c2);
+  }
 
   /** Construct from scalars, as the C++ b2Mat22(a11, a12, a21, a22). */
   static FromScalars(a11: number, a12: number, a21: number, a22: number): b2Mat22 {
@@ -279,6 +303,16 @@ export class b2Mat33 {
   readonly ex = new b2Vec3(1.0, 0.0, 0.0);
   readonly ey = new b2Vec3(0.0, 1.0, 0.0);
   readonly ez = new b2Vec3(0.0, 0.0, 1.0);
+
+  /**
+   * Construct this matrix using columns (the identity when omitted; the C++ default constructor
+   * leaves it uninitialised).
+   */
+  constructor(c1?: Readonly<b2Vec3>, c2?: Readonly<b2Vec3>, c3?: Readonly<b2Vec3>) {
+    if (c1 !== undefined) this.ex.Assign(c1);
+    if (c2 !== undefined) this.ey.Assign(c2);
+    if (c3 !== undefined) this.ez.Assign(c3);
+  }
 
   Clone(): b2Mat33 {
     return new b2Mat33().Assign(this);
@@ -875,6 +909,28 @@ export function b2ClampV(a: Readonly<b2Vec2>, low: Readonly<b2Vec2>, high: Reado
   out.x = b2Clamp(a.x, low.x, high.x);
   out.y = b2Clamp(a.y, low.y, high.y);
   return out;
+}
+
+/**
+ * b2Swap(a, b) for value objects (b2Vec2, b2Rot, b2Transform, b2Manifold...): exchanges their
+ * contents in place, field by field and recursively through nested value objects and arrays, as
+ * the C++ template swaps two structs. Both must be of the same class. Numbers cannot be passed by
+ * reference in JavaScript; swap those at the call site (`const t = a; a = b; b = t;`), as
+ * b2AABB.RayCast does.
+ */
+export function b2Swap<T extends object>(a: T, b: T): void {
+  const ra = a as Record<string, unknown>;
+  const rb = b as Record<string, unknown>;
+  for (const key of Object.keys(ra)) {
+    const va = ra[key];
+    const vb = rb[key];
+    if (va !== null && vb !== null && typeof va === 'object' && typeof vb === 'object') {
+      b2Swap(va, vb);
+    } else {
+      ra[key] = vb;
+      rb[key] = va;
+    }
+  }
 }
 
 /** The next largest power of 2 of a uint32 (SWAR fold). */

@@ -8,6 +8,23 @@
  */
 
 /**
+ * The b2Settings.h integer and float typedefs. JavaScript numbers are float64; the integer widths
+ * are enforced where the C++ depends on them (`| 0`, `& 0xff`, `& 0xffff`, see docs/PORTING.md).
+ */
+export type int8 = number;
+export type int16 = number;
+export type int32 = number;
+export type uint8 = number;
+export type uint16 = number;
+export type uint32 = number;
+/** The reference engine was built with float32 = double, which is what a JavaScript number is. */
+export type float32 = number;
+export type float64 = number;
+
+/** B2_NOT_USED(x): marks an argument as deliberately unused. Does nothing. */
+export function B2_NOT_USED(..._x: unknown[]): void {}
+
+/**
  * Box2D's b2Assert. The C++ asserts vanish in release builds; these stay, so a broken invariant
  * stops with a message instead of corrupting the world.
  */

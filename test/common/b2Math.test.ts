@@ -18,6 +18,7 @@ import {
   b2NextPowerOfTwo,
   b2IsPowerOfTwo,
   b2Rot,
+  b2Swap,
   b2Sweep,
   b2Transform,
   b2Vec2,
@@ -41,6 +42,53 @@ describe('b2Vec2', () => {
     const b = new b2Vec2(5, 7);
     const s = a.Skew(new b2Vec2());
     expect(s.x * b.x + s.y * b.y).toBe(b2Cross(a, b));
+  });
+});
+
+describe('the unary minus, column constructors and b2Swap', () => {
+  it('Negate writes -v to out, which may alias v, and negates +0 to -0', () => {
+    const v = new b2Vec2(2, 0);
+    const n = v.Negate(new b2Vec2());
+    expect(n.x).toBe(-2);
+    expect(Object.is(n.y, -0)).toBe(true);
+    expect([v.x, v.y]).toEqual([2, 0]);
+    expect(v.Negate(v)).toBe(v);
+    expect(v.x).toBe(-2);
+    const w = new b2Vec3(1, -2, 3).Negate(new b2Vec3());
+    expect([w.x, w.y, w.z]).toEqual([-1, 2, -3]);
+  });
+
+  it('b2Mat22(c1, c2) and b2Mat33(c1, c2, c3) copy the columns; no arguments give the identity', () => {
+    const c1 = new b2Vec2(1, 2);
+    const c2 = new b2Vec2(3, 4);
+    const m = new b2Mat22(c1, c2);
+    expect([m.ex.x, m.ex.y, m.ey.x, m.ey.y]).toEqual([1, 2, 3, 4]);
+    c1.x = 9;
+    expect(m.ex.x).toBe(1);
+    expect(m.ex).not.toBe(c1);
+    expect([new b2Mat22().ex.x, new b2Mat22().ey.y]).toEqual([1, 1]);
+    const m3 = new b2Mat33(new b2Vec3(1, 2, 3), new b2Vec3(4, 5, 6), new b2Vec3(7, 8, 9));
+    expect([m3.ex.z, m3.ey.y, m3.ez.x]).toEqual([3, 5, 7]);
+    const id = new b2Mat33();
+    expect([id.ex.x, id.ey.y, id.ez.z, id.ex.y]).toEqual([1, 1, 1, 0]);
+  });
+
+  it('b2Swap exchanges the contents of two value objects, nested ones included, keeping identities', () => {
+    const a = new b2Vec2(1, 2);
+    const b = new b2Vec2(3, 4);
+    b2Swap(a, b);
+    expect([a.x, a.y, b.x, b.y]).toEqual([3, 4, 1, 2]);
+
+    const xa = new b2Transform(new b2Vec2(1, 2), new b2Rot(0.5));
+    const xb = new b2Transform(new b2Vec2(-3, 4), new b2Rot(-1));
+    const pA = xa.p;
+    const qA = xa.q;
+    const before = [xa.Clone(), xb.Clone()];
+    b2Swap(xa, xb);
+    expect(xa).toEqual(before[1]);
+    expect(xb).toEqual(before[0]);
+    expect(xa.p).toBe(pA);
+    expect(xa.q).toBe(qA);
   });
 });
 

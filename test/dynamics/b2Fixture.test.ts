@@ -1,6 +1,6 @@
 import { afterEach, describe, expect, it } from 'vitest';
 import { b2Vec2 } from '../../src/common/b2Math';
-import { b2LogSink, b2SetLogSink } from '../../src/common/b2Settings';
+import { b2LogSink, b2SetLogSink, b2_linearSlop, b2_polygonRadius } from '../../src/common/b2Settings';
 import { b2RayCastInput, b2RayCastOutput } from '../../src/collision/b2Collision';
 import { b2ChainShape } from '../../src/collision/shapes/b2ChainShape';
 import { b2CircleShape } from '../../src/collision/shapes/b2CircleShape';
@@ -182,6 +182,34 @@ describe('b2Fixture filtering', () => {
   it('falls back to the masks for different groups', () => {
     expect(contactsBetween({ groupIndex: -3 }, { groupIndex: -4 })).toBe(1);
     expect(contactsBetween({ groupIndex: 3, maskBits: 0 }, { groupIndex: 4 })).toBe(0);
+  });
+
+  it('decides what physically collides: a box falls through the ground or lands on it by category, mask and group', () => {
+    /** Drops a 2 x 2 box from y = 2 onto a static ground (top at y = 0.5); its height after 1.5 s. */
+    function drop(groundFilter: Partial<b2Filter>, boxFilter: Partial<b2Filter>): number {
+      const world = new b2World(new b2Vec2(0.0, -10.0));
+      const ground = createBody(world, b2_staticBody);
+      const fd = new b2FixtureDef();
+      fd.shape = new b2PolygonShape().SetAsBox(10.0, 0.5);
+      Object.assign(fd.filter, groundFilter);
+      ground.CreateFixture(fd);
+      const body = createBody(world, b2_dynamicBody, 0.0, 2.0);
+      boxFixture(body, boxFilter);
+      for (let k = 0; k < 90; ++k) world.Step(dt, 8, 3);
+      return body.GetPosition().y;
+    }
+    const landed = 0.5 + 1.0 + 2.0 * b2_polygonRadius - b2_linearSlop;
+    const fellThrough = (y: number) => y < -5.0;
+
+    expect(drop({}, {})).toBeCloseTo(landed, 3);
+    // The box's mask rejects the ground's category, or the ground's mask rejects the box's.
+    expect(fellThrough(drop({ categoryBits: 0x0002 }, { maskBits: 0xffff & ~0x0002 }))).toBe(true);
+    expect(fellThrough(drop({ maskBits: 0xffff & ~0x0004 }, { categoryBits: 0x0004 }))).toBe(true);
+    // A shared positive group overrides the masks; a shared negative group overrides matching masks.
+    expect(drop({ categoryBits: 0x0002, groupIndex: 5 }, { maskBits: 0xffff & ~0x0002, groupIndex: 5 })).toBeCloseTo(landed, 3);
+    expect(fellThrough(drop({ groupIndex: -5 }, { groupIndex: -5 }))).toBe(true);
+    // Different groups fall back to the masks.
+    expect(drop({ groupIndex: -5 }, { groupIndex: -6 })).toBeCloseTo(landed, 3);
   });
 
   it('Refilter after SetFilterData drops the contact on the next step and a later one restores it', () => {

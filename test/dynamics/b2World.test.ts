@@ -269,6 +269,61 @@ describe('b2World sleeping', () => {
   });
 });
 
+describe('b2World waking by contact', () => {
+  it('wakes a sleeping box when a falling ball\'s contact with it is created (2.2.1 AddPair), and both then sleep together', () => {
+    const { world, box } = restingBox();
+    expect(stepUntilAsleep(world, box, 240)).toBeGreaterThan(0);
+    const ball = createBody(world, b2BodyType.b2_dynamicBody, 0.0, 2.5);
+    addCircle(ball, 0.25, 1.0);
+
+    const ballContact = (): b2Contact | null => {
+      for (let ce = ball.GetContactList(); ce; ce = ce.next) if (ce.other === box) return ce.contact;
+      return null;
+    };
+    const history: { contact: boolean; touching: boolean; boxAwake: boolean }[] = [];
+    for (let k = 0; k < 60 && !(history.length > 0 && history[history.length - 1].touching); ++k) {
+      world.Step(h, 8, 3);
+      const c = ballContact();
+      history.push({ contact: c !== null, touching: c !== null && c.IsTouching(), boxAwake: box.IsAwake() });
+    }
+    const created = history.findIndex((s) => s.contact);
+    const touched = history.findIndex((s) => s.touching);
+    expect(created).toBeGreaterThan(0);
+    // The fat AABBs overlap before the shapes touch.
+    expect(touched).toBeGreaterThan(created);
+    // Asleep until the contact exists, awake from then on.
+    expect(history.map((s) => s.boxAwake)).toEqual(history.map((_, i) => i >= created));
+
+    // Touching, the two form one island: they fall asleep in the same step.
+    let asleepAt = -1;
+    for (let k = 1; k <= 300 && asleepAt < 0; ++k) {
+      world.Step(h, 8, 3);
+      expect(ball.IsAwake()).toBe(box.IsAwake());
+      if (!box.IsAwake()) asleepAt = k;
+    }
+    expect(asleepAt).toBeGreaterThan(0);
+    expect(ballContact()!.IsTouching()).toBe(true);
+  });
+
+  it('keeps a jointed pair in one island: waking one body wakes the other in the next step', () => {
+    const world = new b2World(new b2Vec2(0.0, 0.0));
+    const a = createBody(world, b2BodyType.b2_dynamicBody, 0.0, 0.0);
+    addCircle(a, 0.5, 1.0);
+    const b = createBody(world, b2BodyType.b2_dynamicBody, 3.0, 0.0);
+    addCircle(b, 0.5, 1.0);
+    const jd = new b2DistanceJointDef();
+    jd.Initialize(a, b, a.GetPosition(), b.GetPosition());
+    world.CreateJoint(jd);
+    expect(stepUntilAsleep(world, a, 120)).toBeGreaterThan(0);
+    expect(b.IsAwake()).toBe(false);
+
+    a.SetAwake(true);
+    expect(b.IsAwake()).toBe(false);
+    world.Step(h, 8, 3);
+    expect([a.IsAwake(), b.IsAwake()]).toEqual([true, true]);
+  });
+});
+
 describe('b2World.QueryAABB', () => {
   function threeCircles(): { world: b2World; fixtures: b2Fixture[] } {
     const world = new b2World(new b2Vec2(0.0, -10.0));
@@ -483,6 +538,71 @@ describe('b2World continuous collision', () => {
 
     world.Step(h, 8, 3);
     expect(witness.GetPosition().x).toBe(50.0 + h * 1.0 + h * 1.0);
+  });
+});
+
+describe('b2World continuous collision: bullets (2.2.1 SolveTOI rules)', () => {
+  // A ball of radius 0.1 at y = 1 moving down 2 m in one step, through a 0.1 m thick plate at
+  // y = 0: neither end of the step overlaps the plate, so only a TOI event can catch it.
+  function ballAndPlate(plateType: b2BodyType, bullet: boolean, continuous = true) {
+    const world = new b2World(new b2Vec2(0.0, 0.0));
+    world.SetContinuousPhysics(continuous);
+    const plate = createBody(world, plateType, 0.0, 0.0);
+    addBox(plate, 2.0, 0.05, 1.0);
+    const bd = new b2BodyDef();
+    bd.type = b2BodyType.b2_dynamicBody;
+    bd.position.Set(0.0, 1.0);
+    bd.linearVelocity.Set(0.0, -120.0);
+    bd.bullet = bullet;
+    const ball = world.CreateBody(bd);
+    addCircle(ball, 0.1, 1.0);
+    return { world, plate, ball };
+  }
+
+  it('stops a fast small bullet at a thin static wall, at the time of impact', () => {
+    const { world, plate, ball } = ballAndPlate(b2BodyType.b2_staticBody, true);
+    expect(ball.IsBullet()).toBe(true);
+    world.Step(h, 8, 3);
+    // Stopped on the upper face (0.05 + radius 0.1), within the TOI target tolerance.
+    expect(ball.GetPosition().y).toBeGreaterThan(0.05 + 0.1 - 3.0 * 0.005);
+    expect(ball.GetPosition().y).toBeLessThan(0.2);
+    for (let k = 0; k < 30; ++k) world.Step(h, 8, 3);
+    expect(ball.GetPosition().y).toBeGreaterThan(0.1);
+    expect(plate.GetPosition().y).toBe(0.0);
+  });
+
+  it('lets even a bullet tunnel through the wall when continuous physics is off', () => {
+    const { world, ball } = ballAndPlate(b2BodyType.b2_staticBody, true, false);
+    world.Step(h, 8, 3);
+    expect(ball.GetPosition().y).toBe(1.0 + h * -120.0);
+  });
+
+  it('lets a fast non-bullet dynamic body tunnel through a thin dynamic plate: no TOI between two non-bullets', () => {
+    const { world, plate, ball } = ballAndPlate(b2BodyType.b2_dynamicBody, false);
+    world.Step(h, 8, 3);
+    expect(ball.GetPosition().y).toBe(1.0 + h * -120.0);
+    expect(ball.GetLinearVelocity().y).toBe(-120.0);
+    // The plate never felt it.
+    expect(plate.GetLinearVelocity()).toEqual(new b2Vec2(0.0, 0.0));
+    expect(plate.GetPosition().y).toBe(0.0);
+  });
+
+  it('stops the same body at the thin dynamic plate when it is a bullet, and pushes the plate', () => {
+    const { world, plate, ball } = ballAndPlate(b2BodyType.b2_dynamicBody, true);
+    world.Step(h, 8, 3);
+    expect(ball.GetPosition().y).toBeGreaterThan(plate.GetPosition().y + 0.05 + 0.1 - 3.0 * 0.005);
+    expect(ball.GetPosition().y).toBeLessThan(0.2);
+    expect(plate.GetLinearVelocity().y).toBeLessThan(0.0);
+    for (let k = 0; k < 30; ++k) world.Step(h, 8, 3);
+    expect(ball.GetPosition().y).toBeGreaterThan(plate.GetPosition().y + 0.1);
+  });
+
+  it('stops a non-bullet dynamic body at a thin kinematic plate: only dynamic pairs need a bullet', () => {
+    const { world, plate, ball } = ballAndPlate(b2BodyType.b2_kinematicBody, false);
+    world.Step(h, 8, 3);
+    expect(ball.GetPosition().y).toBeGreaterThan(0.05 + 0.1 - 3.0 * 0.005);
+    expect(ball.GetPosition().y).toBeLessThan(0.2);
+    expect(plate.GetPosition().y).toBe(0.0);
   });
 });
 

@@ -17,8 +17,9 @@
  * Cdot = wB - wA
  * J = [0 0 -1 0 0 1]
  *
- * b2WheelJoint::GetDefinition is declared by the 2.2.1 header but never defined, so it is not
- * ported.
+ * b2WheelJoint::GetDefinition is declared by the 2.2.1 header but never defined (a C++ call fails
+ * to link). The port defines it as the inverse of the constructor: it fills a def from which
+ * CreateJoint would build an equivalent joint.
  */
 
 import { b2Abs, b2Clamp, b2CrossSV, b2MulRV, b2Rot, b2SubVV, b2Vec2 } from '../../common/b2Math';
@@ -434,6 +435,26 @@ export class b2WheelJoint extends b2Joint {
     posB.a = aB;
 
     return b2Abs(C) <= b2_linearSlop;
+  }
+
+  /**
+   * Fill def with this joint's settings: bodies, user data, collideConnected, local anchors, local
+   * axis, motor and spring. Declared (never defined) by the 2.2.1 header; see the file comment.
+   */
+  GetDefinition(def: b2WheelJointDef): void {
+    def.type = this.m_type;
+    def.userData = this.m_userData;
+    def.bodyA = this.m_bodyA;
+    def.bodyB = this.m_bodyB;
+    def.collideConnected = this.m_collideConnected;
+    def.localAnchorA.Assign(this.m_localAnchorA);
+    def.localAnchorB.Assign(this.m_localAnchorB);
+    def.localAxisA.Assign(this.m_localXAxisA);
+    def.enableMotor = this.m_enableMotor;
+    def.maxMotorTorque = this.m_maxMotorTorque;
+    def.motorSpeed = this.m_motorSpeed;
+    def.frequencyHz = this.m_frequencyHz;
+    def.dampingRatio = this.m_dampingRatio;
   }
 
   override GetAnchorA(out: b2Vec2): b2Vec2 {

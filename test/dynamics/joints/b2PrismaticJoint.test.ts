@@ -97,6 +97,44 @@ describe('b2PrismaticJoint', () => {
     expect(joint.GetJointTranslation()).toBeLessThanOrEqual(0.5 + b2_linearSlop + 1e-12);
   });
 
+  it('locks the translation with equal limits (e_equalLimits), carrying m*g and ignoring the motor', () => {
+    const { world, box, joint } = slider(new b2Vec2(0, 1), -10, (def) => {
+      def.enableLimit = true;
+      def.lowerTranslation = 0;
+      def.upperTranslation = 0;
+      def.enableMotor = true;
+      def.motorSpeed = 5;
+      def.maxMotorForce = 1000;
+    });
+    let maxAbs = 0;
+    step(world, 120, () => (maxAbs = Math.max(maxAbs, Math.abs(joint.GetJointTranslation()))));
+    expect(joint.m_limitState).toBe(b2LimitState.e_equalLimits);
+    expect(maxAbs).toBeLessThan(b2_linearSlop);
+    expect(box.GetLinearVelocity().y).toBeCloseTo(0, 9);
+    expect(joint.GetMotorForce(inv_h)).toBe(0);
+    expect(joint.GetReactionForce(inv_h, new b2Vec2()).y).toBeCloseTo(3 * 10, 6);
+  });
+
+  it('lets a motor drive the body into its upper limit, where the limit holds the saturated motor force', () => {
+    const { world, joint } = slider(new b2Vec2(1, 0), 0, (def) => {
+      def.enableLimit = true;
+      def.lowerTranslation = -1;
+      def.upperTranslation = 1;
+      def.enableMotor = true;
+      def.motorSpeed = 2;
+      def.maxMotorForce = 50;
+    });
+    step(world, 120);
+    expect(joint.m_limitState).toBe(b2LimitState.e_atUpperLimit);
+    expect(joint.GetJointTranslation()).toBeGreaterThan(1 - b2_linearSlop);
+    expect(joint.GetJointTranslation()).toBeLessThanOrEqual(1 + b2_linearSlop);
+    expect(Math.abs(joint.GetJointSpeed())).toBeLessThan(1e-9);
+    expect(joint.GetMotorForce(inv_h)).toBeCloseTo(50, 9);
+    // The limit impulse cancels the motor's, so the axial reaction (motor + limit) is zero.
+    expect(inv_h * joint.m_impulse.z).toBeCloseTo(-50, 6);
+    expect(joint.GetReactionForce(inv_h, new b2Vec2()).x).toBeCloseTo(0, 6);
+  });
+
   it('drives the motor to its speed when the force allows it', () => {
     const { world, joint } = slider(new b2Vec2(1, 0), 0, (def) => {
       def.enableMotor = true;

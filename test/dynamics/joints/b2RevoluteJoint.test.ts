@@ -122,6 +122,39 @@ describe('b2RevoluteJoint', () => {
     expect(joint.GetJointAngle()).toBeLessThan(-0.5 + b2_angularSlop);
   });
 
+  it('locks the angle with equal limits (e_equalLimits), carrying the torque and ignoring the motor', () => {
+    const { world, bar, joint } = limitedBar(0.0, 0.0);
+    joint.EnableMotor(true);
+    joint.SetMotorSpeed(10);
+    joint.SetMaxMotorTorque(1000);
+    let maxAbsAngle = 0;
+    step(world, 120, () => {
+      maxAbsAngle = Math.max(maxAbsAngle, Math.abs(joint.GetJointAngle()));
+      bar.ApplyTorque(5);
+    });
+    expect(joint.m_limitState).toBe(b2LimitState.e_equalLimits);
+    expect(maxAbsAngle).toBeLessThan(b2_angularSlop);
+    expect(Math.abs(joint.GetJointSpeed())).toBeLessThan(1e-9);
+    expect(joint.GetMotorTorque(inv_h)).toBe(0);
+    step(world, 1);
+    expect(joint.GetReactionTorque(inv_h)).toBeCloseTo(-5, 6);
+  });
+
+  it('lets a motor drive the bar into its upper limit, where the limit holds the saturated motor torque', () => {
+    const { world, joint } = limitedBar(-0.5, 0.5);
+    joint.EnableMotor(true);
+    joint.SetMotorSpeed(2);
+    joint.SetMaxMotorTorque(10);
+    step(world, 120);
+    expect(joint.m_limitState).toBe(b2LimitState.e_atUpperLimit);
+    expect(joint.GetJointAngle()).toBeGreaterThan(0.5 - b2_angularSlop);
+    expect(joint.GetJointAngle()).toBeLessThanOrEqual(0.5 + b2_angularSlop);
+    expect(Math.abs(joint.GetJointSpeed())).toBeLessThan(1e-9);
+    // The motor pushes with its maximum torque and the limit pushes back as hard.
+    expect(joint.GetMotorTorque(inv_h)).toBeCloseTo(10, 9);
+    expect(joint.GetReactionTorque(inv_h)).toBeCloseTo(-10, 6);
+  });
+
   it('drives the motor to its speed when the torque allows it', () => {
     const world = makeWorld(0, 0);
     const ground = makeGround(world);

@@ -34,6 +34,40 @@ describe('b2WheelJointDef.Initialize and the constructor', () => {
   });
 });
 
+describe('b2WheelJoint.GetDefinition', () => {
+  it('fills a def that rebuilds an equivalent joint, reflecting later setter calls', () => {
+    const { world, ground, wheel, joint } = suspendedWheel(3, 0.4, -10, (def) => {
+      def.enableMotor = true;
+      def.motorSpeed = 2;
+      def.maxMotorTorque = 7;
+      def.collideConnected = true;
+      def.userData = 'wheel';
+    });
+    joint.SetMotorSpeed(-4);
+    joint.SetSpringFrequencyHz(5);
+
+    const def = new b2WheelJointDef();
+    joint.GetDefinition(def);
+    expect(def.type).toBe(joint.GetType());
+    expect(def.bodyA).toBe(ground);
+    expect(def.bodyB).toBe(wheel);
+    expect(def.collideConnected).toBe(true);
+    expect(def.userData).toBe('wheel');
+    expect([def.localAnchorA.x, def.localAnchorA.y]).toEqual([joint.GetLocalAnchorA().x, joint.GetLocalAnchorA().y]);
+    expect([def.localAnchorB.x, def.localAnchorB.y]).toEqual([0, 0]);
+    expect([def.localAxisA.x, def.localAxisA.y]).toEqual([0, 1]);
+    expect([def.enableMotor, def.motorSpeed, def.maxMotorTorque]).toEqual([true, -4, 7]);
+    expect([def.frequencyHz, def.dampingRatio]).toEqual([5, 0.4]);
+    // The def owns copies, not the joint's vectors.
+    expect(def.localAxisA).not.toBe(joint.GetLocalAxisA());
+
+    const copy = world.CreateJoint(def) as b2WheelJoint;
+    expect(copy.GetMotorSpeed()).toBe(-4);
+    expect(copy.GetSpringFrequencyHz()).toBe(5);
+    expect(copy.GetJointTranslation()).toBe(joint.GetJointTranslation());
+  });
+});
+
 describe('b2WheelJoint', () => {
   it('sags to the static spring deflection g / omega^2 and carries m*g through the spring', () => {
     const hz = 4;
