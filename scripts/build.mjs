@@ -1,6 +1,6 @@
 // npm run build: the ES module, the classic-script bundle that defines the global `Box2D` as
-// Box2DWeb's script does (plain and minified), all with source maps. Types come from tsc
-// (tsconfig.build.json), run by the npm script after this.
+// Box2DWeb's script does (plain and minified), and the command line (cli.mjs), all with source
+// maps. Types come from tsc (tsconfig.build.json), run by the npm script after this.
 import { build } from 'esbuild';
 import { rmSync } from 'node:fs';
 import path from 'node:path';
@@ -27,5 +27,14 @@ await Promise.all([
     globalName: 'Box2D',
     minify: true,
     outfile: path.join(outDir, 'box2d.min.js'),
+  }),
+  // The `webphysics` command line, run by bin/webphysics.mjs in the published package.
+  build({
+    ...common,
+    entryPoints: ['src/cli/main.ts'],
+    format: 'esm',
+    platform: 'node',
+    target: 'node20',
+    outfile: path.join(outDir, 'cli.mjs'),
   }),
 ]);

@@ -1,6 +1,6 @@
 /*
- * WebPhysics: Box2D 2.2.1 in TypeScript. Every engine module, exported under Box2D's own names;
- * the Box2DWeb namespace object is in ./api/Box2D.
+ * WebPhysics: Box2D 2.2.1 in TypeScript. Every engine module, exported under Box2D's own names,
+ * with the Box2DWeb 2.1a compatibility layer loaded (see the end of this file).
  */
 
 export * from './common/b2Settings';
@@ -53,3 +53,33 @@ export * from './dynamics/joints/b2WeldJoint';
 export * from './dynamics/joints/b2WheelJoint';
 export * from './rope/b2Rope';
 export * from './io/b2dJson';
+
+// The Box2DWeb 2.1a compatibility layer (./api/compat). Loading it installs the 2.1a members on the
+// engine classes, exactly as the classic-script bundle (dist/box2d.js) does, so code behaves the
+// same through either entry. The first six names below replace the engine's exports of the same
+// name: they are the same classes, whose constructors also accept 2.1a's arguments.
+export {
+  b2World,
+  b2CircleShape,
+  b2EdgeShape,
+  b2RayCastInput,
+  b2Transform,
+  b2DestructionListener,
+  b2DebugDraw,
+  b2Math,
+  b2Settings,
+  b2Collision,
+  b2FilterData,
+  b2EdgeChainDef,
+  b2LineJoint,
+  b2LineJointDef,
+  b2Controller,
+  b2BuoyancyController,
+  b2ConstantAccelController,
+  b2ConstantForceController,
+  b2GravityController,
+  b2TensorDampingController,
+} from './api/compat';
+export type { b2DebugDrawContext, b2QueryFunction, b2RayCastFunction } from './api/compat';
+/** Box2DWeb's namespaces (Box2D.Dynamics.b2World...), the object dist/box2d.js defines as a global. */
+export * as Box2D from './api/Box2D';
