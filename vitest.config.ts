@@ -1,8 +1,26 @@
 import { defineConfig } from 'vitest/config';
 
 export default defineConfig({
+  plugins: [
+    {
+      // WGSL shaders (shaders/*.wgsl) are imported as text, as esbuild's text loader does in the builds.
+      name: 'wgsl-text',
+      transform(code, id) {
+        if (id.endsWith('.wgsl')) return { code: `export default ${JSON.stringify(code)};`, map: null };
+        return undefined;
+      },
+    },
+  ],
   test: {
     include: ['test/**/*.test.ts'],
     testTimeout: 120_000,
+    // `vitest run --coverage` (npm test) reports line coverage of the engine and its layers (src/).
+    coverage: {
+      provider: 'v8',
+      include: ['src/**/*.ts'],
+      reporter: ['text-summary', 'text', 'json-summary'],
+      reportsDirectory: 'coverage',
+      thresholds: { lines: 90 },
+    },
   },
 });

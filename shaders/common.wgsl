@@ -1,0 +1,141 @@
+// common.wgsl: definitions every stage shares. The host prepends this file to each stage's WGSL
+// (WGSL has no #include), so a stage may use these names without declaring them.
+//
+// Conventions (see src-gpu/layout.ts, which holds the same numbers for the host):
+// - Every kernel runs 256 invocations per workgroup (the WebGPU default limit).
+// - Large grids are dispatched in 2D (x <= 65535 workgroups, maxComputeWorkgroupsPerDimension);
+//   a kernel linearises its workgroup id with `group_index` and bounds-checks the element index.
+// - AABB coordinates are float32 relative to the world origin; sort keys are their bit patterns
+//   mapped to order-preserving u32 (`sortable_key`), and every AABB comparison in the sweep is
+//   made on those keys, so the GPU and a CPU reference that compares the same float32 values
+//   agree exactly (no dependence on denormal flushing or fused operations).
+// - The state buffer (`STATE_*` word indices) carries counts and parameters between stages
+//   without any read-back; sizes known only on the GPU drive indirect dispatches (`ARGS_*`).
+
+const WORKGROUP_SIZE: u32 = 256u;
+
+// maxComputeWorkgroupsPerDimension, as the host dispatches (a pipeline constant, so tests can force
+// 2D dispatches with a small value).
+override MAX_GROUPS_PER_DIMENSION: u32 = 65535u;
+
+// Word indices of the state buffer (array<u32>, 16 words).
+const STATE_AXIS: u32 = 0u;            // 0: sweep along x, 1: along y (axis.wgsl)
+const STATE_PAIR_COUNT: u32 = 1u;      // pairs found (atomic; may exceed the capacity)
+const STATE_WORK_TOTAL: u32 = 2u;      // sweep work items (scan total of the chunk counts)
+const STATE_PAIR_SORT_COUNT: u32 = 3u; // pairs to sort: the pair count, or 0 after an overflow
+const STATE_OVERFLOW: u32 = 4u;        // OVERFLOW_PAIRS | OVERFLOW_ENTRIES
+const STATE_PAIR_CAPACITY: u32 = 5u;   // pairs the pair buffer holds (host)
+const STATE_ENTRY_TOTAL: u32 = 6u;     // sweep entries wanted: sum over proxies of their strips
+const STATE_LIVE_COUNT: u32 = 7u;      // live proxies (host)
+const STATE_STRIPS: u32 = 8u;          // strips across the other axis (axis.wgsl)
+const STATE_AXIS_LO: u32 = 9u;         // f32: lowest lower bound on the sweep axis
+const STATE_AXIS_SCALE: u32 = 10u;     // f32: quantisation scale on the sweep axis
+const STATE_OTHER_LO: u32 = 11u;       // f32: lowest lower bound on the other axis
+const STATE_OTHER_INV_H: u32 = 12u;    // f32: 1 / strip height
+const STATE_ENTRY_CAPACITY: u32 = 13u; // entries the entry buffers hold (host)
+const STATE_SLOT_COUNT: u32 = 14u;     // proxy slots (host)
+const STATE_ENTRIES: u32 = 15u;        // entries to sort and sweep: the total, or 0 after an overflow
+
+const OVERFLOW_PAIRS: u32 = 1u;
+const OVERFLOW_ENTRIES: u32 = 2u;
+
+// Sweep entries: key = strip << QUANT_BITS | quantised lower bound on the sweep axis.
+const STRIP_BITS: u32 = 12u;
+const MAX_STRIPS: u32 = 4096u;
+const QUANT_BITS: u32 = 20u;
+const QUANT_MAX: u32 = 1048575u;
+
+// Indirect-dispatch argument triples (u32 word offsets in the indirect buffer).
+const ARGS_EMIT: u32 = 0u;             // sweep emit, one invocation per work item
+const ARGS_PAIR_TILES: u32 = 3u;       // pair sort, one workgroup per 1024 pairs
+const ARGS_ENTRY_GROUPS: u32 = 6u;     // one invocation per entry
+const ARGS_ENTRY_TILES: u32 = 9u;      // entry sort, one workgroup per 1024 entries
+const ARGS_ENTRY_BLOCKS: u32 = 12u;    // scans over the entries, one workgroup per 4096
+
+// Proxy flag word (proxyRef.w): shape type in bits 0-1 (b2Shape::e_circle 0, e_edge 1,
+// e_polygon 2, e_chain 3), body type in bits 2-3 (b2_staticBody 0, b2_kinematicBody 1,
+// b2_dynamicBody 2), then the flags below.
+const PROXY_LIVE: u32 = 0x10u;
+const PROXY_SENSOR: u32 = 0x20u;
+const PROXY_JOINTED: u32 = 0x40u;      // the body has a joint with collideConnected == false
+
+// An AABB that overlaps nothing, for dead proxy slots. 3e38 rather than infinity: WGSL
+// implementations may assume finite floats.
+const EMPTY_AABB: vec4<f32> = vec4<f32>(3e38, 3e38, -3e38, -3e38);
+
+fn group_index(wid: vec3<u32>, nwg: vec3<u32>) -> u32 {
+  return wid.x + wid.y * nwg.x;
+}
+
+// Workgroups for `count` items of `per` each, split in 2D (x <= MAX_GROUPS_PER_DIMENSION).
+fn dispatch_size(count: u32, per: u32) -> vec3<u32> {
+  let groups = (count + per - 1u) / per;
+  let x = min(groups, MAX_GROUPS_PER_DIMENSION);
+  return vec3<u32>(x, select(1u, (groups + x - 1u) / x, x > 0u), 1u);
+}
+
+// The strip of a coordinate on the other axis (floor((v - lo) / h) clamped to [0, strips)).
+// Monotone in v: a <= b gives strip(a) <= strip(b).
+fn strip_of(v: f32, lo: f32, invH: f32, strips: u32) -> u32 {
+  let t = (v - lo) * invH;
+  if (t <= 0.0) {
+    return 0u;
+  }
+  return min(u32(t), strips - 1u);
+}
+
+// The quantised coordinate on the sweep axis, monotone in v.
+fn quantise(v: f32, lo: f32, scale: f32) -> u32 {
+  let t = (v - lo) * scale;
+  if (t <= 0.0) {
+    return 0u;
+  }
+  return min(u32(t), QUANT_MAX);
+}
+
+// Maps a float32 to a u32 whose unsigned order is the float order (negative floats reversed),
+// with -0 mapped like +0. Finite inputs only.
+fn sortable_key(f: f32) -> u32 {
+  var u = bitcast<u32>(f);
+  if (u == 0x80000000u) {
+    u = 0u;
+  }
+  if ((u & 0x80000000u) != 0u) {
+    return ~u;
+  }
+  return u | 0x80000000u;
+}
+
+// Workgroup-wide exclusive prefix sum (a raking scan: 16 invocations each scan 16 values, one
+// scans the 16 segment totals; three barriers, where a Hillis-Steele scan needs sixteen, which
+// matters on CPU implementations such as SwiftShader). Every invocation of the workgroup must
+// call it (uniform control flow); `wg_scan_total` holds the sum until the next call.
+var<workgroup> wg_scan: array<u32, 256>;
+var<workgroup> wg_scan_segment: array<u32, 16>;
+var<workgroup> wg_scan_total: u32;
+
+fn workgroup_exclusive_scan(lid: u32, value: u32) -> u32 {
+  wg_scan[lid] = value;
+  workgroupBarrier();
+  if (lid < 16u) {
+    var sum = 0u;
+    for (var i = 0u; i < 16u; i = i + 1u) {
+      let v = wg_scan[lid * 16u + i];
+      wg_scan[lid * 16u + i] = sum;
+      sum = sum + v;
+    }
+    wg_scan_segment[lid] = sum;
+  }
+  workgroupBarrier();
+  if (lid == 0u) {
+    var sum = 0u;
+    for (var i = 0u; i < 16u; i = i + 1u) {
+      let v = wg_scan_segment[i];
+      wg_scan_segment[i] = sum;
+      sum = sum + v;
+    }
+    wg_scan_total = sum;
+  }
+  workgroupBarrier();
+  return wg_scan[lid] + wg_scan_segment[lid / 16u];
+}

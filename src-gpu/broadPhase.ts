@@ -1,0 +1,336 @@
+/*
+ * The GPU broad phase: sweep-and-prune from body transforms to a sorted, deterministic pair list.
+ *
+ * One update() records one command buffer of five compute passes and reads back 64 bytes:
+ *   bounds  proxy AABBs from the bodies (GpuWorld input only)              src-gpu/bounds.ts
+ *   axis    the sweep axis (variance of the AABB centres) and the strips    src-gpu/axis.ts
+ *           across the other axis
+ *   sort    one entry per (proxy, strip it spans), radix-sorted by          src-gpu/keys.ts, radixSort.ts
+ *           (strip, quantised lower bound) (8 passes)
+ *   sweep   sorted AABBs, candidate ranges, work offsets, pairs           src-gpu/sweep.ts, scan.ts
+ *   pairs   overflow check, pairs radix-sorted by (a, b)                   src-gpu/pairs.ts
+ * then copies the state words (pair count, overflow, axis, work items) to a mappable buffer. If
+ * the pairs overflowed the pair buffer, the count the GPU kept counting says exactly how much is
+ * needed: the buffer grows (doubling) and the sweep and pair passes run again, so no pair is ever
+ * lost. Nothing else is read back; the pairs stay on the GPU for the narrow phase (`pairs`,
+ * `pairCount`), and readPairs() copies them out for tests and tools.
+ *
+ * Pairs follow b2ContactManager::AddPair: proxies of different bodies, at least one body dynamic,
+ * no joint with collideConnected == false between the bodies, a contact type for the two shapes
+ * (none for edge/chain against edge/chain), and b2ContactFilter::ShouldCollide on the filters.
+ * Each pair is (a, b) with a < b, proxy slots of GpuWorld (or indices of a GpuProxySet), and the
+ * list is sorted by (a, b): identical on every run on the same device.
+ */
+
+import type { GpuContext } from './device';
+import { GpuArray } from './buffers';
+import { AxisStage } from './axis';
+import { AABB_EXTENSION, BoundsStage } from './bounds';
+import { KeysStage } from './keys';
+import { Recorder } from './kernel';
+import { PairsStage } from './pairs';
+import { GpuProxySet } from './proxies';
+import { digitPasses, RadixSort } from './radixSort';
+import { SweepStage } from './sweep';
+import type { SweepInputs } from './sweep';
+import { PassTimer } from './timing';
+import { ARGS, INDIRECT_WORDS, MAP_READ, OVERFLOW_ENTRIES, OVERFLOW_PAIRS, STATE, STATE_WORDS, USAGE } from './layout';
+import { GpuWorld } from './world';
+
+export interface GpuBroadPhaseOptions {
+  /** Pairs the pair buffer holds at first (default 4 per proxy, at least 1024); it grows. */
+  initialPairCapacity?: number;
+  /** The AABB margin (default b2_aabbExtension, 0.1 m). */
+  extension?: number;
+  /**
+   * Sweep entries the buffers hold at first (default 3 x proxy slots + 64, which the entries
+   * cannot exceed in practice; a smaller value exercises the overflow path). It grows.
+   */
+  initialEntryCapacity?: number;
+}
+
+export interface BroadPhaseResult {
+  /** Pairs in the sorted list. */
+  pairCount: number;
+  /** 0: swept along x, 1: along y. */
+  axis: number;
+  /** Strips across the other axis. */
+  strips: number;
+  /** Sweep entries (proxies times the strips each spans). */
+  entries: number;
+  /** Sweep work items (chunks of candidates). */
+  workItems: number;
+  /** How many times the pair buffer had to grow during this update. */
+  regrows: number;
+  pairCapacity: number;
+  /** Dispatches recorded (the last submission, not counting regrows). */
+  dispatches: number;
+  /** GPU milliseconds per pass and in total (timestamp queries), null when unavailable. */
+  gpuTime: Record<string, number> | null;
+}
+
+export class GpuBroadPhase {
+  readonly ctx: GpuContext;
+  readonly extension: number;
+  private readonly bounds: BoundsStage;
+  private readonly axis: AxisStage;
+  private readonly keys: KeysStage;
+  private readonly sort: RadixSort;
+  private readonly sweep: SweepStage;
+  private readonly pairStage: PairsStage;
+  private readonly timer: PassTimer;
+  private readonly proxyAABBs: GpuArray;
+  private readonly items: GpuArray;
+  private readonly itemsTmp: GpuArray;
+  private entryCapacity = 0;
+  private readonly entryCapacityGiven: boolean;
+  private readonly pairsA: GpuArray;
+  private readonly pairsB: GpuArray;
+  readonly state: GPUBuffer;
+  readonly indirect: GPUBuffer;
+  private readonly stateRead: GPUBuffer;
+  private readonly stateWords = new Uint32Array(STATE_WORDS);
+  private sortedPairs: GPUBuffer | null = null;
+  private lastInputs: SweepInputs | null = null;
+  /** Pairs in the last update's sorted list. */
+  pairCount = 0;
+  /** Times the entry buffers had to grow (over all updates). */
+  entryRegrows = 0;
+  /** The state words of the last update (layout.ts STATE). */
+  lastState: Uint32Array | null = null;
+  private busy = false;
+
+  constructor(ctx: GpuContext, options: GpuBroadPhaseOptions = {}) {
+    this.ctx = ctx;
+    this.extension = options.extension ?? AABB_EXTENSION;
+    this.entryCapacityGiven = options.initialEntryCapacity !== undefined;
+    this.entryCapacity = options.initialEntryCapacity ?? 0;
+    this.bounds = new BoundsStage(ctx);
+    this.axis = new AxisStage(ctx);
+    this.keys = new KeysStage(ctx);
+    this.sort = new RadixSort(ctx);
+    this.sweep = new SweepStage(ctx);
+    this.pairStage = new PairsStage(ctx);
+    this.timer = new PassTimer(ctx, 16);
+    this.proxyAABBs = new GpuArray(ctx, 'proxyAABB', 16);
+    this.items = new GpuArray(ctx, 'sort items', 8);
+    this.itemsTmp = new GpuArray(ctx, 'sort items tmp', 8);
+    const capacity = Math.max(1024, options.initialPairCapacity ?? 1024);
+    this.pairsA = new GpuArray(ctx, 'pairs', 8, capacity);
+    this.pairsB = new GpuArray(ctx, 'pairs tmp', 8, capacity);
+    this.state = ctx.createBuffer('broadphase state', 4 * STATE_WORDS, USAGE.STORAGE | USAGE.COPY_DST | USAGE.COPY_SRC);
+    this.indirect = ctx.createBuffer('broadphase indirect', 4 * INDIRECT_WORDS, USAGE.STORAGE | USAGE.INDIRECT | USAGE.COPY_DST);
+    this.stateRead = ctx.createBuffer('broadphase state read', 4 * STATE_WORDS, USAGE.MAP_READ | USAGE.COPY_DST);
+  }
+
+  /** The pair capacity now. */
+  get pairCapacity(): number {
+    return this.pairsA.capacity;
+  }
+
+  /** The sorted pairs of the last update (vec2<u32> (a, b), `pairCount` of them). */
+  get pairs(): GPUBuffer {
+    if (!this.sortedPairs) throw new Error('GpuBroadPhase: no update yet');
+    return this.sortedPairs;
+  }
+
+  /** The proxy AABBs the last update used (GpuWorld input: computed by the bounds stage). */
+  get proxyAABB(): GPUBuffer {
+    if (!this.lastInputs) throw new Error('GpuBroadPhase: no update yet');
+    return this.lastInputs.proxyAABB;
+  }
+
+  /**
+   * Finds the pairs of the proxies of a GpuWorld (after its sync()) or of a GpuProxySet. Rejects
+   * with GpuDeviceLostError once the device is lost, GpuOutOfMemoryError when a buffer could not
+   * be allocated.
+   */
+  async update(source: GpuWorld | GpuProxySet): Promise<BroadPhaseResult> {
+    if (this.busy) throw new Error('GpuBroadPhase.update: the previous update has not finished');
+    this.busy = true;
+    try {
+      return await this.run(source);
+    } finally {
+      this.busy = false;
+    }
+  }
+
+  private inputsOf(source: GpuWorld | GpuProxySet): SweepInputs {
+    if (source instanceof GpuWorld) {
+      this.proxyAABBs.ensure(Math.max(1, source.proxySlotCount));
+      return {
+        slotCount: source.proxySlotCount,
+        liveCount: source.liveProxyCount,
+        proxyAABB: this.proxyAABBs.buffer,
+        proxyRef: source.proxyRef.buffer,
+        proxyFilter: source.proxyFilter.buffer,
+        jointRange: source.jointRange.buffer,
+        jointList: source.jointList.buffer,
+      };
+    }
+    return source;
+  }
+
+  private async run(source: GpuWorld | GpuProxySet): Promise<BroadPhaseResult> {
+    await this.ctx.checkErrors();
+    const inputs = this.inputsOf(source);
+    this.lastInputs = inputs;
+    const n = inputs.slotCount;
+    const live = inputs.liveCount;
+    if (!this.entryCapacityGiven) this.entryCapacity = Math.max(this.entryCapacity, 3 * n + 64);
+    const queue = this.ctx.device.queue;
+    const maxDim = this.ctx.maxWorkgroupsPerDimension;
+
+    let regrows = 0;
+    let dispatches = 0;
+    let gpuTime: Record<string, number> | null = null;
+    let state: Uint32Array;
+    for (;;) {
+      this.reserve(this.entryCapacity, this.pairsA.capacity);
+      const words = this.stateWords;
+      words.fill(0);
+      words[STATE.PAIR_CAPACITY] = this.pairsA.capacity;
+      words[STATE.ENTRY_CAPACITY] = this.entryCapacity;
+      words[STATE.SLOT_COUNT] = n;
+      words[STATE.LIVE_COUNT] = live;
+      queue.writeBuffer(this.state, 0, words);
+      this.sweep.setPairCapacity(this.pairsA.capacity);
+      await this.ctx.checkErrors();
+
+      const encoder = this.ctx.device.createCommandEncoder({ label: 'broadphase' });
+      this.timer.reset();
+      dispatches = 0;
+      const pass = (name: string, body: (rec: Recorder) => void) => {
+        const p = this.timer.beginPass(encoder, name);
+        const rec = new Recorder(p, maxDim);
+        body(rec);
+        p.end();
+        dispatches += rec.dispatches;
+      };
+      if (source instanceof GpuWorld) {
+        pass('bounds', (rec) => this.bounds.encode(rec, source, inputs.proxyAABB, this.extension));
+      }
+      pass('axis', (rec) => this.axis.encode(rec, inputs.proxyAABB, n, this.state));
+      let sorted: GPUBuffer = this.items.buffer;
+      pass('sort', (rec) => {
+        this.keys.encode(rec, inputs.proxyAABB, n, this.state, this.items.buffer, this.indirect);
+        sorted = this.sort.encode(rec, this.items.buffer, this.itemsTmp.buffer, digitPasses(32, 0), this.state, STATE.ENTRIES, {
+          indirect: this.indirect,
+          offset: ARGS.ENTRY_TILES * 4,
+        });
+      });
+      pass('sweep', (rec) => {
+        this.sweep.encodePrepare(rec, inputs, sorted, this.state, this.indirect);
+        this.sweep.encodeEmit(rec, inputs, this.pairsA.buffer, this.state, this.indirect);
+      });
+      pass('pairs', (rec) => {
+        this.sortedPairs = this.pairStage.encode(rec, this.sort, this.pairsA.buffer, this.pairsB.buffer, n, this.state, this.indirect);
+      });
+      encoder.copyBufferToBuffer(this.state, 0, this.stateRead, 0, 4 * STATE_WORDS);
+      this.timer.resolve(encoder);
+      queue.submit([encoder.finish()]);
+      state = await this.readState();
+      gpuTime = await this.timer.read();
+      if ((state[STATE.OVERFLOW] & OVERFLOW_ENTRIES) === 0) break;
+      // More sweep entries than room for them (not expected: see keys.ts): grow, redo everything.
+      regrows++;
+      this.entryRegrows++;
+      this.entryCapacity = Math.max(2 * this.entryCapacity, state[STATE.ENTRY_TOTAL]);
+    }
+
+    while ((state[STATE.OVERFLOW] & OVERFLOW_PAIRS) !== 0) {
+      // The GPU counted every pair it found: grow to hold them all, redo the emit and the sort.
+      regrows++;
+      this.reserve(this.entryCapacity, state[STATE.PAIR_COUNT]);
+      const cap = this.pairsA.capacity;
+      queue.writeBuffer(this.state, 4 * STATE.PAIR_COUNT, new Uint32Array([0]));
+      queue.writeBuffer(this.state, 4 * STATE.OVERFLOW, new Uint32Array([0]));
+      queue.writeBuffer(this.state, 4 * STATE.PAIR_CAPACITY, new Uint32Array([cap]));
+      this.sweep.setPairCapacity(cap);
+      await this.ctx.checkErrors();
+      const redo = this.ctx.device.createCommandEncoder({ label: 'broadphase regrow' });
+      const p = redo.beginComputePass({ label: 'sweep+pairs (regrow)' });
+      const rec = new Recorder(p, maxDim);
+      this.sweep.encodeEmit(rec, inputs, this.pairsA.buffer, this.state, this.indirect);
+      this.sortedPairs = this.pairStage.encode(rec, this.sort, this.pairsA.buffer, this.pairsB.buffer, n, this.state, this.indirect);
+      p.end();
+      redo.copyBufferToBuffer(this.state, 0, this.stateRead, 0, 4 * STATE_WORDS);
+      queue.submit([redo.finish()]);
+      state = await this.readState();
+    }
+    await this.ctx.checkErrors();
+    this.pairCount = state[STATE.PAIR_COUNT];
+    this.lastState = state;
+    return {
+      pairCount: this.pairCount,
+      axis: state[STATE.AXIS],
+      strips: state[STATE.STRIPS],
+      entries: state[STATE.ENTRIES],
+      workItems: state[STATE.WORK_TOTAL],
+      regrows,
+      pairCapacity: this.pairsA.capacity,
+      dispatches,
+      gpuTime,
+    };
+  }
+
+  /** Makes room for `entries` sweep entries and `pairs` pairs. */
+  private reserve(entries: number, pairs: number): void {
+    this.items.ensure(entries);
+    this.itemsTmp.ensure(entries);
+    this.sweep.reserve(entries);
+    this.pairsA.ensure(pairs);
+    this.pairsB.ensure(pairs);
+    this.sort.reserve(Math.max(entries, this.pairsA.capacity));
+  }
+
+  private async readState(): Promise<Uint32Array> {
+    const lost = this.ctx.lost.then((info) => {
+      throw new Error(`device lost: ${info.message}`);
+    });
+    try {
+      await Promise.race([this.stateRead.mapAsync(MAP_READ), lost]);
+    } catch {
+      this.ctx.assertAlive();
+      throw new Error('GpuBroadPhase: reading the state back failed');
+    }
+    const words = new Uint32Array(this.stateRead.getMappedRange().slice(0));
+    this.stateRead.unmap();
+    return words;
+  }
+
+  /** Copies a GPU buffer's first `bytes` bytes to the CPU. */
+  async readBuffer(buffer: GPUBuffer, bytes: number): Promise<ArrayBuffer> {
+    this.ctx.assertAlive();
+    const size = Math.max(4, Math.ceil(bytes / 4) * 4);
+    const staging = this.ctx.createBuffer('broadphase readback', size, USAGE.MAP_READ | USAGE.COPY_DST);
+    const encoder = this.ctx.device.createCommandEncoder({ label: 'readback' });
+    encoder.copyBufferToBuffer(buffer, 0, staging, 0, size);
+    this.ctx.device.queue.submit([encoder.finish()]);
+    await staging.mapAsync(MAP_READ);
+    const data = staging.getMappedRange().slice(0, bytes);
+    staging.unmap();
+    staging.destroy();
+    return data;
+  }
+
+  /** The sorted pairs of the last update: 2 words (a, b) per pair. */
+  async readPairs(): Promise<Uint32Array> {
+    if (this.pairCount === 0) return new Uint32Array(0);
+    return new Uint32Array(await this.readBuffer(this.pairs, 8 * this.pairCount));
+  }
+
+  /** The proxy AABBs of the last update: 4 floats per proxy slot. */
+  async readAABBs(): Promise<Float32Array> {
+    if (!this.lastInputs) throw new Error('GpuBroadPhase: no update yet');
+    return new Float32Array(await this.readBuffer(this.lastInputs.proxyAABB, 16 * this.lastInputs.slotCount));
+  }
+
+  destroy(): void {
+    for (const a of [this.proxyAABBs, this.items, this.itemsTmp, this.pairsA, this.pairsB]) a.destroy();
+    this.state.destroy();
+    this.indirect.destroy();
+    this.stateRead.destroy();
+    this.timer.destroy();
+  }
+}

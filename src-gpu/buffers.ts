@@ -1,0 +1,220 @@
+/*
+ * Buffers that grow, and mirrored tables that upload only what changed.
+ *
+ * GpuArray: a storage buffer of fixed-size elements whose capacity doubles when more is needed
+ * (geometric growth: n insertions cost O(n) copying in all). Growing copies the old contents on
+ * the GPU (copyBufferToBuffer), so data the GPU wrote itself survives; `version` changes so that
+ * bind groups holding the old buffer are rebuilt.
+ *
+ * MirrorTable: a GpuArray plus a CPU shadow copy of exactly what the GPU buffer holds. A sync
+ * packs each element into a scratch record and compares it word by word (as u32, so -0, NaN
+ * and every bit count) with the shadow; only differing elements are copied into the shadow and
+ * marked dirty, and `flush` uploads the dirty elements as few contiguous ranges (runs closer than
+ * MERGE_GAP elements are merged; past half the table, one write of everything). Comparing with a
+ * shadow needs no hooks in the engine (which must not know about the GPU) and catches every
+ * change, whoever made it, at the cost of one pass over the packed data per sync.
+ */
+
+import type { GpuContext } from './device';
+import { USAGE } from './layout';
+
+export class GpuArray {
+  readonly ctx: GpuContext;
+  readonly label: string;
+  readonly bytesPerElement: number;
+  readonly usage: number;
+  buffer: GPUBuffer;
+  capacity: number;
+  /** Changes whenever `buffer` is replaced. */
+  version = 0;
+
+  constructor(ctx: GpuContext, label: string, bytesPerElement: number, initialCapacity = 64, extraUsage = 0) {
+    this.ctx = ctx;
+    this.label = label;
+    this.bytesPerElement = bytesPerElement;
+    this.usage = USAGE.STORAGE | USAGE.COPY_DST | USAGE.COPY_SRC | extraUsage;
+    this.capacity = Math.max(1, initialCapacity);
+    this.buffer = ctx.createBuffer(label, this.capacity * bytesPerElement, this.usage);
+  }
+
+  /**
+   * Makes room for `needed` elements, doubling the capacity; the first `preserve` elements are
+   * copied into the new buffer. Returns true when the buffer was replaced.
+   */
+  ensure(needed: number, preserve = 0): boolean {
+    if (needed <= this.capacity) return false;
+    let capacity = this.capacity;
+    while (capacity < needed) capacity *= 2;
+    const maxElements = Math.floor(this.ctx.limits.maxStorageBufferBindingSize / this.bytesPerElement);
+    if (capacity > maxElements && needed <= maxElements) capacity = maxElements;
+    const old = this.buffer;
+    this.buffer = this.ctx.createBuffer(this.label, capacity * this.bytesPerElement, this.usage);
+    const copy = Math.min(preserve, this.capacity) * this.bytesPerElement;
+    if (copy > 0) {
+      const encoder = this.ctx.device.createCommandEncoder({ label: `${this.label} grow` });
+      encoder.copyBufferToBuffer(old, 0, this.buffer, 0, Math.ceil(copy / 4) * 4);
+      this.ctx.device.queue.submit([encoder.finish()]);
+    }
+    old.destroy();
+    this.capacity = capacity;
+    this.version++;
+    return true;
+  }
+
+  destroy(): void {
+    this.buffer.destroy();
+  }
+}
+
+/** Dirty runs closer than this many elements are uploaded as one write. */
+const MERGE_GAP = 16;
+
+export interface UploadStats {
+  /** Bytes written with queue.writeBuffer. */
+  bytes: number;
+  /** writeBuffer calls. */
+  writes: number;
+  /** Elements that changed. */
+  elements: number;
+}
+
+export class MirrorTable {
+  readonly gpu: GpuArray;
+  /** u32 words per element. */
+  readonly words: number;
+  u32: Uint32Array;
+  f32: Float32Array;
+  i32: Int32Array;
+  dirty: Uint8Array;
+  /** Elements [0, count) are in use (the high-water mark of the slots). */
+  count = 0;
+  dirtyCount = 0;
+  /** The record `commit` compares; fill it through these views, then commit(slot). */
+  readonly scratchU32: Uint32Array;
+  readonly scratchF32: Float32Array;
+  readonly scratchI32: Int32Array;
+
+  constructor(ctx: GpuContext, label: string, words: number, initialCapacity = 64) {
+    this.words = words;
+    this.gpu = new GpuArray(ctx, label, words * 4, initialCapacity);
+    const capacity = this.gpu.capacity;
+    this.u32 = new Uint32Array(capacity * words);
+    this.f32 = new Float32Array(this.u32.buffer);
+    this.i32 = new Int32Array(this.u32.buffer);
+    this.dirty = new Uint8Array(capacity);
+    this.scratchU32 = new Uint32Array(words);
+    this.scratchF32 = new Float32Array(this.scratchU32.buffer);
+    this.scratchI32 = new Int32Array(this.scratchU32.buffer);
+  }
+
+  get buffer(): GPUBuffer {
+    return this.gpu.buffer;
+  }
+
+  get capacity(): number {
+    return this.gpu.capacity;
+  }
+
+  /** Makes room for slots [0, n) (the GPU copy keeps what was uploaded). */
+  reserve(n: number): void {
+    if (n <= this.gpu.capacity) return;
+    this.gpu.ensure(n, this.count);
+    const capacity = this.gpu.capacity;
+    const u32 = new Uint32Array(capacity * this.words);
+    u32.set(this.u32);
+    this.u32 = u32;
+    this.f32 = new Float32Array(u32.buffer);
+    this.i32 = new Int32Array(u32.buffer);
+    const dirty = new Uint8Array(capacity);
+    dirty.set(this.dirty);
+    this.dirty = dirty;
+  }
+
+  /** Compares the scratch record with element `slot`; copies and marks it dirty when it differs. */
+  commit(slot: number): boolean {
+    if (slot >= this.gpu.capacity) this.reserve(slot + 1);
+    if (slot >= this.count) this.count = slot + 1;
+    const w = this.words;
+    const base = slot * w;
+    const u32 = this.u32;
+    const s = this.scratchU32;
+    let same = true;
+    for (let i = 0; i < w; ++i) {
+      if (u32[base + i] !== s[i]) {
+        same = false;
+        break;
+      }
+    }
+    if (same) return false;
+    u32.set(s, base);
+    if (this.dirty[slot] === 0) {
+      this.dirty[slot] = 1;
+      this.dirtyCount++;
+    }
+    return true;
+  }
+
+  /** Sets element `slot` to the words a, b, c, d (as many as the element has) and commits it. */
+  commitWords(slot: number, a: number, b = 0, c = 0, d = 0): boolean {
+    const s = this.scratchU32;
+    s[0] = a;
+    if (this.words > 1) s[1] = b;
+    if (this.words > 2) s[2] = c;
+    if (this.words > 3) s[3] = d;
+    return this.commit(slot);
+  }
+
+  /** Marks every element in [0, count) dirty (after the GPU buffer lost its contents). */
+  markAllDirty(): void {
+    this.dirty.fill(1, 0, this.count);
+    this.dirtyCount = this.count;
+  }
+
+  /** Sets the high-water mark (slots past it are not uploaded). */
+  setCount(n: number): void {
+    if (n > this.gpu.capacity) this.reserve(n);
+    this.count = n;
+  }
+
+  /** Uploads the dirty elements; returns what it wrote. */
+  flush(queue: GPUQueue, stats?: UploadStats): void {
+    if (this.dirtyCount === 0) return;
+    const n = this.count;
+    const bytesPerElement = this.words * 4;
+    const dirty = this.dirty;
+    let elements = 0;
+    const write = (from: number, to: number) => {
+      queue.writeBuffer(this.gpu.buffer, from * bytesPerElement, this.u32.buffer, from * bytesPerElement, (to - from) * bytesPerElement);
+      if (stats) {
+        stats.bytes += (to - from) * bytesPerElement;
+        stats.writes++;
+      }
+    };
+    if (this.dirtyCount * 2 > n) {
+      for (let i = 0; i < n; ++i) elements += dirty[i];
+      write(0, n);
+    } else {
+      let start = -1;
+      let end = -1;
+      for (let i = 0; i < n; ++i) {
+        if (dirty[i] === 0) continue;
+        elements++;
+        if (start < 0) {
+          start = i;
+        } else if (i - end > MERGE_GAP) {
+          write(start, end);
+          start = i;
+        }
+        end = i + 1;
+      }
+      if (start >= 0) write(start, end);
+    }
+    if (stats) stats.elements += elements;
+    dirty.fill(0, 0, Math.max(n, dirty.length));
+    this.dirtyCount = 0;
+  }
+
+  destroy(): void {
+    this.gpu.destroy();
+  }
+}

@@ -1,0 +1,34 @@
+/*
+ * webphysics/gpu: the WebGPU backend (part 1: devices, the world mirrored on the GPU, and a
+ * sweep-and-prune broad phase). The engine never imports this module; it reads the engine's
+ * world through its public fields.
+ *
+ *   const gpu = await requestGpu({ onLost: (info) => console.warn('GPU lost', info) });
+ *   const mirror = new GpuWorld(gpu, world);
+ *   const broadPhase = new GpuBroadPhase(gpu);
+ *   world.Step(1 / 60, 8, 3);     // the JavaScript engine steps the world
+ *   mirror.sync();                // uploads what changed
+ *   const { pairCount } = await broadPhase.update(mirror);
+ *   const pairs = await broadPhase.readPairs();  // (proxy a, proxy b) slots; mirror.proxyAt(a)
+ */
+
+export {
+  requestGpu,
+  GpuContext,
+  GpuUnavailableError,
+  GpuDeviceLostError,
+  GpuOutOfMemoryError,
+  GpuCapacityError,
+  GpuError,
+} from './device';
+export type { GpuContextOptions, GpuAdapterSummary, GpuLossInfo } from './device';
+export { findSwiftShaderIcd, SWIFTSHADER_ICD_PATHS } from './node';
+export type { DawnModule, IcdSearchEnv } from './node';
+export { GpuWorld } from './world';
+export type { GpuWorldOptions, SyncStats } from './world';
+export { GpuBroadPhase } from './broadPhase';
+export type { GpuBroadPhaseOptions, BroadPhaseResult } from './broadPhase';
+export { GpuProxySet } from './proxies';
+export type { RawProxies } from './proxies';
+export { AABB_EXTENSION } from './bounds';
+export * as layout from './layout';

@@ -1,0 +1,117 @@
+/*
+ * Compute pipelines and their dispatch: one Kernel per (stage, entry point), bind groups cached by
+ * the identity of the buffers they hold, and a Recorder that dispatches in 2D when a grid passes
+ * maxComputeWorkgroupsPerDimension and counts dispatches (the benchmark's overhead baseline).
+ */
+
+import type { GpuContext } from './device';
+import { bufferId } from './device';
+import { SHADERS } from './shaders';
+import type { ShaderName } from './shaders';
+import { split2D, USAGE } from './layout';
+
+export type BindingEntry = GPUBuffer | { buffer: GPUBuffer; offset?: number; size?: number };
+
+function isBufferBinding(e: BindingEntry): e is { buffer: GPUBuffer; offset?: number; size?: number } {
+  return (e as { buffer?: unknown }).buffer !== undefined;
+}
+
+export class Kernel {
+  readonly ctx: GpuContext;
+  readonly label: string;
+  readonly pipeline: GPUComputePipeline;
+  private readonly cache = new Map<string, GPUBindGroup>();
+
+  constructor(ctx: GpuContext, shader: ShaderName, entryPoint: string) {
+    this.ctx = ctx;
+    this.label = `${shader}.${entryPoint}`;
+    const module = ctx.shaderModule(shader, SHADERS[shader]);
+    this.pipeline = ctx.device.createComputePipeline({
+      label: this.label,
+      layout: 'auto',
+      compute: { module, entryPoint, constants: { MAX_GROUPS_PER_DIMENSION: ctx.maxWorkgroupsPerDimension } },
+    });
+  }
+
+  /** The bind group (group 0) with these buffers at these bindings; cached. */
+  bind(entries: Record<number, BindingEntry>): GPUBindGroup {
+    let key = '';
+    const list: GPUBindGroupEntry[] = [];
+    for (const k of Object.keys(entries)) {
+      const binding = Number(k);
+      const e = entries[binding];
+      const resource: GPUBufferBinding = isBufferBinding(e) ? e : { buffer: e };
+      key += `${binding}:${bufferId(resource.buffer)}:${resource.offset ?? 0}:${resource.size ?? -1};`;
+      list.push({ binding, resource });
+    }
+    let group = this.cache.get(key);
+    if (!group) {
+      if (this.cache.size > 256) this.cache.clear();
+      group = this.ctx.device.createBindGroup({ label: this.label, layout: this.pipeline.getBindGroupLayout(0), entries: list });
+      this.cache.set(key, group);
+    }
+    return group;
+  }
+}
+
+/** A compute pass being recorded. */
+export class Recorder {
+  readonly pass: GPUComputePassEncoder;
+  readonly maxPerDimension: number;
+  dispatches = 0;
+
+  constructor(pass: GPUComputePassEncoder, maxPerDimension: number) {
+    this.pass = pass;
+    this.maxPerDimension = maxPerDimension;
+  }
+
+  /** Dispatches `groups` workgroups (linearised by the shader's group_index). */
+  dispatch(kernel: Kernel, group: GPUBindGroup, groups: number): void {
+    if (groups <= 0) return;
+    const [x, y] = split2D(groups, this.maxPerDimension);
+    this.pass.setPipeline(kernel.pipeline);
+    this.pass.setBindGroup(0, group);
+    this.pass.dispatchWorkgroups(x, y);
+    this.dispatches++;
+  }
+
+  /** Dispatches with the size in `indirect` at byte `offset` (written by an earlier kernel). */
+  dispatchIndirect(kernel: Kernel, group: GPUBindGroup, indirect: GPUBuffer, offset: number): void {
+    this.pass.setPipeline(kernel.pipeline);
+    this.pass.setBindGroup(0, group);
+    this.pass.dispatchWorkgroupsIndirect(indirect, offset);
+    this.dispatches++;
+  }
+}
+
+/** A small uniform buffer holding u32/f32/i32 words, written through writeBuffer. */
+export class Uniform {
+  readonly buffer: GPUBuffer;
+  readonly u32: Uint32Array<ArrayBuffer>;
+  readonly f32: Float32Array<ArrayBuffer>;
+  readonly i32: Int32Array<ArrayBuffer>;
+  private readonly ctx: GpuContext;
+  private readonly uploaded: Uint32Array;
+  private written = false;
+
+  constructor(ctx: GpuContext, label: string, words = 8) {
+    this.ctx = ctx;
+    this.buffer = ctx.createBuffer(label, Math.max(16, words * 4), USAGE.UNIFORM | USAGE.COPY_DST);
+    this.u32 = new Uint32Array(Math.max(4, words));
+    this.f32 = new Float32Array(this.u32.buffer);
+    this.i32 = new Int32Array(this.u32.buffer);
+    this.uploaded = new Uint32Array(this.u32.length);
+  }
+
+  /** Uploads the words when they differ from the last upload. */
+  upload(): void {
+    if (this.written && this.u32.every((w, i) => w === this.uploaded[i])) return;
+    this.ctx.device.queue.writeBuffer(this.buffer, 0, this.u32);
+    this.uploaded.set(this.u32);
+    this.written = true;
+  }
+
+  destroy(): void {
+    this.buffer.destroy();
+  }
+}

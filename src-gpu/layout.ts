@@ -1,0 +1,150 @@
+/*
+ * The GPU backend's data layout: every buffer the stages share, word by word. The WGSL side
+ * holds the same numbers in shaders/common.wgsl and in each stage's declarations; a test checks
+ * that the two agree.
+ *
+ * Indices. Bodies, fixtures, proxies and joints each live in a slot: a dense index into their
+ * structure-of-arrays buffers, handed out by GpuWorld (src-gpu/world.ts) lowest free slot first
+ * and reused after a destroy. A proxy is one child of a fixture (a chain fixture has one proxy per
+ * edge; every other shape has one), as in b2Fixture::m_proxies. A slot whose object is gone is
+ * "dead": its flags say so and every stage skips it.
+ *
+ * Positions. A body's position is an integer cell and a float32 offset inside it:
+ * world = cell * cellSize + local (cellSize 32 m by default). The offset stays within half a cell,
+ * so it keeps about 1e-6 m of resolution anywhere in a world of any size, where a float32
+ * absolute coordinate would keep 2.4e-4 m at 5 km. Stages that need a world coordinate (the
+ * broad phase's AABBs) compute it relative to the world origin cell, in float32.
+ *
+ * Body buffers (index: body slot)
+ *   bodyXf     vec4<f32>  p.x, p.y (body origin, relative to the cell), q.c, q.s (m_xf)
+ *   bodyCell   vec2<i32>  the cell
+ *   bodySweep  2 x vec4<f32>  c0.x, c0.y, a0, alpha0 | c.x, c.y, a, sleepTime  (m_sweep; c0 and c
+ *                         relative to the same cell)
+ *   bodyVel    vec4<f32>  v.x, v.y, w, 0
+ *   bodyForce  vec4<f32>  force.x, force.y, torque, 0
+ *   bodyMass   vec4<f32>  invMass, invI, localCenter.x, localCenter.y
+ *   bodyParams vec4<f32>  linearDamping, angularDamping, gravityScale, 0
+ *   bodyFlags  u32        b2Body::m_flags (bits 0-15) | type << 16 (bits 16-17) | BODY_LIVE
+ *   jointRange vec2<u32>  (start, count) into jointList: the bodies joined to this one by a joint
+ *                         with collideConnected == false, ascending
+ * Joint buffers
+ *   jointList  u32        body slots (see jointRange)
+ *   joints     vec4<u32>  (index: joint slot) body A slot, body B slot, b2JointType,
+ *                         collideConnected | JOINT_LIVE
+ * Fixture buffers (index: fixture slot)
+ *   fixtureShape    vec4<u32>  type | shape flags << 4 | vertexCount << 8, pool offset,
+ *                              body slot, radius (f32 bits)
+ *   fixtureMaterial vec4<f32>  friction, restitution, density, 0
+ *   shapePool       vec2<f32>  shape data, at the fixture's pool offset:
+ *       circle   [m_p]
+ *       edge     [m_vertex1, m_vertex2, m_vertex0, m_vertex3]   (ghosts valid per the flags)
+ *       polygon  [vertices 0..n-1, normals 0..n-1, m_centroid]  (n = vertexCount <= 8)
+ *       chain    [vertices 0..n-1, m_prevVertex, m_nextVertex]  (n = vertexCount = m_count;
+ *                 child i is the edge (v[i], v[i+1]) with ghosts v[i-1] or m_prevVertex and
+ *                 v[i+2] or m_nextVertex, as b2ChainShape::GetChildEdge)
+ *     shape flags: SHAPE_HAS_VERTEX0 (edge m_hasVertex0, chain m_hasPrevVertex),
+ *     SHAPE_HAS_VERTEX3 (edge m_hasVertex3, chain m_hasNextVertex), SHAPE_SENSOR.
+ * Proxy buffers (index: proxy slot)
+ *   proxyRef    vec4<u32>  fixture slot, child index, body slot, flag word: shape type (bits 0-1),
+ *                          body type (bits 2-3), PROXY_LIVE, PROXY_SENSOR, PROXY_JOINTED
+ *   proxyFilter vec2<u32>  categoryBits | maskBits << 16, groupIndex & 0xffff (int16 bits)
+ *   proxyAABB   vec4<f32>  lower.x, lower.y, upper.x, upper.y relative to the world origin cell,
+ *                          written by the bounds stage; EMPTY for a dead slot
+ * Broad-phase output
+ *   pairs       vec2<u32>  (proxy a, proxy b), a < b, sorted by (a, b), no duplicates
+ *   state       u32 x STATE_WORDS  counts and parameters passed between stages (STATE below)
+ *   indirect    u32 x INDIRECT_WORDS  dispatch sizes computed on the GPU (ARGS below)
+ */
+
+/** GPUBufferUsage, without relying on the WebGPU globals being installed. */
+export const USAGE = {
+  MAP_READ: 0x0001,
+  MAP_WRITE: 0x0002,
+  COPY_SRC: 0x0004,
+  COPY_DST: 0x0008,
+  UNIFORM: 0x0040,
+  STORAGE: 0x0080,
+  INDIRECT: 0x0100,
+  QUERY_RESOLVE: 0x0200,
+} as const;
+
+/** GPUMapMode.READ. */
+export const MAP_READ = 0x0001;
+
+export const WORKGROUP_SIZE = 256;
+
+/** Word indices of the state buffer (shaders/common.wgsl STATE_*). */
+export const STATE = {
+  AXIS: 0,
+  PAIR_COUNT: 1,
+  WORK_TOTAL: 2,
+  PAIR_SORT_COUNT: 3,
+  OVERFLOW: 4,
+  PAIR_CAPACITY: 5,
+  ENTRY_TOTAL: 6,
+  LIVE_COUNT: 7,
+  STRIPS: 8,
+  AXIS_LO: 9,
+  AXIS_SCALE: 10,
+  OTHER_LO: 11,
+  OTHER_INV_H: 12,
+  ENTRY_CAPACITY: 13,
+  SLOT_COUNT: 14,
+  ENTRIES: 15,
+} as const;
+export const STATE_WORDS = 16;
+
+/** Bits of state[STATE.OVERFLOW]. */
+export const OVERFLOW_PAIRS = 1;
+export const OVERFLOW_ENTRIES = 2;
+
+/** Sweep entry keys: strip << QUANT_BITS | quantised lower bound (shaders/common.wgsl). */
+export const QUANT_BITS = 20;
+export const MAX_STRIPS = 4096;
+
+/** Word offsets of the indirect-dispatch triples (shaders/common.wgsl ARGS_*). */
+export const ARGS = {
+  EMIT: 0,
+  PAIR_TILES: 3,
+  ENTRY_GROUPS: 6,
+  ENTRY_TILES: 9,
+  ENTRY_BLOCKS: 12,
+} as const;
+export const INDIRECT_WORDS = 16;
+
+export const PROXY_LIVE = 0x10;
+export const PROXY_SENSOR = 0x20;
+export const PROXY_JOINTED = 0x40;
+
+export const SHAPE_HAS_VERTEX0 = 0x1;
+export const SHAPE_HAS_VERTEX3 = 0x2;
+export const SHAPE_SENSOR = 0x4;
+
+export const BODY_LIVE = 0x80000000;
+export const JOINT_LIVE = 0x80000000;
+
+/** The default cell size in metres (a power of two, so cell * cellSize is exact in float32). */
+export const DEFAULT_CELL_SIZE = 32;
+
+/** Elements each radix-sort workgroup handles (shaders/radixSort.wgsl TILE). */
+export const SORT_TILE = 1024;
+/** Elements each scan block covers (shaders/scan.wgsl BLOCK). */
+export const SCAN_BLOCK = 4096;
+/** AABBs each axis-reduction workgroup covers (shaders/axis.wgsl ITEMS_PER_GROUP). */
+export const AXIS_ITEMS_PER_GROUP = 4096;
+/** Candidates one sweep invocation tests (shaders/sweep.wgsl CHUNK). */
+export const SWEEP_CHUNK = 32;
+
+/** Workgroups in x and y for `groups` workgroups under the per-dimension limit. */
+export function split2D(groups: number, maxPerDimension = 65535): [number, number] {
+  if (groups <= 0) return [0, 1];
+  const x = Math.min(groups, maxPerDimension);
+  return [x, Math.ceil(groups / x)];
+}
+
+/** The sortable u32 of a float32 (shaders/common.wgsl sortable_key), for CPU references. */
+export function sortableKey(f32bits: number): number {
+  let u = f32bits >>> 0;
+  if (u === 0x80000000) u = 0;
+  return (u & 0x80000000) !== 0 ? ~u >>> 0 : (u | 0x80000000) >>> 0;
+}
