@@ -4,6 +4,7 @@
  */
 
 export * from './common/b2Settings';
+export * from './common/b2ArgumentError';
 export * from './common/b2Math';
 export * from './common/b2Trig';
 export * from './common/b2Draw';

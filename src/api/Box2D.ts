@@ -18,6 +18,7 @@ import * as timeOfImpact from '../collision/b2TimeOfImpact';
 import * as chainShape from '../collision/shapes/b2ChainShape';
 import * as polygonShape from '../collision/shapes/b2PolygonShape';
 import * as shape from '../collision/shapes/b2Shape';
+import * as argumentError from '../common/b2ArgumentError';
 import * as draw from '../common/b2Draw';
 import * as math from '../common/b2Math';
 import * as timer from '../common/b2Timer';
@@ -56,6 +57,8 @@ export namespace Common {
   export import b2Color = draw.b2Color;
   export import b2Draw = draw.b2Draw;
   export import b2Timer = timer.b2Timer;
+  /** The error the API throws for a rejected argument or call (not in Box2DWeb). */
+  export import b2ArgumentError = argumentError.b2ArgumentError;
 
   export namespace Math {
     export import b2Vec2 = math.b2Vec2;

@@ -228,11 +228,17 @@ export class b2BroadPhase implements b2TreeQueryCallback {
     ++this.m_moveCount;
   }
 
+  /**
+   * Clear every move-buffer entry of a proxy being destroyed. 2.2.1 returns after the first entry,
+   * but a proxy can be buffered twice (CreateProxy or MoveProxy, then TouchProxy from Refilter or
+   * SetType): the stale entry then names a freed node, or a node reused by another proxy or by an
+   * inner node, and UpdatePairs reports pairs for a destroyed fixture (a dangling pointer in the
+   * C++). Box2D 2.3 clears them all, as here; for any world 2.2.1 handles, the pairs are the same.
+   */
   UnBufferMove(proxyId: number): void {
     for (let i = 0; i < this.m_moveCount; ++i) {
       if (this.m_moveBuffer[i] === proxyId) {
         this.m_moveBuffer[i] = b2BroadPhase.e_nullProxy;
-        return;
       }
     }
   }

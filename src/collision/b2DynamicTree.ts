@@ -182,6 +182,8 @@ export class b2DynamicTree {
     b2Assert(0 < this.m_nodeCount);
     this.m_nodes[nodeId].next = this.m_freeList;
     this.m_nodes[nodeId].height = -1;
+    // Not in the C++: a free node lets go of its proxy, so destroyed fixtures can be collected.
+    this.m_nodes[nodeId].userData = null;
     this.m_freeList = nodeId;
     --this.m_nodeCount;
   }

@@ -6,12 +6,22 @@
  */
 
 import { b2Assert, b2Log } from '../common/b2Settings';
-import { b2IsValid, b2Transform, b2Sweep, b2Vec2 } from '../common/b2Math';
+import { b2Transform, b2Sweep, b2Vec2 } from '../common/b2Math';
+import {
+  b2ArgumentError,
+  b2CheckFinite,
+  b2CheckNonNegative,
+  b2CheckObject,
+  b2CheckVec2,
+  b2DestroyedError,
+  b2LockedError,
+} from '../common/b2ArgumentError';
 import { b2MassData, b2Shape } from '../collision/shapes/b2Shape';
 import { b2Fixture, b2FixtureDef } from './b2Fixture';
 import { b2World } from './b2World';
 import type { b2ContactEdge } from './contacts/b2Contact';
-import type { b2JointEdge } from './joints/b2Joint';
+import { b2JointType, type b2JointEdge } from './joints/b2Joint';
+import { b2CheckBodyDef, b2CheckBodyType, b2CheckFixtureDef } from './b2DefValidation';
 
 /**
  * The body type.
@@ -106,6 +116,16 @@ const s_massData = new b2MassData();
 const s_localCenter = new b2Vec2();
 const s_oldCenter = new b2Vec2();
 
+/** Throws unless the body is alive (not destroyed); `locked` also requires an unlocked world. */
+function checkBody(body: b2Body, method: string, locked: boolean): void {
+  if (body.m_destroyed) {
+    throw b2DestroyedError(method, 'this body');
+  }
+  if (locked && body.m_world.IsLocked()) {
+    throw b2LockedError(method);
+  }
+}
+
 /** A rigid body. These are created via b2World::CreateBody. */
 export class b2Body {
   // m_flags
@@ -159,19 +179,12 @@ export class b2Body {
 
   m_userData: any = null;
 
+  /** Set by b2World.DestroyBody (no C++ counterpart: the C++ frees the memory). */
+  m_destroyed = false;
+
   constructor(bd: b2BodyDef, world: b2World) {
-    b2Assert(bd.position.IsValid(), 'b2Body: bd.position is not finite');
-    b2Assert(bd.linearVelocity.IsValid(), 'b2Body: bd.linearVelocity is not finite');
-    b2Assert(b2IsValid(bd.angle), 'b2Body: bd.angle is not finite');
-    b2Assert(b2IsValid(bd.angularVelocity), 'b2Body: bd.angularVelocity is not finite');
-    b2Assert(
-      b2IsValid(bd.angularDamping) && bd.angularDamping >= 0.0,
-      'b2Body: bd.angularDamping must be finite and >= 0',
-    );
-    b2Assert(
-      b2IsValid(bd.linearDamping) && bd.linearDamping >= 0.0,
-      'b2Body: bd.linearDamping must be finite and >= 0',
-    );
+    // The C++ asserts; b2ArgumentError names the field (see b2DefValidation).
+    b2CheckBodyDef('b2World.CreateBody', bd);
 
     if (bd.bullet) {
       this.m_flags |= b2Body.e_bulletFlag;
@@ -230,17 +243,18 @@ export class b2Body {
    * @warning This function is locked during callbacks.
    */
   CreateFixture(defOrShape: b2FixtureDef | b2Shape, density = 0.0): b2Fixture {
-    if (this.m_world.IsLocked()) {
-      throw new Error('b2Body.CreateFixture: the world is locked (called from inside a time step or callback)');
-    }
+    checkBody(this, 'b2Body.CreateFixture', true);
 
     let def: b2FixtureDef;
     if (defOrShape instanceof b2Shape) {
       def = new b2FixtureDef();
       def.shape = defOrShape;
       def.density = density;
+      b2CheckNonNegative('b2Body.CreateFixture', 'density', density);
+      b2CheckFixtureDef('b2Body.CreateFixture', def, 'shape');
     } else {
       def = defOrShape;
+      b2CheckFixtureDef('b2Body.CreateFixture', def);
     }
 
     const fixture = new b2Fixture(this, def);
@@ -278,11 +292,14 @@ export class b2Body {
    * @warning This function is locked during callbacks.
    */
   DestroyFixture(fixture: b2Fixture): void {
-    if (this.m_world.IsLocked()) {
-      throw new Error('b2Body.DestroyFixture: the world is locked (called from inside a time step or callback)');
+    checkBody(this, 'b2Body.DestroyFixture', true);
+    b2CheckObject('b2Body.DestroyFixture', 'fixture', fixture);
+    if (fixture.m_destroyed) {
+      throw b2DestroyedError('b2Body.DestroyFixture', 'fixture');
     }
-
-    b2Assert(fixture.m_body === this, 'b2Body.DestroyFixture: the fixture belongs to another body');
+    if (fixture.m_body !== this) {
+      throw new b2ArgumentError('b2Body.DestroyFixture', 'fixture', 'belongs to another body');
+    }
 
     // Remove the fixture from this body's singly linked list.
     b2Assert(this.m_fixtureCount > 0, 'b2Body.DestroyFixture: the body has no fixtures');
@@ -345,9 +362,9 @@ export class b2Body {
    * @param angle the world rotation in radians.
    */
   SetTransform(position: Readonly<b2Vec2>, angle: number): void {
-    if (this.m_world.IsLocked()) {
-      throw new Error('b2Body.SetTransform: the world is locked (called from inside a time step or callback)');
-    }
+    checkBody(this, 'b2Body.SetTransform', true);
+    b2CheckVec2('b2Body.SetTransform', 'position', position);
+    b2CheckFinite('b2Body.SetTransform', 'angle', angle);
 
     const xf = this.m_xf;
     xf.q.Set(angle);
@@ -402,6 +419,8 @@ export class b2Body {
    * @param v the new linear velocity of the center of mass.
    */
   SetLinearVelocity(v: Readonly<b2Vec2>): void {
+    checkBody(this, 'b2Body.SetLinearVelocity', false);
+    b2CheckVec2('b2Body.SetLinearVelocity', 'v', v);
     if (this.m_type === b2BodyType.b2_staticBody) {
       return;
     }
@@ -423,6 +442,8 @@ export class b2Body {
    * @param omega the new angular velocity in radians/second.
    */
   SetAngularVelocity(w: number): void {
+    checkBody(this, 'b2Body.SetAngularVelocity', false);
+    b2CheckFinite('b2Body.SetAngularVelocity', 'w', w);
     if (this.m_type === b2BodyType.b2_staticBody) {
       return;
     }
@@ -447,6 +468,9 @@ export class b2Body {
    * @param point the world position of the point of application.
    */
   ApplyForce(force: Readonly<b2Vec2>, point: Readonly<b2Vec2>): void {
+    checkBody(this, 'b2Body.ApplyForce', false);
+    b2CheckVec2('b2Body.ApplyForce', 'force', force);
+    b2CheckVec2('b2Body.ApplyForce', 'point', point);
     if (this.m_type !== b2BodyType.b2_dynamicBody) {
       return;
     }
@@ -470,6 +494,8 @@ export class b2Body {
    * @param force the world force vector, usually in Newtons (N).
    */
   ApplyForceToCenter(force: Readonly<b2Vec2>): void {
+    checkBody(this, 'b2Body.ApplyForceToCenter', false);
+    b2CheckVec2('b2Body.ApplyForceToCenter', 'force', force);
     if (this.m_type !== b2BodyType.b2_dynamicBody) {
       return;
     }
@@ -489,6 +515,8 @@ export class b2Body {
    * @param torque about the z-axis (out of the screen), usually in N-m.
    */
   ApplyTorque(torque: number): void {
+    checkBody(this, 'b2Body.ApplyTorque', false);
+    b2CheckFinite('b2Body.ApplyTorque', 'torque', torque);
     if (this.m_type !== b2BodyType.b2_dynamicBody) {
       return;
     }
@@ -508,6 +536,9 @@ export class b2Body {
    * @param point the world position of the point of application.
    */
   ApplyLinearImpulse(impulse: Readonly<b2Vec2>, point: Readonly<b2Vec2>): void {
+    checkBody(this, 'b2Body.ApplyLinearImpulse', false);
+    b2CheckVec2('b2Body.ApplyLinearImpulse', 'impulse', impulse);
+    b2CheckVec2('b2Body.ApplyLinearImpulse', 'point', point);
     if (this.m_type !== b2BodyType.b2_dynamicBody) {
       return;
     }
@@ -530,6 +561,8 @@ export class b2Body {
    * @param impulse the angular impulse in units of kg*m*m/s
    */
   ApplyAngularImpulse(impulse: number): void {
+    checkBody(this, 'b2Body.ApplyAngularImpulse', false);
+    b2CheckFinite('b2Body.ApplyAngularImpulse', 'impulse', impulse);
     if (this.m_type !== b2BodyType.b2_dynamicBody) {
       return;
     }
@@ -577,8 +610,22 @@ export class b2Body {
    * @param massData the mass properties.
    */
   SetMassData(massData: Readonly<b2MassData>): void {
-    if (this.m_world.IsLocked()) {
-      throw new Error('b2Body.SetMassData: the world is locked (called from inside a time step or callback)');
+    checkBody(this, 'b2Body.SetMassData', true);
+    b2CheckObject('b2Body.SetMassData', 'massData', massData);
+    b2CheckFinite('b2Body.SetMassData', 'massData.mass', massData.mass);
+    b2CheckVec2('b2Body.SetMassData', 'massData.center', massData.center);
+    b2CheckFinite('b2Body.SetMassData', 'massData.I', massData.I);
+    if (massData.I > 0.0 && (this.m_flags & b2Body.e_fixedRotationFlag) === 0) {
+      // The C++ asserts that the inertia about the center of mass stays positive.
+      const mass = massData.mass > 0.0 ? massData.mass : 1.0;
+      const c = massData.center;
+      if (!(massData.I - mass * (c.x * c.x + c.y * c.y) > 0.0)) {
+        throw new b2ArgumentError(
+          'b2Body.SetMassData',
+          'massData.I',
+          `must exceed mass * |center|^2 (the rotational inertia about the center of mass must be positive), got ${massData.I}`,
+        );
+      }
     }
 
     if (this.m_type !== b2BodyType.b2_dynamicBody) {
@@ -614,6 +661,7 @@ export class b2Body {
    * the mass and you later want to reset the mass.
    */
   ResetMassData(): void {
+    checkBody(this, 'b2Body.ResetMassData', false);
     // Compute mass data from shapes. Each shape has its own density.
     this.m_mass = 0.0;
     this.m_invMass = 0.0;
@@ -780,6 +828,8 @@ export class b2Body {
 
   /** Set the linear damping of the body. */
   SetLinearDamping(linearDamping: number): void {
+    checkBody(this, 'b2Body.SetLinearDamping', false);
+    b2CheckNonNegative('b2Body.SetLinearDamping', 'linearDamping', linearDamping);
     this.m_linearDamping = linearDamping;
   }
 
@@ -790,6 +840,8 @@ export class b2Body {
 
   /** Set the angular damping of the body. */
   SetAngularDamping(angularDamping: number): void {
+    checkBody(this, 'b2Body.SetAngularDamping', false);
+    b2CheckNonNegative('b2Body.SetAngularDamping', 'angularDamping', angularDamping);
     this.m_angularDamping = angularDamping;
   }
 
@@ -800,6 +852,8 @@ export class b2Body {
 
   /** Set the gravity scale of the body. */
   SetGravityScale(scale: number): void {
+    checkBody(this, 'b2Body.SetGravityScale', false);
+    b2CheckFinite('b2Body.SetGravityScale', 'scale', scale);
     this.m_gravityScale = scale;
   }
 
@@ -809,8 +863,18 @@ export class b2Body {
    * next time step's collide phase.
    */
   SetType(type: b2BodyType): void {
-    if (this.m_world.IsLocked()) {
-      throw new Error('b2Body.SetType: the world is locked (called from inside a time step or callback)');
+    checkBody(this, 'b2Body.SetType', true);
+    b2CheckBodyType('b2Body.SetType', 'type', type);
+    if (type !== b2BodyType.b2_dynamicBody) {
+      for (let je = this.m_jointList; je; je = je.next) {
+        if (je.joint.m_type === b2JointType.e_mouseJoint && je.joint.m_bodyB === this) {
+          throw new b2ArgumentError(
+            'b2Body.SetType',
+            'type',
+            'must stay b2_dynamicBody while a mouse joint drags this body (destroy the mouse joint first)',
+          );
+        }
+      }
     }
 
     if (this.m_type === type) {
@@ -847,6 +911,7 @@ export class b2Body {
 
   /** Should this body be treated like a bullet for continuous collision detection? */
   SetBullet(flag: boolean): void {
+    checkBody(this, 'b2Body.SetBullet', false);
     if (flag) {
       this.m_flags |= b2Body.e_bulletFlag;
     } else {
@@ -864,6 +929,7 @@ export class b2Body {
    * body will be woken.
    */
   SetSleepingAllowed(flag: boolean): void {
+    checkBody(this, 'b2Body.SetSleepingAllowed', false);
     if (flag) {
       this.m_flags |= b2Body.e_autoSleepFlag;
     } else {
@@ -922,9 +988,7 @@ export class b2Body {
    * in the body list.
    */
   SetActive(flag: boolean): void {
-    if (this.m_world.IsLocked()) {
-      throw new Error('b2Body.SetActive: the world is locked (called from inside a time step or callback)');
-    }
+    checkBody(this, 'b2Body.SetActive', true);
 
     if (flag === this.IsActive()) {
       return;
@@ -970,6 +1034,7 @@ export class b2Body {
    * to be reset.
    */
   SetFixedRotation(flag: boolean): void {
+    checkBody(this, 'b2Body.SetFixedRotation', false);
     if (flag) {
       this.m_flags |= b2Body.e_fixedRotationFlag;
     } else {

@@ -189,6 +189,16 @@ export class b2ContactManager {
       bodyB.m_contactList = c.m_nodeB.next;
     }
 
+    // Not in the C++, which frees the contact: drop its links, or a stale reference to it (the
+    // island's and solver's scratch arrays keep some) would hold every contact and body it was
+    // linked to, and through their links a chain of destroyed objects that never ends.
+    c.m_prev = null;
+    c.m_next = null;
+    c.m_nodeA.prev = null;
+    c.m_nodeA.next = null;
+    c.m_nodeB.prev = null;
+    c.m_nodeB.next = null;
+
     // Call the factory.
     b2Contact.Destroy(c);
     --this.m_contactCount;

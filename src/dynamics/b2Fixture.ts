@@ -4,7 +4,8 @@
  */
 
 import { b2Assert, b2Log, b2_maxPolygonVertices } from '../common/b2Settings';
-import { b2IsValid, b2Vec2 } from '../common/b2Math';
+import { b2Vec2 } from '../common/b2Math';
+import { b2ArgumentError, b2CheckNonNegative, b2CheckObject, b2DestroyedError } from '../common/b2ArgumentError';
 import type { b2Transform } from '../common/b2Math';
 import { b2AABB } from '../collision/b2Collision';
 import type { b2RayCastInput, b2RayCastOutput } from '../collision/b2Collision';
@@ -96,6 +97,13 @@ export class b2FixtureProxy {
   }
 }
 
+/** Throws if the fixture has been destroyed (b2Body.DestroyFixture or b2World.DestroyBody). */
+function checkFixture(fixture: b2Fixture, method: string): void {
+  if (fixture.m_destroyed) {
+    throw b2DestroyedError(method, 'this fixture');
+  }
+}
+
 // Scratch for Synchronize: it never calls user code and cannot re-enter.
 const s_aabb1 = new b2AABB();
 const s_aabb2 = new b2AABB();
@@ -129,12 +137,16 @@ export class b2Fixture {
 
   m_userData: any = null;
 
+  /** Set by Destroy (no C++ counterpart: the C++ frees the memory). */
+  m_destroyed = false;
+
   /**
    * The C++ default constructor and b2Fixture::Create in one: b2Body.CreateFixture is the only
    * caller, and a constructed fixture is always attached to its body.
    */
   constructor(body: b2Body, def: b2FixtureDef) {
     b2Assert(def.shape !== null, 'b2Body.CreateFixture: def.shape must be set');
+    // b2Body.CreateFixture has checked the def (b2CheckFixtureDef).
 
     this.m_userData = def.userData;
     this.m_friction = def.friction;
@@ -179,6 +191,7 @@ export class b2Fixture {
 
   /** Set if this fixture is a sensor. */
   SetSensor(sensor: boolean): void {
+    checkFixture(this, 'b2Fixture.SetSensor');
     if (sensor !== this.m_isSensor) {
       this.m_body.SetAwake(true);
       this.m_isSensor = sensor;
@@ -199,6 +212,8 @@ export class b2Fixture {
    * This automatically calls Refilter.
    */
   SetFilterData(filter: Readonly<b2Filter>): void {
+    checkFixture(this, 'b2Fixture.SetFilterData');
+    b2CheckObject('b2Fixture.SetFilterData', 'filter', filter);
     this.m_filter.Assign(filter);
 
     this.Refilter();
@@ -211,6 +226,7 @@ export class b2Fixture {
 
   /** Call this if you want to establish collision that was previously disabled by b2ContactFilter::ShouldCollide. */
   Refilter(): void {
+    checkFixture(this, 'b2Fixture.Refilter');
     // Flag associated contacts for filtering.
     let edge = this.m_body.GetContactList();
     while (edge) {
@@ -267,6 +283,7 @@ export class b2Fixture {
    * @param p a point in world coordinates.
    */
   TestPoint(p: Readonly<b2Vec2>): boolean {
+    checkFixture(this, 'b2Fixture.TestPoint');
     return this.m_shape.TestPoint(this.m_body.GetTransform(), p);
   }
 
@@ -285,6 +302,7 @@ export class b2Fixture {
    * may be expensive.
    */
   GetMassData(massData: b2MassData): void {
+    checkFixture(this, 'b2Fixture.GetMassData');
     this.m_shape.ComputeMass(massData, this.m_density);
   }
 
@@ -293,7 +311,8 @@ export class b2Fixture {
    * of the body. You must call b2Body::ResetMassData to update the body's mass.
    */
   SetDensity(density: number): void {
-    b2Assert(b2IsValid(density) && density >= 0.0, 'b2Fixture.SetDensity: density must be finite and >= 0');
+    checkFixture(this, 'b2Fixture.SetDensity');
+    b2CheckNonNegative('b2Fixture.SetDensity', 'density', density);
     this.m_density = density;
   }
 
@@ -312,6 +331,8 @@ export class b2Fixture {
    * existing contacts.
    */
   SetFriction(friction: number): void {
+    checkFixture(this, 'b2Fixture.SetFriction');
+    b2CheckNonNegative('b2Fixture.SetFriction', 'friction', friction);
     this.m_friction = friction;
   }
 
@@ -325,6 +346,8 @@ export class b2Fixture {
    * existing contacts.
    */
   SetRestitution(restitution: number): void {
+    checkFixture(this, 'b2Fixture.SetRestitution');
+    b2CheckNonNegative('b2Fixture.SetRestitution', 'restitution', restitution);
     this.m_restitution = restitution;
   }
 
@@ -334,7 +357,14 @@ export class b2Fixture {
    * the body transform.
    */
   GetAABB(childIndex: number): Readonly<b2AABB> {
-    b2Assert(0 <= childIndex && childIndex < this.m_proxyCount, 'b2Fixture.GetAABB: childIndex out of range');
+    checkFixture(this, 'b2Fixture.GetAABB');
+    if (!(Number.isInteger(childIndex) && 0 <= childIndex && childIndex < this.m_proxyCount)) {
+      throw new b2ArgumentError(
+        'b2Fixture.GetAABB',
+        'childIndex',
+        `must be an integer in [0, ${this.m_proxyCount}) (the fixture's proxy count; 0 while its body is inactive), got ${childIndex}`,
+      );
+    }
     return this.m_proxies[childIndex].aabb;
   }
 
@@ -414,6 +444,7 @@ export class b2Fixture {
 
     // Free the proxy array.
     this.m_proxies = [];
+    this.m_destroyed = true;
   }
 
   /** Create one broad-phase proxy per shape child (body activation and fixture creation). */

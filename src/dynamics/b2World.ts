@@ -20,6 +20,15 @@ import { b2Color, b2Draw } from '../common/b2Draw';
 import { b2Min, b2MulRV, b2MulXV, b2Sweep, b2Transform, b2Vec2 } from '../common/b2Math';
 import { b2Assert, b2Log, b2_epsilon, b2_maxPolygonVertices, b2_maxSubSteps, b2_maxTOIContacts } from '../common/b2Settings';
 import { b2Timer } from '../common/b2Timer';
+import {
+  b2ArgumentError,
+  b2CheckInteger,
+  b2CheckObject,
+  b2CheckVec2,
+  b2DescribeNumber,
+  b2LockedError,
+} from '../common/b2ArgumentError';
+import { b2CheckBodyOf, b2CheckJointDef, b2CheckJointOf } from './b2DefValidation';
 import { b2Body, b2BodyType, type b2BodyDef } from './b2Body';
 import { b2ContactManager } from './b2ContactManager';
 import type { b2Fixture, b2FixtureProxy } from './b2Fixture';
@@ -36,6 +45,7 @@ import { b2Contact } from './contacts/b2Contact';
 import { b2JointType, type b2Joint, type b2JointDef } from './joints/b2Joint';
 import { b2JointFactory } from './joints/b2JointFactory';
 import type { b2PulleyJoint } from './joints/b2PulleyJoint';
+import type { b2GearJoint } from './joints/b2GearJoint';
 
 /** The broad-phase query callback of b2World.QueryAABB (the .cpp's b2WorldQueryWrapper). */
 class b2WorldQueryWrapper {
@@ -94,7 +104,32 @@ const s_aabbColor = new b2Color(0.9, 0.3, 0.9);
 const s_unitX: Readonly<b2Vec2> = new b2Vec2(1.0, 0.0);
 
 function lockedError(method: string): Error {
-  return new Error(`b2World.${method}: the world is locked (called during a time step or a callback)`);
+  return b2LockedError(`b2World.${method}`);
+}
+
+/**
+ * A gear joint that couples `joint`, or null. Box2D 2.2.1 requires destroying the gear first (a
+ * gear left with a destroyed joint reads freed bodies). A gear joint is attached to the moving
+ * body (bodyB) of each joint it couples, so only that body's joint list is searched.
+ */
+function gearCoupling(joint: b2Joint): b2Joint | null {
+  if (joint.m_type !== b2JointType.e_revoluteJoint && joint.m_type !== b2JointType.e_prismaticJoint) {
+    return null;
+  }
+  for (let je = joint.m_bodyB.m_jointList; je; je = je.next) {
+    const gear = je.joint as b2GearJoint;
+    if (gear.m_type === b2JointType.e_gearJoint && (gear.m_joint1 === joint || gear.m_joint2 === joint)) {
+      return gear;
+    }
+  }
+  return null;
+}
+
+/** A query or ray-cast callback: an object with a ReportFixture method. */
+function checkCallback(method: string, callback: { ReportFixture: unknown } | null): void {
+  if (typeof callback !== 'object' || callback === null || typeof callback.ReportFixture !== 'function') {
+    throw new b2ArgumentError(method, 'callback', `must be an object with a ReportFixture method, got ${b2DescribeNumber(callback)}`);
+  }
 }
 
 /**
@@ -174,6 +209,7 @@ export class b2World {
    * @param gravity the world gravity vector.
    */
   constructor(gravity: Readonly<b2Vec2>) {
+    b2CheckVec2('new b2World', 'gravity', gravity);
     // The other fields start with the C++ constructor's values (see their declarations).
     this.m_gravity.Assign(gravity);
 
@@ -217,6 +253,7 @@ export class b2World {
       throw lockedError('CreateBody');
     }
 
+    // The constructor checks the def (b2CheckBodyDef) before this world changes.
     const b = new b2Body(def, this);
 
     // Add to world doubly linked list.
@@ -240,6 +277,18 @@ export class b2World {
   DestroyBody(b: b2Body): void {
     if (this.IsLocked()) {
       throw lockedError('DestroyBody');
+    }
+    b2CheckBodyOf('b2World.DestroyBody', 'body', b, this);
+    // Its joints go with it, and so do gear joints attached to it; one attached elsewhere must go first.
+    for (let je = b.m_jointList; je; je = je.next) {
+      const gear = gearCoupling(je.joint);
+      if (gear !== null && gear.m_bodyA !== b && gear.m_bodyB !== b) {
+        throw new b2ArgumentError(
+          'b2World.DestroyBody',
+          'body',
+          'has a joint that a gear joint on other bodies couples (destroy the gear joint first)',
+        );
+      }
     }
     b2Assert(this.m_bodyCount > 0);
 
@@ -301,6 +350,11 @@ export class b2World {
     }
 
     --this.m_bodyCount;
+
+    // The C++ frees the body; here it is marked, so later calls on it throw.
+    b.m_destroyed = true;
+    b.m_prev = null;
+    b.m_next = null;
   }
 
   /**
@@ -312,6 +366,7 @@ export class b2World {
     if (this.IsLocked()) {
       throw lockedError('CreateJoint');
     }
+    b2CheckJointDef('b2World.CreateJoint', def, this);
 
     const j = b2JointFactory.Create(def);
 
@@ -360,6 +415,10 @@ export class b2World {
   DestroyJoint(j: b2Joint): void {
     if (this.IsLocked()) {
       throw lockedError('DestroyJoint');
+    }
+    b2CheckJointOf('b2World.DestroyJoint', 'joint', j, this);
+    if (gearCoupling(j) !== null) {
+      throw new b2ArgumentError('b2World.DestroyJoint', 'joint', 'is coupled by a gear joint (destroy the gear joint first)');
     }
 
     const collideConnected = j.m_collideConnected;
@@ -422,6 +481,11 @@ export class b2World {
     b2Assert(this.m_jointCount > 0);
     --this.m_jointCount;
 
+    // The C++ frees the joint; here it is marked, so later calls on it throw.
+    j.m_destroyed = true;
+    j.m_prev = null;
+    j.m_next = null;
+
     // If the joint prevents collisions, then flag any contacts for filtering.
     if (collideConnected === false) {
       this.FlagContactsForFiltering(bodyA, bodyB);
@@ -435,6 +499,15 @@ export class b2World {
    * @param positionIterations for the position constraint solver.
    */
   Step(dt: number, velocityIterations: number, positionIterations: number): void {
+    if (!(dt >= 0.0 && dt < Infinity)) {
+      throw new b2ArgumentError('b2World.Step', 'dt', `must be a finite number >= 0, got ${b2DescribeNumber(dt)}`);
+    }
+    b2CheckInteger('b2World.Step', 'velocityIterations', velocityIterations, 0, 0x7fffffff);
+    b2CheckInteger('b2World.Step', 'positionIterations', positionIterations, 0, 0x7fffffff);
+    if (this.IsLocked()) {
+      throw lockedError('Step');
+    }
+
     const stepTimer = this.m_stepTimer;
     stepTimer.Reset();
 
@@ -589,6 +662,10 @@ export class b2World {
    * @param aabb the query box.
    */
   QueryAABB(callback: b2QueryCallback, aabb: Readonly<b2AABB>): void {
+    checkCallback('b2World.QueryAABB', callback);
+    b2CheckObject('b2World.QueryAABB', 'aabb', aabb);
+    b2CheckVec2('b2World.QueryAABB', 'aabb.lowerBound', aabb.lowerBound);
+    b2CheckVec2('b2World.QueryAABB', 'aabb.upperBound', aabb.upperBound);
     const depth = this.m_queryDepth;
     if (depth === this.m_queryWrappers.length) {
       this.m_queryWrappers.push(new b2WorldQueryWrapper(this.m_contactManager.m_broadPhase));
@@ -614,6 +691,15 @@ export class b2World {
    * @param point2 the ray ending point
    */
   RayCast(callback: b2RayCastCallback, point1: Readonly<b2Vec2>, point2: Readonly<b2Vec2>): void {
+    checkCallback('b2World.RayCast', callback);
+    b2CheckVec2('b2World.RayCast', 'point1', point1);
+    b2CheckVec2('b2World.RayCast', 'point2', point2);
+    // The tree asserts |point2 - point1|^2 > 0, which also fails for points a few subnormals apart.
+    const dx = point2.x - point1.x;
+    const dy = point2.y - point1.y;
+    if (!(dx * dx + dy * dy > 0.0)) {
+      throw new b2ArgumentError('b2World.RayCast', 'point2', 'must differ from point1 (|point2 - point1|^2 must be > 0)');
+    }
     const depth = this.m_rayCastDepth;
     if (depth === this.m_rayCastWrappers.length) {
       this.m_rayCastWrappers.push(new b2WorldRayCastWrapper(this.m_contactManager.m_broadPhase));
@@ -744,6 +830,7 @@ export class b2World {
 
   /** Change the global gravity vector. */
   SetGravity(gravity: Readonly<b2Vec2>): void {
+    b2CheckVec2('b2World.SetGravity', 'gravity', gravity);
     this.m_gravity.Assign(gravity);
   }
 

@@ -5,6 +5,8 @@
 
 export { b2dJsonRead } from './b2dJsonRead';
 export { b2dJsonStringify, b2dJsonWrite, b2dJsonWriteString } from './b2dJsonWrite';
+export type { b2dJsonWriteOptions } from './b2dJsonWrite';
+export { b2dJson_stateKey, b2dJson_stateVersion } from './b2dJsonState';
 export {
   b2dJsonBodiesInCreationOrder,
   b2dJsonError,

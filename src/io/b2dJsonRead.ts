@@ -8,12 +8,16 @@
  * 0, `awake` false, and the world flags false. Beyond b2dJson, a polygon may carry
  * `box: {hx, hy, center?, angle?}`, built with SetAsBox (which differs from Set in the last bits).
  *
- * Every value is checked; a bad one throws a b2dJsonError naming its JSON path and the rule it
- * broke. The world is built fresh, so on error nothing reaches a world the caller holds.
+ * Every value is checked, with the engine's rules (b2ArgumentError) applied to the JSON fields;
+ * a bad one throws a b2dJsonError naming its JSON path and the rule it broke. The world is built
+ * fresh, so on error nothing reaches a world the caller holds. A `webphysicsState` member (the
+ * solver-state extension written by b2dJsonWrite(world, { solverState: true }), see b2dJsonState)
+ * is applied last, so the world continues exactly where the written one was.
  */
 
+import { b2ArgumentError } from '../common/b2ArgumentError';
 import { b2Vec2 } from '../common/b2Math';
-import { b2_maxPolygonVertices } from '../common/b2Settings';
+import { b2_epsilon, b2_maxPolygonVertices } from '../common/b2Settings';
 import { b2ChainShape } from '../collision/shapes/b2ChainShape';
 import { b2CircleShape } from '../collision/shapes/b2CircleShape';
 import { b2EdgeShape } from '../collision/shapes/b2EdgeShape';
@@ -47,6 +51,7 @@ import {
   b2dJsonSealBody,
 } from './b2dJsonRecipes';
 import { b2dJsonError, b2dJsonImage, b2dJsonScene, b2dJson_defaultStepSettings } from './b2dJsonScene';
+import { b2dJsonReadState, b2dJson_stateKey } from './b2dJsonState';
 import type { b2dJsonColor, b2dJsonCustomProperty, b2dJsonItem, b2dJsonObject, b2dJsonValue } from './b2dJsonScene';
 
 const kJointTypes = 'revolute, prismatic, distance, pulley, mouse, gear, wheel, weld, friction or rope';
@@ -78,12 +83,16 @@ function describeValue(value: unknown): string {
   return `${typeof value} ${Object.is(value, -0) ? '-0' : String(value)}`;
 }
 
-/** Run an engine call, reporting a Box2D assertion as a b2dJsonError at `path`. */
+/**
+ * Run an engine call, reporting its b2ArgumentError (or a Box2D assertion) as a b2dJsonError at
+ * `path`: `rejected by b2PolygonShape.Set: vertices[2] makes the polygon non-convex (...)`.
+ */
 function guard<T>(path: string, create: () => T): T {
   try {
     return create();
   } catch (e) {
     if (e instanceof b2dJsonError) throw e;
+    if (e instanceof b2ArgumentError) return fail(path, `rejected by ${e.message}`);
     return fail(path, `rejected by Box2D (${e instanceof Error ? e.message : String(e)})`);
   }
 }
@@ -140,10 +149,35 @@ function optNonNegative(o: b2dJsonObject, key: string, path: string, defaultValu
   return value;
 }
 
+function optPositive(o: b2dJsonObject, key: string, path: string, defaultValue: number): number {
+  const value = optNumber(o, key, path, defaultValue);
+  if (!(value > 0)) {
+    const missing = member(o, key) === undefined ? ' (the field is missing and defaults to it)' : '';
+    fail(keyPath(path, key), `expected a finite number > 0, got ${value}${missing}`);
+  }
+  return value;
+}
+
 function reqNumber(o: b2dJsonObject, key: string, path: string): number {
   const value = member(o, key);
   if (value === undefined) fail(keyPath(path, key), 'required field is missing');
   return asNumber(value, keyPath(path, key));
+}
+
+function reqPositive(o: b2dJsonObject, key: string, path: string): number {
+  const value = reqNumber(o, key, path);
+  if (!(value > 0)) fail(keyPath(path, key), `expected a finite number > 0, got ${value}`);
+  return value;
+}
+
+/** A limit pair: lower must not exceed upper (b2RevoluteJoint and b2PrismaticJoint assert it). */
+function checkLimits(path: string, lower: number, upper: number): void {
+  if (!(lower <= upper)) fail(keyPath(path, 'lowerLimit'), `must not exceed upperLimit (${lower} > ${upper})`);
+}
+
+/** A joint axis: the joint normalizes it, so it must not be zero. */
+function checkAxis(path: string, key: string, axis: b2Vec2): void {
+  if (!(axis.x * axis.x + axis.y * axis.y > 0)) fail(keyPath(path, key), 'expected a non-zero axis, got (0, 0)');
 }
 
 function optInteger(
@@ -261,8 +295,8 @@ function readPolygon(o: b2dJsonObject, path: string): { shape: b2Shape; box: b2d
   if (boxValue !== undefined) {
     const boxPath = keyPath(path, 'box');
     const box = asObject(boxValue, boxPath);
-    const hx = reqNumber(box, 'hx', boxPath);
-    const hy = reqNumber(box, 'hy', boxPath);
+    const hx = reqPositive(box, 'hx', boxPath);
+    const hy = reqPositive(box, 'hy', boxPath);
     const polygon = new b2PolygonShape();
     if (member(box, 'center') === undefined) {
       guard(boxPath, () => polygon.SetAsBox(hx, hy));
@@ -277,7 +311,7 @@ function readPolygon(o: b2dJsonObject, path: string): { shape: b2Shape; box: b2d
   if (count === 2) {
     // b2dJson turns a two-vertex polygon into an edge.
     const edge = new b2EdgeShape();
-    edge.Set(vertices[0], vertices[1]);
+    guard(keyPath(path, 'vertices'), () => edge.Set(vertices[0], vertices[1]));
     return { shape: edge, box: null };
   }
   if (count < 3 || count > b2_maxPolygonVertices) {
@@ -285,7 +319,7 @@ function readPolygon(o: b2dJsonObject, path: string): { shape: b2Shape; box: b2d
     fail(keyPath(path, 'vertices'), rule);
   }
   const polygon = new b2PolygonShape();
-  guard(path, () => polygon.Set(vertices, count));
+  guard(keyPath(path, 'vertices'), () => polygon.Set(vertices, count));
   return { shape: polygon, box: null };
 }
 
@@ -301,7 +335,7 @@ function readShape(fixture: b2dJsonObject, path: string): { shape: b2Shape; box:
   switch (key) {
     case 'circle': {
       const circle = new b2CircleShape();
-      circle.m_radius = optNumber(o, 'radius', p, 0);
+      circle.m_radius = optPositive(o, 'radius', p, 0);
       optVec(o, 'center', p, circle.m_p);
       return { shape: circle, box: null };
     }
@@ -313,6 +347,11 @@ function readShape(fixture: b2dJsonObject, path: string): { shape: b2Shape; box:
       edge.m_hasVertex3 = optBool(o, 'hasVertex3', p, false);
       if (edge.m_hasVertex0) optVec(o, 'vertex0', p, edge.m_vertex0);
       if (edge.m_hasVertex3) optVec(o, 'vertex3', p, edge.m_vertex3);
+      const v1 = edge.m_vertex1;
+      const v2 = edge.m_vertex2;
+      if (!((v2.x - v1.x) * (v2.x - v1.x) + (v2.y - v1.y) * (v2.y - v1.y) > b2_epsilon * b2_epsilon)) {
+        fail(keyPath(p, 'vertex2'), 'coincides with vertex1 (an edge must be longer than b2_epsilon)');
+      }
       return { shape: edge, box: null };
     }
     case 'chain': {
@@ -321,7 +360,7 @@ function readShape(fixture: b2dJsonObject, path: string): { shape: b2Shape; box:
         fail(keyPath(p, 'vertices'), `a chain needs at least 2 vertices, got ${vertices.length}`);
       }
       const chain = new b2ChainShape();
-      chain.CreateChain(vertices, vertices.length);
+      guard(keyPath(p, 'vertices'), () => chain.CreateChain(vertices, vertices.length));
       if (optBool(o, 'hasPrevVertex', p, false)) chain.SetPrevVertex(optVec(o, 'prevVertex', p, new b2Vec2()));
       if (optBool(o, 'hasNextVertex', p, false)) chain.SetNextVertex(optVec(o, 'nextVertex', p, new b2Vec2()));
       return { shape: chain, box: null };
@@ -331,7 +370,7 @@ function readShape(fixture: b2dJsonObject, path: string): { shape: b2Shape; box:
       const vertices = reqVertices(o, 'vertices', p);
       if (vertices.length < 3) fail(keyPath(p, 'vertices'), `a loop needs at least 3 vertices, got ${vertices.length}`);
       const chain = new b2ChainShape();
-      chain.CreateLoop(vertices, vertices.length);
+      guard(keyPath(p, 'vertices'), () => chain.CreateLoop(vertices, vertices.length));
       return { shape: chain, box: null };
     }
     case 'polygon':
@@ -344,8 +383,8 @@ function readShape(fixture: b2dJsonObject, path: string): { shape: b2Shape; box:
 function readFixture(scene: b2dJsonScene, body: b2Body, value: unknown, path: string): void {
   const o = asObject(value, path);
   const def = new b2FixtureDef();
-  def.friction = optNumber(o, 'friction', path, 0);
-  def.restitution = optNumber(o, 'restitution', path, 0);
+  def.friction = optNonNegative(o, 'friction', path, 0);
+  def.restitution = optNonNegative(o, 'restitution', path, 0);
   def.density = optNonNegative(o, 'density', path, 0);
   def.isSensor = optBool(o, 'sensor', path, false);
   def.filter.categoryBits = optInteger(o, 'filter-categoryBits', path, 0x0001, 0, 0xffff);
@@ -444,9 +483,10 @@ function readJoint(scene: b2dJsonScene, value: unknown, path: string): b2Joint {
       d.enableLimit = optBool(o, 'enableLimit', path, false);
       d.lowerAngle = optNumber(o, 'lowerLimit', path, 0);
       d.upperAngle = optNumber(o, 'upperLimit', path, 0);
+      checkLimits(path, d.lowerAngle, d.upperAngle);
       d.enableMotor = optBool(o, 'enableMotor', path, false);
       d.motorSpeed = optNumber(o, 'motorSpeed', path, 0);
-      d.maxMotorTorque = optNumber(o, 'maxMotorTorque', path, 0);
+      d.maxMotorTorque = optNonNegative(o, 'maxMotorTorque', path, 0);
       def = d;
       break;
     }
@@ -455,15 +495,18 @@ function readJoint(scene: b2dJsonScene, value: unknown, path: string): b2Joint {
       optVec(o, 'anchorA', path, d.localAnchorA);
       optVec(o, 'anchorB', path, d.localAnchorB);
       // Old b2dJson files name the axis localAxis1.
-      optVec(o, member(o, 'localAxisA') === undefined ? 'localAxis1' : 'localAxisA', path, d.localAxisA);
+      const axisKey = member(o, 'localAxisA') === undefined ? 'localAxis1' : 'localAxisA';
+      optVec(o, axisKey, path, d.localAxisA);
+      checkAxis(path, axisKey, d.localAxisA);
       localAxisA = d.localAxisA.Clone();
       d.referenceAngle = optNumber(o, 'refAngle', path, 0);
       d.enableLimit = optBool(o, 'enableLimit', path, false);
       d.lowerTranslation = optNumber(o, 'lowerLimit', path, 0);
       d.upperTranslation = optNumber(o, 'upperLimit', path, 0);
+      checkLimits(path, d.lowerTranslation, d.upperTranslation);
       d.enableMotor = optBool(o, 'enableMotor', path, false);
       d.motorSpeed = optNumber(o, 'motorSpeed', path, 0);
-      d.maxMotorForce = optNumber(o, 'maxMotorForce', path, 0);
+      d.maxMotorForce = optNonNegative(o, 'maxMotorForce', path, 0);
       def = d;
       break;
     }
@@ -471,9 +514,9 @@ function readJoint(scene: b2dJsonScene, value: unknown, path: string): b2Joint {
       const d = new b2DistanceJointDef();
       optVec(o, 'anchorA', path, d.localAnchorA);
       optVec(o, 'anchorB', path, d.localAnchorB);
-      d.length = optNumber(o, 'length', path, 0);
-      d.frequencyHz = optNumber(o, 'frequency', path, 0);
-      d.dampingRatio = optNumber(o, 'dampingRatio', path, 0);
+      d.length = optNonNegative(o, 'length', path, 0);
+      d.frequencyHz = optNonNegative(o, 'frequency', path, 0);
+      d.dampingRatio = optNonNegative(o, 'dampingRatio', path, 0);
       def = d;
       break;
     }
@@ -483,10 +526,9 @@ function readJoint(scene: b2dJsonScene, value: unknown, path: string): b2Joint {
       optVec(o, 'groundAnchorB', path, d.groundAnchorB);
       optVec(o, 'anchorA', path, d.localAnchorA);
       optVec(o, 'anchorB', path, d.localAnchorB);
-      d.lengthA = optNumber(o, 'lengthA', path, 0);
-      d.lengthB = optNumber(o, 'lengthB', path, 0);
-      d.ratio = optNumber(o, 'ratio', path, 0);
-      if (d.ratio === 0) fail(keyPath(path, 'ratio'), 'a pulley ratio must not be zero');
+      d.lengthA = optNonNegative(o, 'lengthA', path, 0);
+      d.lengthB = optNonNegative(o, 'lengthB', path, 0);
+      d.ratio = optPositive(o, 'ratio', path, 0);
       def = d;
       break;
     }
@@ -496,7 +538,7 @@ function readJoint(scene: b2dJsonScene, value: unknown, path: string): b2Joint {
       // b2dJson builds the joint at anchorB (which fixes the body-B anchor), then moves the target.
       optVec(o, 'anchorB', path, d.target);
       d.maxForce = optNonNegative(o, 'maxForce', path, 0);
-      d.frequencyHz = optNonNegative(o, 'frequency', path, 0);
+      d.frequencyHz = optPositive(o, 'frequency', path, 0);
       d.dampingRatio = optNonNegative(o, 'dampingRatio', path, 0);
       def = d;
       break;
@@ -514,11 +556,12 @@ function readJoint(scene: b2dJsonScene, value: unknown, path: string): b2Joint {
       optVec(o, 'anchorA', path, d.localAnchorA);
       optVec(o, 'anchorB', path, d.localAnchorB);
       optVec(o, 'localAxisA', path, d.localAxisA);
+      checkAxis(path, 'localAxisA', d.localAxisA);
       d.enableMotor = optBool(o, 'enableMotor', path, false);
       d.motorSpeed = optNumber(o, 'motorSpeed', path, 0);
-      d.maxMotorTorque = optNumber(o, 'maxMotorTorque', path, 0);
-      d.frequencyHz = optNumber(o, 'springFrequency', path, 0);
-      d.dampingRatio = optNumber(o, 'springDampingRatio', path, 0);
+      d.maxMotorTorque = optNonNegative(o, 'maxMotorTorque', path, 0);
+      d.frequencyHz = optNonNegative(o, 'springFrequency', path, 0);
+      d.dampingRatio = optNonNegative(o, 'springDampingRatio', path, 0);
       def = d;
       break;
     }
@@ -527,8 +570,8 @@ function readJoint(scene: b2dJsonScene, value: unknown, path: string): b2Joint {
       optVec(o, 'anchorA', path, d.localAnchorA);
       optVec(o, 'anchorB', path, d.localAnchorB);
       d.referenceAngle = optNumber(o, 'refAngle', path, 0);
-      d.frequencyHz = optNumber(o, 'frequency', path, 0);
-      d.dampingRatio = optNumber(o, 'dampingRatio', path, 0);
+      d.frequencyHz = optNonNegative(o, 'frequency', path, 0);
+      d.dampingRatio = optNonNegative(o, 'dampingRatio', path, 0);
       def = d;
       break;
     }
@@ -536,8 +579,8 @@ function readJoint(scene: b2dJsonScene, value: unknown, path: string): b2Joint {
       const d = new b2FrictionJointDef();
       optVec(o, 'anchorA', path, d.localAnchorA);
       optVec(o, 'anchorB', path, d.localAnchorB);
-      d.maxForce = optNumber(o, 'maxForce', path, 0);
-      d.maxTorque = optNumber(o, 'maxTorque', path, 0);
+      d.maxForce = optNonNegative(o, 'maxForce', path, 0);
+      d.maxTorque = optNonNegative(o, 'maxTorque', path, 0);
       def = d;
       break;
     }
@@ -545,7 +588,7 @@ function readJoint(scene: b2dJsonScene, value: unknown, path: string): b2Joint {
       const d = new b2RopeJointDef();
       optVec(o, 'anchorA', path, d.localAnchorA);
       optVec(o, 'anchorB', path, d.localAnchorB);
-      d.maxLength = optNumber(o, 'maxLength', path, 0);
+      d.maxLength = optPositive(o, 'maxLength', path, 0);
       def = d;
       break;
     }
@@ -633,6 +676,8 @@ export function b2dJsonRead(input: unknown): b2dJsonScene {
   for (let i = 0; i < images.length; ++i) {
     scene.images.push(readImage(scene, images[i], indexPath('image', i)));
   }
+  const state = member(root, b2dJson_stateKey);
+  if (state !== undefined) b2dJsonReadState(world, scene.bodies, scene.joints, state);
   for (const body of scene.bodies) b2dJsonSealBody(body);
   return scene;
 }

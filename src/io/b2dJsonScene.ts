@@ -4,6 +4,7 @@
  * properties, images, step settings).
  */
 
+import { b2ArgumentError } from '../common/b2ArgumentError';
 import type { b2Vec2 } from '../common/b2Math';
 import type { b2Body } from '../dynamics/b2Body';
 import type { b2Fixture } from '../dynamics/b2Fixture';
@@ -17,18 +18,20 @@ export type b2dJsonValue = number | string | boolean | null | b2dJsonValue[] | {
 export type b2dJsonObject = { [key: string]: b2dJsonValue };
 
 /**
- * A malformed document. `path` is the JSON path of the offending value (`body[3].fixture[0].friction`,
+ * A malformed document (a b2ArgumentError whose argument is a JSON path). `path` is the JSON path of the offending value (`body[3].fixture[0].friction`,
  * `(root)` for the document itself) and `rule` the requirement it broke.
  */
-export class b2dJsonError extends Error {
+export class b2dJsonError extends b2ArgumentError {
   readonly path: string;
-  readonly rule: string;
 
-  constructor(path: string, rule: string) {
-    super(`${path}: ${rule}`);
+  /**
+   * `method` is the function that rejected the document (b2dJsonRead or b2dJsonWrite). The
+   * message is `<path>: <rule>`: the JSON path is the argument at fault.
+   */
+  constructor(path: string, rule: string, method = 'b2dJsonRead') {
+    super(method, path, rule, `${path}: ${rule}`);
     this.name = 'b2dJsonError';
     this.path = path;
-    this.rule = rule;
   }
 }
 

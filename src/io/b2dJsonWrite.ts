@@ -14,9 +14,12 @@
  * - b2dJsonWriteString keeps -0, which JSON.stringify writes as 0.
  * A stepped world reloads with the same positions, angles and angular velocities. Its linear
  * velocities match to rounding: loading adds the center-of-mass corrections to the def velocity,
- * and the sum cannot always land on every double. The format also has no place for contacts,
- * warm-starting impulses, sleep timers or the sweep (the center of mass is recomputed from the
- * position), so from there the copy drifts from the original in the last bits.
+ * and the sum cannot always land on every double. Plain b2dJson also has no place for contacts,
+ * warm-starting impulses, sleep timers, the broad-phase tree or the sweep (the center of mass is
+ * recomputed from the position), so from there a plain copy drifts from the original in the last
+ * bits. With `{ solverState: true }` the writer adds the `webphysicsState` extension, which
+ * carries all of that (b2dJsonState.ts lists it); b2dJsonRead applies it, and the reloaded world
+ * steps on bit for bit like the original. Other b2dJson readers skip the extension.
  */
 
 import { b2MulTXV, b2MulXV, b2Rot, b2Vec2 } from '../common/b2Math';
@@ -44,6 +47,7 @@ import type { b2WeldJoint } from '../dynamics/joints/b2WeldJoint';
 import type { b2WheelJoint } from '../dynamics/joints/b2WheelJoint';
 import { b2dJsonBodyRecipeFor, b2dJsonBoxRecipeFor, b2dJsonJointRecipeFor } from './b2dJsonRecipes';
 import type { b2dJsonBoxRecipe } from './b2dJsonRecipes';
+import { b2dJsonWriteState, b2dJson_stateKey } from './b2dJsonState';
 import {
   b2dJsonBodiesInCreationOrder,
   b2dJsonError,
@@ -154,6 +158,8 @@ function boxReproduces(
   center: Readonly<b2Vec2> | null,
   angle: number,
 ): boolean {
+  // SetAsBox takes positive half-widths only (a box turned by pi can look like negative ones).
+  if (!(hx > 0.0 && hy > 0.0)) return false;
   if (center === null) s_polygon.SetAsBox(hx, hy);
   else s_polygon.SetAsBox(hx, hy, center, angle);
   return samePolygon(shape, s_polygon);
@@ -233,7 +239,7 @@ function writeShape(shape: b2Shape, path: string): [string, b2dJsonObject] {
       return ['polygon', o];
     }
     default:
-      throw new b2dJsonError(path, `cannot write shape type ${shape.m_type}`);
+      throw new b2dJsonError(path, `cannot write shape type ${shape.m_type}`, 'b2dJsonWrite');
   }
 }
 
@@ -479,7 +485,7 @@ function writeJointFields(joint: b2Joint, jointIndex: ReadonlyMap<b2Joint, numbe
       const joint1 = jointIndex.get(j.m_joint1);
       const joint2 = jointIndex.get(j.m_joint2);
       if (joint1 === undefined || joint2 === undefined) {
-        throw new b2dJsonError(path, 'a gear joint refers to a joint that is not in the world');
+        throw new b2dJsonError(path, 'a gear joint refers to a joint that is not in the world', 'b2dJsonWrite');
       }
       return { type: 'gear', joint1, joint2, ratio: j.m_ratio };
     }
@@ -528,7 +534,7 @@ function writeJointFields(joint: b2Joint, jointIndex: ReadonlyMap<b2Joint, numbe
       };
     }
     default:
-      throw new b2dJsonError(path, `cannot write joint type ${b2JointType[joint.m_type] ?? joint.m_type}`);
+      throw new b2dJsonError(path, `cannot write joint type ${b2JointType[joint.m_type] ?? joint.m_type}`, 'b2dJsonWrite');
   }
 }
 
@@ -545,7 +551,7 @@ function writeJoint(
   const bodyA = bodyIndex.get(recipe?.bodyA ?? joint.m_bodyA) ?? bodyIndex.get(joint.m_bodyA);
   const bodyB = bodyIndex.get(recipe?.bodyB ?? joint.m_bodyB) ?? bodyIndex.get(joint.m_bodyB);
   if (bodyA === undefined || bodyB === undefined) {
-    throw new b2dJsonError(path, 'the joint is attached to a body that is not in the world');
+    throw new b2dJsonError(path, 'the joint is attached to a body that is not in the world', 'b2dJsonWrite');
   }
   return withMetadata(scene, joint, {
     type,
@@ -556,12 +562,22 @@ function writeJoint(
   });
 }
 
+/** Options of b2dJsonWrite. */
+export interface b2dJsonWriteOptions {
+  /**
+   * Add the `webphysicsState` extension (see b2dJsonState.ts): contacts, the broad-phase tree,
+   * sweeps, sleep timers, joint impulses... so that b2dJsonRead rebuilds a world that steps on bit
+   * for bit like this one. Other b2dJson readers ignore it. Default false.
+   */
+  solverState?: boolean;
+}
+
 /**
  * The b2dJson document for a world, or for a scene (adding its names, custom properties, images
  * and step settings). Numbers are kept as they are, -0 included: serialize it with
  * b2dJsonStringify, not JSON.stringify, to keep negative zeros.
  */
-export function b2dJsonWrite(source: b2World | b2dJsonScene): b2dJsonObject {
+export function b2dJsonWrite(source: b2World | b2dJsonScene, options: b2dJsonWriteOptions = {}): b2dJsonObject {
   const scene = source instanceof b2dJsonScene ? source : null;
   const world = source instanceof b2World ? source : (source as b2dJsonScene).world;
   const settings = scene !== null ? scene.stepSettings : b2dJson_defaultStepSettings;
@@ -590,7 +606,9 @@ export function b2dJsonWrite(source: b2World | b2dJsonScene): b2dJsonObject {
       return withMetadata(scene, image, { ...structuredClone(image.fields), body: index });
     });
   }
-  return withMetadata(scene, world, o);
+  const document = withMetadata(scene, world, o);
+  if (options.solverState === true) document[b2dJson_stateKey] = b2dJsonWriteState(world, bodies, joints);
+  return document;
 }
 
 function stringifyValue(value: b2dJsonValue, indent: string, current: string, path: string): string {
@@ -598,7 +616,7 @@ function stringifyValue(value: b2dJsonValue, indent: string, current: string, pa
   switch (typeof value) {
     case 'number':
       if (!Number.isFinite(value)) {
-        throw new b2dJsonError(path === '' ? '(root)' : path, `cannot write the non-finite number ${value}`);
+        throw new b2dJsonError(path === '' ? '(root)' : path, `cannot write the non-finite number ${value}`, 'b2dJsonWrite');
       }
       // String() gives the shortest text that parses back to the same double, but drops the sign of -0.
       return Object.is(value, -0) ? '-0' : String(value);
@@ -636,6 +654,10 @@ export function b2dJsonStringify(value: b2dJsonValue, space: string | number = '
 }
 
 /** b2dJsonWrite, serialized with b2dJsonStringify. */
-export function b2dJsonWriteString(source: b2World | b2dJsonScene, space: string | number = ''): string {
-  return b2dJsonStringify(b2dJsonWrite(source), space);
+export function b2dJsonWriteString(
+  source: b2World | b2dJsonScene,
+  space: string | number = '',
+  options: b2dJsonWriteOptions = {},
+): string {
+  return b2dJsonStringify(b2dJsonWrite(source, options), space);
 }

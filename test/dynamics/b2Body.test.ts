@@ -532,7 +532,9 @@ describe('b2Body transform, type and activity', () => {
     const bd = new b2BodyDef();
     bd.active = false;
     const b = world.CreateBody(bd);
-    const f = b.CreateFixture(new b2CircleShape(), 0.0);
+    const circle = new b2CircleShape();
+    circle.m_radius = 0.5;
+    const f = b.CreateFixture(circle, 0.0);
     expect(f.m_proxyCount).toBe(0);
     expect(world.GetProxyCount()).toBe(0);
     b.SetActive(true);

@@ -348,7 +348,7 @@ describe('b2dJson numbers and vectors', () => {
 describe('b2dJson defaults and extensions', () => {
   it("missing optional fields take b2dJson's defaults", () => {
     const scene = b2dJsonRead({
-      body: [{ fixture: [{ circle: {} }] }, { type: 2 }],
+      body: [{ fixture: [{ circle: { radius: 0.5 } }] }, { type: 2 }],
       joint: [{ type: 'revolute', bodyA: 0, bodyB: 1 }],
     });
     const world = scene.world;
@@ -373,7 +373,7 @@ describe('b2dJson defaults and extensions', () => {
     const filter = fixture.m_filter;
     expect([filter.categoryBits, filter.maskBits, filter.groupIndex]).toEqual([1, 0xffff, 0]);
     const circle = fixture.m_shape as b2CircleShape;
-    expect([circle.m_radius, circle.m_p.x, circle.m_p.y]).toEqual([0, 0, 0]);
+    expect([circle.m_radius, circle.m_p.x, circle.m_p.y]).toEqual([0.5, 0, 0]);
 
     const joint = scene.joints[0] as b2RevoluteJoint;
     expect([joint.m_enableLimit, joint.m_referenceAngle, joint.m_collideConnected]).toEqual([false, 0, false]);
@@ -515,7 +515,7 @@ describe('b2dJson malformed input', () => {
     [
       'a degenerate polygon Box2D rejects',
       body({ polygon: { vertices: { x: [0, 0, 1], y: [0, 0, 1] } } }),
-      'body[0].fixture[0].polygon: rejected by Box2D',
+      'body[0].fixture[0].polygon.vertices: rejected by b2PolygonShape.Set: vertices[1] coincides with vertices[0]',
     ],
     [
       'an unknown shape type',
@@ -557,7 +557,7 @@ describe('b2dJson malformed input', () => {
     ['a missing body index', twoBodies({ type: 'weld', bodyA: 0 }), 'joint[0].bodyB: required field is missing'],
     [
       'a joint on one body',
-      twoBodies({ type: 'rope', bodyA: 1, bodyB: 1 }),
+      twoBodies({ type: 'rope', bodyA: 1, bodyB: 1, maxLength: 2 }),
       'joint[0].bodyB: bodyA and bodyB are the same body',
     ],
     [
@@ -573,7 +573,7 @@ describe('b2dJson malformed input', () => {
     [
       'a zero pulley ratio',
       twoBodies({ type: 'pulley', bodyA: 0, bodyB: 1 }),
-      'joint[0].ratio: a pulley ratio must not be zero',
+      'joint[0].ratio: expected a finite number > 0, got 0 (the field is missing and defaults to it)',
     ],
     [
       'a gear before any joint',
@@ -583,7 +583,7 @@ describe('b2dJson malformed input', () => {
     [
       'mass data Box2D rejects',
       { body: [{ type: 2, 'massData-mass': 1, 'massData-I': 0.5, 'massData-center': { x: 1, y: 0 } }] },
-      'body[0].massData-mass: rejected by Box2D',
+      'body[0].massData-mass: rejected by b2Body.SetMassData: massData.I must exceed mass * |center|^2',
     ],
     [
       'a custom property with two values',

@@ -9,6 +9,14 @@ import type { b2AABB, b2RayCastInput, b2RayCastOutput } from '../b2Collision';
 import { b2EdgeShape } from './b2EdgeShape';
 import { b2Shape } from './b2Shape';
 import type { b2MassData } from './b2Shape';
+import { b2CheckChainVertices } from './b2ShapeValidation';
+import { b2ArgumentError, b2CheckVec2 } from '../../common/b2ArgumentError';
+
+function checkUnused(method: string, chain: b2ChainShape): void {
+  if (chain.m_vertices.length !== 0 || chain.m_count !== 0) {
+    throw new b2ArgumentError(method, 'this chain', 'already has vertices (create a new b2ChainShape)');
+  }
+}
 
 const s_edgeShape = new b2EdgeShape();
 
@@ -41,6 +49,8 @@ export class b2ChainShape extends b2Shape {
    * @param count the vertex count
    */
   CreateLoop(vertices: readonly Readonly<b2Vec2>[], count: number = vertices.length): void {
+    checkUnused('b2ChainShape.CreateLoop', this);
+    b2CheckChainVertices('b2ChainShape.CreateLoop', 'vertices', 'count', vertices, count, true);
     b2Assert(this.m_vertices.length === 0 && this.m_count === 0);
     b2Assert(count >= 3);
     this.m_count = count + 1;
@@ -62,6 +72,8 @@ export class b2ChainShape extends b2Shape {
    * @param count the vertex count
    */
   CreateChain(vertices: readonly Readonly<b2Vec2>[], count: number = vertices.length): void {
+    checkUnused('b2ChainShape.CreateChain', this);
+    b2CheckChainVertices('b2ChainShape.CreateChain', 'vertices', 'count', vertices, count, false);
     b2Assert(this.m_vertices.length === 0 && this.m_count === 0);
     b2Assert(count >= 2);
     this.m_count = count;
@@ -79,6 +91,7 @@ export class b2ChainShape extends b2Shape {
    * Don't call this for loops.
    */
   SetPrevVertex(prevVertex: Readonly<b2Vec2>): void {
+    b2CheckVec2('b2ChainShape.SetPrevVertex', 'prevVertex', prevVertex);
     this.m_prevVertex.Assign(prevVertex);
     this.m_hasPrevVertex = true;
   }
@@ -88,6 +101,7 @@ export class b2ChainShape extends b2Shape {
    * Don't call this for loops.
    */
   SetNextVertex(nextVertex: Readonly<b2Vec2>): void {
+    b2CheckVec2('b2ChainShape.SetNextVertex', 'nextVertex', nextVertex);
     this.m_nextVertex.Assign(nextVertex);
     this.m_hasNextVertex = true;
   }

@@ -8,6 +8,7 @@ import { b2_polygonRadius } from '../../common/b2Settings';
 import type { b2AABB, b2RayCastInput, b2RayCastOutput } from '../b2Collision';
 import { b2Shape } from './b2Shape';
 import type { b2MassData } from './b2Shape';
+import { b2CheckEdgeVertices } from './b2ShapeValidation';
 
 const s_normal = new b2Vec2();
 
@@ -32,6 +33,7 @@ export class b2EdgeShape extends b2Shape {
 
   /** Set this as an isolated edge. */
   Set(v1: Readonly<b2Vec2>, v2: Readonly<b2Vec2>): this {
+    b2CheckEdgeVertices('b2EdgeShape.Set', 'v1', 'v2', v1, v2);
     this.m_vertex1.Assign(v1);
     this.m_vertex2.Assign(v2);
     this.m_hasVertex0 = false;

@@ -8,6 +8,8 @@ import { b2_epsilon, b2_maxPolygonVertices, b2_polygonRadius, b2Assert } from '.
 import type { b2AABB, b2RayCastInput, b2RayCastOutput } from '../b2Collision';
 import { b2Shape } from './b2Shape';
 import type { b2MassData } from './b2Shape';
+import { b2CheckPolygonVertices } from './b2ShapeValidation';
+import { b2CheckFinite, b2CheckPositive, b2CheckVec2 } from '../../common/b2ArgumentError';
 
 function makeVertexArray(): b2Vec2[] {
   const array: b2Vec2[] = [];
@@ -99,8 +101,11 @@ export class b2PolygonShape extends b2Shape {
    * Copy vertices. This assumes the vertices define a convex polygon.
    * It is assumed that the exterior is the the right of each edge.
    * The count must be in the range [3, b2_maxPolygonVertices].
+   * Throws b2ArgumentError, leaving the polygon unchanged, unless the vertices are finite,
+   * counter-clockwise and convex, with edges longer than b2_epsilon and an area above b2_epsilon.
    */
   Set(vertices: readonly Readonly<b2Vec2>[], count: number = vertices.length): this {
+    b2CheckPolygonVertices('b2PolygonShape.Set', 'vertices', 'count', vertices, count, b2_epsilon);
     b2Assert(3 <= count && count <= b2_maxPolygonVertices);
     this.m_vertexCount = count;
 
@@ -135,6 +140,12 @@ export class b2PolygonShape extends b2Shape {
    * @param angle the rotation of the box in local coordinates.
    */
   SetAsBox(hx: number, hy: number, center?: Readonly<b2Vec2>, angle: number = 0.0): this {
+    b2CheckPositive('b2PolygonShape.SetAsBox', 'hx', hx);
+    b2CheckPositive('b2PolygonShape.SetAsBox', 'hy', hy);
+    if (center !== undefined) {
+      b2CheckVec2('b2PolygonShape.SetAsBox', 'center', center);
+      b2CheckFinite('b2PolygonShape.SetAsBox', 'angle', angle);
+    }
     this.m_vertexCount = 4;
     this.m_vertices[0].Set(-hx, -hy);
     this.m_vertices[1].Set(hx, -hy);

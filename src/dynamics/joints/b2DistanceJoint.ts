@@ -21,7 +21,8 @@ import { b2Abs, b2Clamp, b2MulRV, b2Rot, b2SubVV, b2Vec2 } from '../../common/b2
 import { b2_linearSlop, b2_maxLinearCorrection, b2_pi, b2Log } from '../../common/b2Settings';
 import type { b2Body } from '../b2Body';
 import type { b2SolverData } from '../b2TimeStep';
-import { b2Joint, b2JointDef, b2JointType } from './b2Joint';
+import { b2Joint, b2JointDef, b2JointType, b2CheckJointAlive } from './b2Joint';
+import { b2CheckNonNegative } from '../../common/b2ArgumentError';
 
 const s_qA = new b2Rot();
 const s_qB = new b2Rot();
@@ -328,6 +329,8 @@ export class b2DistanceJoint extends b2Joint {
    * Manipulating the length can lead to non-physical behavior when the frequency is zero.
    */
   SetLength(length: number): void {
+    b2CheckJointAlive(this, 'b2DistanceJoint.SetLength');
+    b2CheckNonNegative('b2DistanceJoint.SetLength', 'length', length);
     this.m_length = length;
   }
 
@@ -337,6 +340,8 @@ export class b2DistanceJoint extends b2Joint {
 
   /** Set/get frequency in Hz. */
   SetFrequency(hz: number): void {
+    b2CheckJointAlive(this, 'b2DistanceJoint.SetFrequency');
+    b2CheckNonNegative('b2DistanceJoint.SetFrequency', 'hz', hz);
     this.m_frequencyHz = hz;
   }
 
@@ -346,6 +351,8 @@ export class b2DistanceJoint extends b2Joint {
 
   /** Set/get damping ratio. */
   SetDampingRatio(ratio: number): void {
+    b2CheckJointAlive(this, 'b2DistanceJoint.SetDampingRatio');
+    b2CheckNonNegative('b2DistanceJoint.SetDampingRatio', 'ratio', ratio);
     this.m_dampingRatio = ratio;
   }
 

@@ -14,11 +14,12 @@
  * K = invI1 + invI2
  */
 
-import { b2IsValid, b2Clamp, b2Mat22, b2MulMV, b2MulRV, b2Rot, b2SubVV, b2Vec2 } from '../../common/b2Math';
-import { b2Assert, b2Log } from '../../common/b2Settings';
+import { b2Clamp, b2Mat22, b2MulMV, b2MulRV, b2Rot, b2SubVV, b2Vec2 } from '../../common/b2Math';
+import { b2Log } from '../../common/b2Settings';
 import type { b2Body } from '../b2Body';
 import type { b2SolverData } from '../b2TimeStep';
-import { b2Joint, b2JointDef, b2JointType } from './b2Joint';
+import { b2Joint, b2JointDef, b2JointType, b2CheckJointAlive } from './b2Joint';
+import { b2CheckNonNegative } from '../../common/b2ArgumentError';
 
 const s_qA = new b2Rot();
 const s_qB = new b2Rot();
@@ -275,7 +276,8 @@ export class b2FrictionJoint extends b2Joint {
 
   /** Set the maximum friction force in N. */
   SetMaxForce(force: number): void {
-    b2Assert(b2IsValid(force) && force >= 0.0, 'maxForce must be finite and non-negative');
+    b2CheckJointAlive(this, 'b2FrictionJoint.SetMaxForce');
+    b2CheckNonNegative('b2FrictionJoint.SetMaxForce', 'force', force);
     this.m_maxForce = force;
   }
 
@@ -286,7 +288,8 @@ export class b2FrictionJoint extends b2Joint {
 
   /** Set the maximum friction torque in N*m. */
   SetMaxTorque(torque: number): void {
-    b2Assert(b2IsValid(torque) && torque >= 0.0, 'maxTorque must be finite and non-negative');
+    b2CheckJointAlive(this, 'b2FrictionJoint.SetMaxTorque');
+    b2CheckNonNegative('b2FrictionJoint.SetMaxTorque', 'torque', torque);
     this.m_maxTorque = torque;
   }
 

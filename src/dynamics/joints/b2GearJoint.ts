@@ -26,11 +26,12 @@
  * order A, B, C, D (the last write of a shared body wins, as in the C++).
  */
 
-import { b2IsValid, b2MulRV, b2MulTRV, b2Rot, b2SubVV, b2Vec2 } from '../../common/b2Math';
+import { b2MulRV, b2MulTRV, b2Rot, b2SubVV, b2Vec2 } from '../../common/b2Math';
 import { b2_linearSlop, b2Assert, b2Log } from '../../common/b2Settings';
 import type { b2Body } from '../b2Body';
 import type { b2SolverData } from '../b2TimeStep';
-import { b2Joint, b2JointDef, b2JointType } from './b2Joint';
+import { b2Joint, b2JointDef, b2JointType, b2CheckJointAlive } from './b2Joint';
+import { b2CheckFinite } from '../../common/b2ArgumentError';
 import type { b2PrismaticJoint } from './b2PrismaticJoint';
 import type { b2RevoluteJoint } from './b2RevoluteJoint';
 
@@ -550,7 +551,8 @@ export class b2GearJoint extends b2Joint {
 
   /** Set/Get the gear ratio. */
   SetRatio(ratio: number): void {
-    b2Assert(b2IsValid(ratio), 'ratio must be finite');
+    b2CheckJointAlive(this, 'b2GearJoint.SetRatio');
+    b2CheckFinite('b2GearJoint.SetRatio', 'ratio', ratio);
     this.m_ratio = ratio;
   }
 

@@ -7,6 +7,7 @@
 
 import { b2Vec2 } from '../../common/b2Math';
 import { b2Assert, b2Log } from '../../common/b2Settings';
+import { b2DestroyedError } from '../../common/b2ArgumentError';
 import type { b2Body } from '../b2Body';
 import type { b2SolverData } from '../b2TimeStep';
 
@@ -128,6 +129,9 @@ export abstract class b2Joint {
 
   m_userData: any = null;
 
+  /** Set by b2World.DestroyJoint (no C++ counterpart: the C++ frees the memory). */
+  m_destroyed = false;
+
   constructor(def: b2JointDef) {
     b2Assert(def.bodyA !== def.bodyB, 'a joint needs two different bodies');
     b2Assert(def.bodyA !== null && def.bodyB !== null, 'joint bodyA and bodyB must be set');
@@ -208,4 +212,11 @@ export abstract class b2Joint {
 
   /** This returns true if the position errors are within tolerance. */
   abstract SolvePositionConstraints(data: b2SolverData): boolean;
+}
+
+/** Throws if the joint has been destroyed (b2World.DestroyJoint, or DestroyBody of one of its bodies). */
+export function b2CheckJointAlive(joint: b2Joint, method: string): void {
+  if (joint.m_destroyed) {
+    throw b2DestroyedError(method, 'this joint');
+  }
 }

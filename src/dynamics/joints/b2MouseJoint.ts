@@ -13,7 +13,8 @@
 import { b2IsValid, b2Mat22, b2MulMV, b2MulRV, b2MulTXV, b2Rot, b2SubVV, b2Vec2 } from '../../common/b2Math';
 import { b2_epsilon, b2_pi, b2Assert, b2Log } from '../../common/b2Settings';
 import type { b2SolverData } from '../b2TimeStep';
-import { b2Joint, b2JointDef, b2JointType } from './b2Joint';
+import { b2Joint, b2JointDef, b2JointType, b2CheckJointAlive } from './b2Joint';
+import { b2CheckNonNegative, b2CheckPositive, b2CheckVec2 } from '../../common/b2ArgumentError';
 
 const s_qB = new b2Rot();
 const s_K = new b2Mat22();
@@ -90,6 +91,8 @@ export class b2MouseJoint extends b2Joint {
 
   /** Use this to update the target point. */
   SetTarget(target: Readonly<b2Vec2>): void {
+    b2CheckJointAlive(this, 'b2MouseJoint.SetTarget');
+    b2CheckVec2('b2MouseJoint.SetTarget', 'target', target);
     if (this.m_bodyB.IsAwake() === false) {
       this.m_bodyB.SetAwake(true);
     }
@@ -102,6 +105,8 @@ export class b2MouseJoint extends b2Joint {
 
   /** Set/get the maximum force in Newtons. */
   SetMaxForce(force: number): void {
+    b2CheckJointAlive(this, 'b2MouseJoint.SetMaxForce');
+    b2CheckNonNegative('b2MouseJoint.SetMaxForce', 'force', force);
     this.m_maxForce = force;
   }
 
@@ -111,6 +116,8 @@ export class b2MouseJoint extends b2Joint {
 
   /** Set/get the frequency in Hertz. */
   SetFrequency(hz: number): void {
+    b2CheckJointAlive(this, 'b2MouseJoint.SetFrequency');
+    b2CheckPositive('b2MouseJoint.SetFrequency', 'hz', hz);
     this.m_frequencyHz = hz;
   }
 
@@ -120,6 +127,8 @@ export class b2MouseJoint extends b2Joint {
 
   /** Set/get the damping ratio (dimensionless). */
   SetDampingRatio(ratio: number): void {
+    b2CheckJointAlive(this, 'b2MouseJoint.SetDampingRatio');
+    b2CheckNonNegative('b2MouseJoint.SetDampingRatio', 'ratio', ratio);
     this.m_dampingRatio = ratio;
   }
 

@@ -83,10 +83,11 @@ import {
   b2Vec2,
   b2Vec3,
 } from '../../common/b2Math';
-import { b2_linearSlop, b2_angularSlop, b2_maxLinearCorrection, b2Assert, b2Log } from '../../common/b2Settings';
+import { b2_linearSlop, b2_angularSlop, b2_maxLinearCorrection, b2Log } from '../../common/b2Settings';
 import type { b2Body } from '../b2Body';
 import type { b2SolverData } from '../b2TimeStep';
-import { b2Joint, b2JointDef, b2JointType, b2LimitState } from './b2Joint';
+import { b2Joint, b2JointDef, b2JointType, b2LimitState, b2CheckJointAlive } from './b2Joint';
+import { b2CheckFinite, b2CheckLimits, b2CheckNonNegative } from '../../common/b2ArgumentError';
 
 const s_qA = new b2Rot();
 const s_qB = new b2Rot();
@@ -678,6 +679,7 @@ export class b2PrismaticJoint extends b2Joint {
 
   /** Enable/disable the joint limit. */
   EnableLimit(flag: boolean): void {
+    b2CheckJointAlive(this, 'b2PrismaticJoint.EnableLimit');
     if (flag !== this.m_enableLimit) {
       this.m_bodyA.SetAwake(true);
       this.m_bodyB.SetAwake(true);
@@ -698,7 +700,8 @@ export class b2PrismaticJoint extends b2Joint {
 
   /** Set the joint limits, usually in meters. */
   SetLimits(lower: number, upper: number): void {
-    b2Assert(lower <= upper, 'lower limit must not exceed upper limit');
+    b2CheckJointAlive(this, 'b2PrismaticJoint.SetLimits');
+    b2CheckLimits('b2PrismaticJoint.SetLimits', 'lower', 'upper', lower, upper);
     if (lower !== this.m_lowerTranslation || upper !== this.m_upperTranslation) {
       this.m_bodyA.SetAwake(true);
       this.m_bodyB.SetAwake(true);
@@ -715,6 +718,7 @@ export class b2PrismaticJoint extends b2Joint {
 
   /** Enable/disable the joint motor. */
   EnableMotor(flag: boolean): void {
+    b2CheckJointAlive(this, 'b2PrismaticJoint.EnableMotor');
     this.m_bodyA.SetAwake(true);
     this.m_bodyB.SetAwake(true);
     this.m_enableMotor = flag;
@@ -722,6 +726,8 @@ export class b2PrismaticJoint extends b2Joint {
 
   /** Set the motor speed, usually in meters per second. */
   SetMotorSpeed(speed: number): void {
+    b2CheckJointAlive(this, 'b2PrismaticJoint.SetMotorSpeed');
+    b2CheckFinite('b2PrismaticJoint.SetMotorSpeed', 'speed', speed);
     this.m_bodyA.SetAwake(true);
     this.m_bodyB.SetAwake(true);
     this.m_motorSpeed = speed;
@@ -734,6 +740,8 @@ export class b2PrismaticJoint extends b2Joint {
 
   /** Set the maximum motor force, usually in N. */
   SetMaxMotorForce(force: number): void {
+    b2CheckJointAlive(this, 'b2PrismaticJoint.SetMaxMotorForce');
+    b2CheckNonNegative('b2PrismaticJoint.SetMaxMotorForce', 'force', force);
     this.m_bodyA.SetAwake(true);
     this.m_bodyB.SetAwake(true);
     this.m_maxMotorForce = force;

@@ -23,12 +23,12 @@ import {
   b2_angularSlop,
   b2_linearSlop,
   b2_maxAngularCorrection,
-  b2Assert,
   b2Log,
 } from '../../common/b2Settings';
 import type { b2Body } from '../b2Body';
 import type { b2SolverData } from '../b2TimeStep';
-import { b2Joint, b2JointDef, b2JointType, b2LimitState } from './b2Joint';
+import { b2Joint, b2JointDef, b2JointType, b2LimitState, b2CheckJointAlive } from './b2Joint';
+import { b2CheckFinite, b2CheckLimits, b2CheckNonNegative } from '../../common/b2ArgumentError';
 
 const s_qA = new b2Rot();
 const s_qB = new b2Rot();
@@ -508,6 +508,7 @@ export class b2RevoluteJoint extends b2Joint {
 
   /** Enable/disable the joint limit. */
   EnableLimit(flag: boolean): void {
+    b2CheckJointAlive(this, 'b2RevoluteJoint.EnableLimit');
     if (flag !== this.m_enableLimit) {
       this.m_bodyA.SetAwake(true);
       this.m_bodyB.SetAwake(true);
@@ -528,8 +529,8 @@ export class b2RevoluteJoint extends b2Joint {
 
   /** Set the joint limits in radians. */
   SetLimits(lower: number, upper: number): void {
-    b2Assert(lower <= upper, 'lower limit must not exceed upper limit');
-
+    b2CheckJointAlive(this, 'b2RevoluteJoint.SetLimits');
+    b2CheckLimits('b2RevoluteJoint.SetLimits', 'lower', 'upper', lower, upper);
     if (lower !== this.m_lowerAngle || upper !== this.m_upperAngle) {
       this.m_bodyA.SetAwake(true);
       this.m_bodyB.SetAwake(true);
@@ -546,6 +547,7 @@ export class b2RevoluteJoint extends b2Joint {
 
   /** Enable/disable the joint motor. */
   EnableMotor(flag: boolean): void {
+    b2CheckJointAlive(this, 'b2RevoluteJoint.EnableMotor');
     this.m_bodyA.SetAwake(true);
     this.m_bodyB.SetAwake(true);
     this.m_enableMotor = flag;
@@ -553,6 +555,8 @@ export class b2RevoluteJoint extends b2Joint {
 
   /** Set the motor speed in radians per second. */
   SetMotorSpeed(speed: number): void {
+    b2CheckJointAlive(this, 'b2RevoluteJoint.SetMotorSpeed');
+    b2CheckFinite('b2RevoluteJoint.SetMotorSpeed', 'speed', speed);
     this.m_bodyA.SetAwake(true);
     this.m_bodyB.SetAwake(true);
     this.m_motorSpeed = speed;
@@ -565,6 +569,8 @@ export class b2RevoluteJoint extends b2Joint {
 
   /** Set the maximum motor torque, usually in N-m. */
   SetMaxMotorTorque(torque: number): void {
+    b2CheckJointAlive(this, 'b2RevoluteJoint.SetMaxMotorTorque');
+    b2CheckNonNegative('b2RevoluteJoint.SetMaxMotorTorque', 'torque', torque);
     this.m_bodyA.SetAwake(true);
     this.m_bodyB.SetAwake(true);
     this.m_maxMotorTorque = torque;

@@ -13,7 +13,8 @@
 import { b2Clamp, b2Min, b2MulRV, b2Rot, b2SubVV, b2Vec2 } from '../../common/b2Math';
 import { b2_linearSlop, b2_maxLinearCorrection, b2Log } from '../../common/b2Settings';
 import type { b2SolverData } from '../b2TimeStep';
-import { b2Joint, b2JointDef, b2JointType, b2LimitState } from './b2Joint';
+import { b2Joint, b2JointDef, b2JointType, b2LimitState, b2CheckJointAlive } from './b2Joint';
+import { b2CheckPositive } from '../../common/b2ArgumentError';
 
 const s_qA = new b2Rot();
 const s_qB = new b2Rot();
@@ -291,6 +292,8 @@ export class b2RopeJoint extends b2Joint {
 
   /** Set/Get the maximum length of the rope. */
   SetMaxLength(length: number): void {
+    b2CheckJointAlive(this, 'b2RopeJoint.SetMaxLength');
+    b2CheckPositive('b2RopeJoint.SetMaxLength', 'length', length);
     this.m_maxLength = length;
   }
 

@@ -20,7 +20,8 @@ import { b2Abs, b2Mat33, b2Mul22, b2Mul33, b2MulRV, b2Rot, b2SubVV, b2Vec2, b2Ve
 import { b2_angularSlop, b2_linearSlop, b2_pi, b2Log } from '../../common/b2Settings';
 import type { b2Body } from '../b2Body';
 import type { b2SolverData } from '../b2TimeStep';
-import { b2Joint, b2JointDef, b2JointType } from './b2Joint';
+import { b2Joint, b2JointDef, b2JointType, b2CheckJointAlive } from './b2Joint';
+import { b2CheckNonNegative } from '../../common/b2ArgumentError';
 
 const s_qA = new b2Rot();
 const s_qB = new b2Rot();
@@ -414,6 +415,8 @@ export class b2WeldJoint extends b2Joint {
 
   /** Set/get frequency in Hz. */
   SetFrequency(hz: number): void {
+    b2CheckJointAlive(this, 'b2WeldJoint.SetFrequency');
+    b2CheckNonNegative('b2WeldJoint.SetFrequency', 'hz', hz);
     this.m_frequencyHz = hz;
   }
 
@@ -423,6 +426,8 @@ export class b2WeldJoint extends b2Joint {
 
   /** Set/get damping ratio. */
   SetDampingRatio(ratio: number): void {
+    b2CheckJointAlive(this, 'b2WeldJoint.SetDampingRatio');
+    b2CheckNonNegative('b2WeldJoint.SetDampingRatio', 'ratio', ratio);
     this.m_dampingRatio = ratio;
   }
 

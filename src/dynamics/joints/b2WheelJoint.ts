@@ -26,7 +26,8 @@ import { b2Abs, b2Clamp, b2CrossSV, b2MulRV, b2Rot, b2SubVV, b2Vec2 } from '../.
 import { b2_linearSlop, b2_pi, b2Log } from '../../common/b2Settings';
 import type { b2Body } from '../b2Body';
 import type { b2SolverData } from '../b2TimeStep';
-import { b2Joint, b2JointDef, b2JointType } from './b2Joint';
+import { b2Joint, b2JointDef, b2JointType, b2CheckJointAlive } from './b2Joint';
+import { b2CheckFinite, b2CheckNonNegative } from '../../common/b2ArgumentError';
 
 const s_qA = new b2Rot();
 const s_qB = new b2Rot();
@@ -519,6 +520,7 @@ export class b2WheelJoint extends b2Joint {
 
   /** Enable/disable the joint motor. */
   EnableMotor(flag: boolean): void {
+    b2CheckJointAlive(this, 'b2WheelJoint.EnableMotor');
     this.m_bodyA.SetAwake(true);
     this.m_bodyB.SetAwake(true);
     this.m_enableMotor = flag;
@@ -526,6 +528,8 @@ export class b2WheelJoint extends b2Joint {
 
   /** Set the motor speed, usually in radians per second. */
   SetMotorSpeed(speed: number): void {
+    b2CheckJointAlive(this, 'b2WheelJoint.SetMotorSpeed');
+    b2CheckFinite('b2WheelJoint.SetMotorSpeed', 'speed', speed);
     this.m_bodyA.SetAwake(true);
     this.m_bodyB.SetAwake(true);
     this.m_motorSpeed = speed;
@@ -538,6 +542,8 @@ export class b2WheelJoint extends b2Joint {
 
   /** Set/Get the maximum motor force, usually in N-m. */
   SetMaxMotorTorque(torque: number): void {
+    b2CheckJointAlive(this, 'b2WheelJoint.SetMaxMotorTorque');
+    b2CheckNonNegative('b2WheelJoint.SetMaxMotorTorque', 'torque', torque);
     this.m_bodyA.SetAwake(true);
     this.m_bodyB.SetAwake(true);
     this.m_maxMotorTorque = torque;
@@ -554,6 +560,8 @@ export class b2WheelJoint extends b2Joint {
 
   /** Set/Get the spring frequency in hertz. Setting the frequency to zero disables the spring. */
   SetSpringFrequencyHz(hz: number): void {
+    b2CheckJointAlive(this, 'b2WheelJoint.SetSpringFrequencyHz');
+    b2CheckNonNegative('b2WheelJoint.SetSpringFrequencyHz', 'hz', hz);
     this.m_frequencyHz = hz;
   }
 
@@ -563,6 +571,8 @@ export class b2WheelJoint extends b2Joint {
 
   /** Set/Get the spring damping ratio */
   SetSpringDampingRatio(ratio: number): void {
+    b2CheckJointAlive(this, 'b2WheelJoint.SetSpringDampingRatio');
+    b2CheckNonNegative('b2WheelJoint.SetSpringDampingRatio', 'ratio', ratio);
     this.m_dampingRatio = ratio;
   }
 

@@ -193,6 +193,7 @@ describe('b2Joint base API', () => {
     const d2 = new b2RopeJointDef();
     d2.bodyA = a;
     d2.bodyB = b;
+    d2.maxLength = 3;
     const j2 = world.CreateJoint(d2);
 
     expect(j1.GetType()).toBe(e_distanceJoint);
@@ -225,6 +226,7 @@ describe('b2Joint base API', () => {
     const def = new b2RopeJointDef();
     def.bodyA = a;
     def.bodyB = b;
+    def.maxLength = 3;
     const joint = world.CreateJoint(def);
     expect(joint.IsActive()).toBe(true);
     b.SetActive(false);

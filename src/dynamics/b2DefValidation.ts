@@ -1,0 +1,229 @@
+/*
+ * Checks of body, fixture and joint definitions and of the objects a call refers to (no C++
+ * counterpart; see common/b2ArgumentError.ts). b2World.CreateBody, b2Body.CreateFixture and
+ * b2World.CreateJoint run them before they change anything.
+ *
+ * The joint rules are those of Box2D 2.2.1's asserts and documentation, plus what keeps the solver
+ * free of NaN: finite numbers everywhere, non-negative forces, torques, frequencies and damping
+ * ratios, lower <= upper limits, non-zero axes, a positive pulley ratio and rope length, a
+ * positive mouse frequency on a dynamic body B (b2MouseJoint asserts d + h * k > epsilon in the time
+ * step, with d and k proportional to body B's mass).
+ */
+
+import {
+  b2ArgumentError,
+  b2CheckFinite,
+  b2CheckLimits,
+  b2CheckNonNegative,
+  b2CheckObject,
+  b2CheckPositive,
+  b2CheckVec2,
+  b2DescribeNumber,
+  b2DestroyedError,
+} from '../common/b2ArgumentError';
+import type { b2Vec2 } from '../common/b2Math';
+import { b2CheckShape } from '../collision/shapes/b2ShapeValidation';
+import { b2Body, b2BodyType } from './b2Body';
+import type { b2BodyDef } from './b2Body';
+import type { b2FixtureDef } from './b2Fixture';
+import type { b2World } from './b2World';
+import type { b2DistanceJointDef } from './joints/b2DistanceJoint';
+import type { b2FrictionJointDef } from './joints/b2FrictionJoint';
+import type { b2GearJointDef } from './joints/b2GearJoint';
+import { b2Joint, b2JointType } from './joints/b2Joint';
+import type { b2JointDef } from './joints/b2Joint';
+import type { b2MouseJointDef } from './joints/b2MouseJoint';
+import type { b2PrismaticJointDef } from './joints/b2PrismaticJoint';
+import type { b2PulleyJointDef } from './joints/b2PulleyJoint';
+import type { b2RevoluteJointDef } from './joints/b2RevoluteJoint';
+import type { b2RopeJointDef } from './joints/b2RopeJoint';
+import type { b2WeldJointDef } from './joints/b2WeldJoint';
+import type { b2WheelJointDef } from './joints/b2WheelJoint';
+
+/** `type` must be one of b2_staticBody, b2_kinematicBody, b2_dynamicBody. */
+export function b2CheckBodyType(method: string, argument: string, type: b2BodyType): void {
+  if (type !== b2BodyType.b2_staticBody && type !== b2BodyType.b2_kinematicBody && type !== b2BodyType.b2_dynamicBody) {
+    throw new b2ArgumentError(
+      method,
+      argument,
+      `must be b2_staticBody (0), b2_kinematicBody (1) or b2_dynamicBody (2), got ${b2DescribeNumber(type)}`,
+    );
+  }
+}
+
+/** A body definition: valid type, finite kinematics, non-negative damping, finite gravity scale. */
+export function b2CheckBodyDef(method: string, def: Readonly<b2BodyDef>): void {
+  b2CheckObject(method, 'def', def);
+  b2CheckBodyType(method, 'def.type', def.type);
+  b2CheckVec2(method, 'def.position', def.position);
+  b2CheckFinite(method, 'def.angle', def.angle);
+  b2CheckVec2(method, 'def.linearVelocity', def.linearVelocity);
+  b2CheckFinite(method, 'def.angularVelocity', def.angularVelocity);
+  b2CheckNonNegative(method, 'def.linearDamping', def.linearDamping);
+  b2CheckNonNegative(method, 'def.angularDamping', def.angularDamping);
+  b2CheckFinite(method, 'def.gravityScale', def.gravityScale);
+}
+
+/** A fixture definition: a valid shape, and non-negative finite friction, restitution and density. */
+export function b2CheckFixtureDef(method: string, def: Readonly<b2FixtureDef>, shapeArgument = 'def.shape'): void {
+  b2CheckObject(method, 'def', def);
+  if (def.shape === null || def.shape === undefined) {
+    throw new b2ArgumentError(method, shapeArgument, 'must be set');
+  }
+  b2CheckNonNegative(method, 'def.friction', def.friction);
+  b2CheckNonNegative(method, 'def.restitution', def.restitution);
+  b2CheckNonNegative(method, 'def.density', def.density);
+  b2CheckShape(method, shapeArgument, def.shape, def.density);
+}
+
+/** `body` must be a live body of `world`. */
+export function b2CheckBodyOf(method: string, argument: string, body: b2Body | null, world: b2World): void {
+  if (!(body instanceof b2Body)) {
+    throw new b2ArgumentError(method, argument, `must be a b2Body, got ${b2DescribeNumber(body)}`);
+  }
+  if (body.m_destroyed) throw b2DestroyedError(method, argument);
+  if (body.m_world !== world) throw new b2ArgumentError(method, argument, 'belongs to another world');
+}
+
+/** `joint` must be a live joint of `world`. */
+export function b2CheckJointOf(method: string, argument: string, joint: b2Joint | null, world: b2World): void {
+  if (!(joint instanceof b2Joint)) {
+    throw new b2ArgumentError(method, argument, `must be a b2Joint, got ${b2DescribeNumber(joint)}`);
+  }
+  if (joint.m_destroyed) throw b2DestroyedError(method, argument);
+  if (joint.m_bodyA.m_world !== world) throw new b2ArgumentError(method, argument, 'belongs to another world');
+}
+
+function checkAnchors(method: string, def: { localAnchorA: b2Vec2; localAnchorB: b2Vec2 }): void {
+  b2CheckVec2(method, 'def.localAnchorA', def.localAnchorA);
+  b2CheckVec2(method, 'def.localAnchorB', def.localAnchorB);
+}
+
+/** An axis must be finite and not zero (the joint normalizes it). */
+export function b2CheckAxis(method: string, argument: string, axis: Readonly<b2Vec2>): void {
+  b2CheckVec2(method, argument, axis);
+  if (!(axis.x * axis.x + axis.y * axis.y > 0.0)) {
+    throw new b2ArgumentError(method, argument, 'must not be the zero vector (it is the joint axis)');
+  }
+}
+
+function checkGearJoint(method: string, argument: string, joint: b2Joint | null, world: b2World): void {
+  b2CheckJointOf(method, argument, joint, world);
+  const type = (joint as b2Joint).m_type;
+  if (type !== b2JointType.e_revoluteJoint && type !== b2JointType.e_prismaticJoint) {
+    throw new b2ArgumentError(
+      method,
+      argument,
+      `must be a revolute or prismatic joint, got a ${b2JointType[type] ?? b2DescribeNumber(type)}`,
+    );
+  }
+}
+
+/** A joint definition for `world`: two distinct live bodies of the world and the type's rules. */
+export function b2CheckJointDef(method: string, def: Readonly<b2JointDef>, world: b2World): void {
+  b2CheckObject(method, 'def', def);
+  b2CheckBodyOf(method, 'def.bodyA', def.bodyA, world);
+  b2CheckBodyOf(method, 'def.bodyB', def.bodyB, world);
+  if (def.bodyA === def.bodyB) {
+    throw new b2ArgumentError(method, 'def.bodyB', 'is def.bodyA (a joint connects two different bodies)');
+  }
+
+  switch (def.type) {
+    case b2JointType.e_revoluteJoint: {
+      const d = def as b2RevoluteJointDef;
+      checkAnchors(method, d);
+      b2CheckFinite(method, 'def.referenceAngle', d.referenceAngle);
+      b2CheckLimits(method, 'def.lowerAngle', 'def.upperAngle', d.lowerAngle, d.upperAngle);
+      b2CheckFinite(method, 'def.motorSpeed', d.motorSpeed);
+      b2CheckNonNegative(method, 'def.maxMotorTorque', d.maxMotorTorque);
+      return;
+    }
+    case b2JointType.e_prismaticJoint: {
+      const d = def as b2PrismaticJointDef;
+      checkAnchors(method, d);
+      b2CheckAxis(method, 'def.localAxisA', d.localAxisA);
+      b2CheckFinite(method, 'def.referenceAngle', d.referenceAngle);
+      b2CheckLimits(method, 'def.lowerTranslation', 'def.upperTranslation', d.lowerTranslation, d.upperTranslation);
+      b2CheckFinite(method, 'def.motorSpeed', d.motorSpeed);
+      b2CheckNonNegative(method, 'def.maxMotorForce', d.maxMotorForce);
+      return;
+    }
+    case b2JointType.e_distanceJoint: {
+      const d = def as b2DistanceJointDef;
+      checkAnchors(method, d);
+      b2CheckNonNegative(method, 'def.length', d.length);
+      b2CheckNonNegative(method, 'def.frequencyHz', d.frequencyHz);
+      b2CheckNonNegative(method, 'def.dampingRatio', d.dampingRatio);
+      return;
+    }
+    case b2JointType.e_pulleyJoint: {
+      const d = def as b2PulleyJointDef;
+      b2CheckVec2(method, 'def.groundAnchorA', d.groundAnchorA);
+      b2CheckVec2(method, 'def.groundAnchorB', d.groundAnchorB);
+      checkAnchors(method, d);
+      b2CheckNonNegative(method, 'def.lengthA', d.lengthA);
+      b2CheckNonNegative(method, 'def.lengthB', d.lengthB);
+      b2CheckPositive(method, 'def.ratio', d.ratio);
+      return;
+    }
+    case b2JointType.e_mouseJoint: {
+      const d = def as b2MouseJointDef;
+      if ((d.bodyB as b2Body).m_type !== b2BodyType.b2_dynamicBody) {
+        // The joint's spring is built from body B's mass: without one, b2MouseJoint asserts in the time step.
+        throw new b2ArgumentError(method, 'def.bodyB', 'must be a dynamic body (the mouse joint drags body B by its mass)');
+      }
+      b2CheckVec2(method, 'def.target', d.target);
+      b2CheckNonNegative(method, 'def.maxForce', d.maxForce);
+      b2CheckPositive(method, 'def.frequencyHz', d.frequencyHz);
+      b2CheckNonNegative(method, 'def.dampingRatio', d.dampingRatio);
+      return;
+    }
+    case b2JointType.e_gearJoint: {
+      const d = def as b2GearJointDef;
+      checkGearJoint(method, 'def.joint1', d.joint1, world);
+      checkGearJoint(method, 'def.joint2', d.joint2, world);
+      if (d.joint1 === d.joint2) {
+        throw new b2ArgumentError(method, 'def.joint2', 'is def.joint1 (a gear couples two different joints)');
+      }
+      b2CheckFinite(method, 'def.ratio', d.ratio);
+      return;
+    }
+    case b2JointType.e_wheelJoint: {
+      const d = def as b2WheelJointDef;
+      checkAnchors(method, d);
+      b2CheckAxis(method, 'def.localAxisA', d.localAxisA);
+      b2CheckFinite(method, 'def.motorSpeed', d.motorSpeed);
+      b2CheckNonNegative(method, 'def.maxMotorTorque', d.maxMotorTorque);
+      b2CheckNonNegative(method, 'def.frequencyHz', d.frequencyHz);
+      b2CheckNonNegative(method, 'def.dampingRatio', d.dampingRatio);
+      return;
+    }
+    case b2JointType.e_weldJoint: {
+      const d = def as b2WeldJointDef;
+      checkAnchors(method, d);
+      b2CheckFinite(method, 'def.referenceAngle', d.referenceAngle);
+      b2CheckNonNegative(method, 'def.frequencyHz', d.frequencyHz);
+      b2CheckNonNegative(method, 'def.dampingRatio', d.dampingRatio);
+      return;
+    }
+    case b2JointType.e_frictionJoint: {
+      const d = def as b2FrictionJointDef;
+      checkAnchors(method, d);
+      b2CheckNonNegative(method, 'def.maxForce', d.maxForce);
+      b2CheckNonNegative(method, 'def.maxTorque', d.maxTorque);
+      return;
+    }
+    case b2JointType.e_ropeJoint: {
+      const d = def as b2RopeJointDef;
+      checkAnchors(method, d);
+      b2CheckPositive(method, 'def.maxLength', d.maxLength);
+      return;
+    }
+    default:
+      throw new b2ArgumentError(
+        method,
+        'def.type',
+        `must be a joint type (use a b2XxxJointDef), got ${b2JointType[def.type] ?? b2DescribeNumber(def.type)}`,
+      );
+  }
+}
