@@ -8,14 +8,22 @@ import { b2_maxFloat, b2_maxManifoldPoints, b2Assert } from '../common/b2Setting
 import { b2ClipSegmentToLine, b2ClipVertex, b2ContactFeature, b2Manifold } from './b2Collision';
 import type { b2PolygonShape } from './shapes/b2PolygonShape';
 
-/** Find the separation between poly1 and poly2 for a give edge normal on poly1. */
+// The separations the two functions below compute are returned in these slots: a double returned
+// from a call V8 does not inline is boxed (a heap allocation per call), a typed array slot is not.
+const s_edgeSeparation = new Float64Array(1);
+const s_maxSeparation = new Float64Array(1);
+
+/**
+ * Find the separation between poly1 and poly2 for a give edge normal on poly1; the separation is
+ * written to s_edgeSeparation[0].
+ */
 function b2EdgeSeparation(
   poly1: Readonly<b2PolygonShape>,
   xf1: Readonly<b2Transform>,
   edge1: number,
   poly2: Readonly<b2PolygonShape>,
   xf2: Readonly<b2Transform>,
-): number {
+): void {
   const vertices1 = poly1.m_vertices;
   const normals1 = poly1.m_normals;
 
@@ -50,12 +58,12 @@ function b2EdgeSeparation(
   const v2x = xf2.q.c * b.x - xf2.q.s * b.y + xf2.p.x;
   const v2y = xf2.q.s * b.x + xf2.q.c * b.y + xf2.p.y;
   const separation = (v2x - v1x) * normal1WorldX + (v2y - v1y) * normal1WorldY;
-  return separation;
+  s_edgeSeparation[0] = separation;
 }
 
 /**
  * Find the max separation between poly1 and poly2 using edge normals from poly1. The edge is
- * written to edgeIndex[0].
+ * written to edgeIndex[0], the separation to s_maxSeparation[0].
  */
 function b2FindMaxSeparation(
   edgeIndex: number[],
@@ -63,7 +71,7 @@ function b2FindMaxSeparation(
   xf1: Readonly<b2Transform>,
   poly2: Readonly<b2PolygonShape>,
   xf2: Readonly<b2Transform>,
-): number {
+): void {
   const count1 = poly1.m_vertexCount;
   const normals1 = poly1.m_normals;
 
@@ -87,15 +95,18 @@ function b2FindMaxSeparation(
   }
 
   // Get the separation for the edge normal.
-  let s = b2EdgeSeparation(poly1, xf1, edge, poly2, xf2);
+  b2EdgeSeparation(poly1, xf1, edge, poly2, xf2);
+  let s = s_edgeSeparation[0];
 
   // Check the separation for the previous edge normal.
   const prevEdge = edge - 1 >= 0 ? edge - 1 : count1 - 1;
-  const sPrev = b2EdgeSeparation(poly1, xf1, prevEdge, poly2, xf2);
+  b2EdgeSeparation(poly1, xf1, prevEdge, poly2, xf2);
+  const sPrev = s_edgeSeparation[0];
 
   // Check the separation for the next edge normal.
   const nextEdge = edge + 1 < count1 ? edge + 1 : 0;
-  const sNext = b2EdgeSeparation(poly1, xf1, nextEdge, poly2, xf2);
+  b2EdgeSeparation(poly1, xf1, nextEdge, poly2, xf2);
+  const sNext = s_edgeSeparation[0];
 
   // Find the best edge and the search direction.
   let bestEdge: number;
@@ -111,7 +122,8 @@ function b2FindMaxSeparation(
     bestSeparation = sNext;
   } else {
     edgeIndex[0] = edge;
-    return s;
+    s_maxSeparation[0] = s;
+    return;
   }
 
   // Perform a local search for the best edge normal.
@@ -119,7 +131,8 @@ function b2FindMaxSeparation(
     if (increment === -1) edge = bestEdge - 1 >= 0 ? bestEdge - 1 : count1 - 1;
     else edge = bestEdge + 1 < count1 ? bestEdge + 1 : 0;
 
-    s = b2EdgeSeparation(poly1, xf1, edge, poly2, xf2);
+    b2EdgeSeparation(poly1, xf1, edge, poly2, xf2);
+    s = s_edgeSeparation[0];
 
     if (s > bestSeparation) {
       bestEdge = edge;
@@ -130,7 +143,7 @@ function b2FindMaxSeparation(
   }
 
   edgeIndex[0] = bestEdge;
-  return bestSeparation;
+  s_maxSeparation[0] = bestSeparation;
 }
 
 function b2FindIncidentEdge(
@@ -220,11 +233,13 @@ export function b2CollidePolygons(
   manifold.pointCount = 0;
   const totalRadius = polyA.m_radius + polyB.m_radius;
 
-  const separationA = b2FindMaxSeparation(s_edgeA, polyA, xfA, polyB, xfB);
+  b2FindMaxSeparation(s_edgeA, polyA, xfA, polyB, xfB);
+  const separationA = s_maxSeparation[0];
   const edgeA = s_edgeA[0];
   if (separationA > totalRadius) return;
 
-  const separationB = b2FindMaxSeparation(s_edgeB, polyB, xfB, polyA, xfA);
+  b2FindMaxSeparation(s_edgeB, polyB, xfB, polyA, xfA);
+  const separationB = s_maxSeparation[0];
   const edgeB = s_edgeB[0];
   if (separationB > totalRadius) return;
 

@@ -12,7 +12,7 @@
  */
 
 import { b2_epsilon, b2_pi } from './b2Settings';
-import { b2Atan2, b2Cos, b2Sin } from './b2Trig';
+import { b2Atan2, b2SinCos, b2SinCosArg } from './b2Trig';
 
 /** False for NaN and +-Infinity. */
 export function b2IsValid(x: number): boolean {
@@ -461,10 +461,11 @@ export class b2Rot {
     return this;
   }
 
-  /** Set using an angle in radians. */
+  /** Set using an angle in radians (sinf and cosf: b2Sin and b2Cos, computed together). */
   Set(angle: number): this {
-    this.s = b2Sin(angle);
-    this.c = b2Cos(angle);
+    // The angle travels in a typed array slot so the call does not box it (see b2SinCos).
+    b2SinCosArg[0] = angle;
+    b2SinCos(this);
     return this;
   }
 

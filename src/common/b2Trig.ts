@@ -76,6 +76,9 @@ const pio2_3 = 2.02226624871116645580e-21;
 const pio2_3t = 8.47842766036889956997e-32;
 
 // Scratch for the reduction; the functions below are not re-entrant and never need to be.
+// remPio2 takes its argument in remX[0] and leaves y0, y1 in remY: doubles passed to or returned
+// from a call V8 does not inline are boxed (a heap allocation each), typed array slots are not.
+const remX = new Float64Array(1);
 const remY = new Float64Array(2);
 const krTx = new Float64Array(3);
 const krIq = new Int32Array(20);
@@ -228,8 +231,9 @@ function kernelRemPio2(x: Float64Array, y: Float64Array, e0: number, nx: number)
   return n & 7;
 }
 
-/** __ieee754_rem_pio2: x - n*pi/2 in y[0] + y[1], returns n. */
-function remPio2(x: number, y: Float64Array): number {
+/** __ieee754_rem_pio2: x (in remX[0]) - n*pi/2 in y[0] + y[1], returns n. */
+function remPio2(y: Float64Array): number {
+  const x = remX[0];
   const hx = highWord(x);
   const ix = hx & 0x7fffffff;
   let z: number;
@@ -376,7 +380,8 @@ export function b2Sin(x: number): number {
   const ix = highWord(x) & 0x7fffffff;
   if (ix <= 0x3fe921fb) return kernelSin(x, 0.0, 0);
   if (ix >= 0x7ff00000) return x - x;
-  const n = remPio2(x, remY);
+  remX[0] = x;
+  const n = remPio2(remY);
   switch (n & 3) {
     case 0:
       return kernelSin(remY[0], remY[1], 1);
@@ -394,7 +399,8 @@ export function b2Cos(x: number): number {
   const ix = highWord(x) & 0x7fffffff;
   if (ix <= 0x3fe921fb) return kernelCos(x, 0.0);
   if (ix >= 0x7ff00000) return x - x;
-  const n = remPio2(x, remY);
+  remX[0] = x;
+  const n = remPio2(remY);
   switch (n & 3) {
     case 0:
       return kernelCos(remY[0], remY[1]);
@@ -404,6 +410,100 @@ export function b2Cos(x: number): number {
       return -kernelCos(remY[0], remY[1]);
     default:
       return kernelSin(remY[0], remY[1], 1);
+  }
+}
+
+/** The angle b2SinCos reads (see there). */
+export const b2SinCosArg = new Float64Array(1);
+
+/**
+ * sin and cos of b2SinCosArg[0] into rot.s and rot.c: exactly b2Sin and b2Cos (the same fdlibm
+ * operations, so the same bits), sharing one argument reduction and with the kernels written out,
+ * so the hot path (b2Rot.Set, once per body or constraint and iteration) allocates nothing: the
+ * angle comes in through a typed array slot and the results go straight into the fields.
+ */
+export function b2SinCos(rot: { s: number; c: number }): void {
+  const x = b2SinCosArg[0];
+  f64[0] = x;
+  const hx = i32[HI] & 0x7fffffff;
+  let y0: number;
+  let y1: number;
+  let n: number;
+  let iy: number;
+  if (hx <= 0x3fe921fb) {
+    // |x| <= pi/4: b2Sin is kernelSin(x, 0.0, 0), b2Cos is kernelCos(x, 0.0).
+    y0 = x;
+    y1 = 0.0;
+    n = 0;
+    iy = 0;
+  } else if (hx >= 0x7ff00000) {
+    rot.s = x - x;
+    rot.c = x - x;
+    return;
+  } else {
+    remX[0] = x;
+    n = remPio2(remY);
+    y0 = remY[0];
+    y1 = remY[1];
+    iy = 1;
+  }
+
+  f64[0] = y0;
+  const ix = i32[HI] & 0x7fffffff;
+  let ks: number;
+  let kc: number;
+  if (ix < 0x3e400000 && (y0 | 0) === 0) {
+    // The kernels' tiny-argument exits.
+    ks = y0;
+    kc = 1.0;
+  } else {
+    const z = y0 * y0;
+
+    // __kernel_sin(y0, y1, iy)
+    const v = z * y0;
+    const rs = S2 + z * (S3 + z * (S4 + z * (S5 + z * S6)));
+    if (iy === 0) {
+      ks = y0 + v * (S1 + z * rs);
+    } else {
+      ks = y0 - (z * (0.5 * y1 - v * rs) - y1 - v * S1);
+    }
+
+    // __kernel_cos(y0, y1)
+    const rc = z * (C1 + z * (C2 + z * (C3 + z * (C4 + z * (C5 + z * C6)))));
+    if (ix < 0x3fd33333) {
+      kc = 1.0 - (0.5 * z - (z * rc - y0 * y1));
+    } else {
+      let qx: number;
+      if (ix > 0x3fe90000) {
+        qx = 0.28125;
+      } else {
+        i32[HI] = ix - 0x00200000;
+        i32[LO] = 0;
+        qx = f64[0];
+      }
+      const iz = 0.5 * z - qx;
+      const a = 1.0 - qx;
+      kc = a - (iz - (z * rc - y0 * y1));
+    }
+  }
+
+  switch (n & 3) {
+    case 0:
+      rot.s = ks;
+      rot.c = kc;
+      break;
+    case 1:
+      rot.s = kc;
+      rot.c = -ks;
+      break;
+    case 2:
+      rot.s = -ks;
+      rot.c = -kc;
+      break;
+    default:
+      rot.s = -kc;
+      rot.c = ks;
+      break;
   }
 }
 

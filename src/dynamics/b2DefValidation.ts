@@ -5,7 +5,7 @@
  *
  * The joint rules are those of Box2D 2.2.1's asserts and documentation, plus what keeps the solver
  * free of NaN: finite numbers everywhere, non-negative forces, torques, frequencies and damping
- * ratios, lower <= upper limits, non-zero axes, a positive pulley ratio and rope length, a
+ * ratios, non-zero axes, a non-zero pulley ratio, a non-negative rope length, a
  * positive mouse frequency on a dynamic body B (b2MouseJoint asserts d + h * k > epsilon in the time
  * step, with d and k proportional to body B's mass).
  */
@@ -13,7 +13,6 @@
 import {
   b2ArgumentError,
   b2CheckFinite,
-  b2CheckLimits,
   b2CheckNonNegative,
   b2CheckObject,
   b2CheckPositive,
@@ -133,7 +132,9 @@ export function b2CheckJointDef(method: string, def: Readonly<b2JointDef>, world
       const d = def as b2RevoluteJointDef;
       checkAnchors(method, d);
       b2CheckFinite(method, 'def.referenceAngle', d.referenceAngle);
-      b2CheckLimits(method, 'def.lowerAngle', 'def.upperAngle', d.lowerAngle, d.upperAngle);
+      // 2.2.1 asserts lower <= upper only in SetLimits: a def may carry any finite pair.
+      b2CheckFinite(method, 'def.lowerAngle', d.lowerAngle);
+      b2CheckFinite(method, 'def.upperAngle', d.upperAngle);
       b2CheckFinite(method, 'def.motorSpeed', d.motorSpeed);
       b2CheckNonNegative(method, 'def.maxMotorTorque', d.maxMotorTorque);
       return;
@@ -143,7 +144,8 @@ export function b2CheckJointDef(method: string, def: Readonly<b2JointDef>, world
       checkAnchors(method, d);
       b2CheckAxis(method, 'def.localAxisA', d.localAxisA);
       b2CheckFinite(method, 'def.referenceAngle', d.referenceAngle);
-      b2CheckLimits(method, 'def.lowerTranslation', 'def.upperTranslation', d.lowerTranslation, d.upperTranslation);
+      b2CheckFinite(method, 'def.lowerTranslation', d.lowerTranslation);
+      b2CheckFinite(method, 'def.upperTranslation', d.upperTranslation);
       b2CheckFinite(method, 'def.motorSpeed', d.motorSpeed);
       b2CheckNonNegative(method, 'def.maxMotorForce', d.maxMotorForce);
       return;
@@ -163,7 +165,11 @@ export function b2CheckJointDef(method: string, def: Readonly<b2JointDef>, world
       checkAnchors(method, d);
       b2CheckNonNegative(method, 'def.lengthA', d.lengthA);
       b2CheckNonNegative(method, 'def.lengthB', d.lengthB);
-      b2CheckPositive(method, 'def.ratio', d.ratio);
+      b2CheckFinite(method, 'def.ratio', d.ratio);
+      if (d.ratio === 0.0) {
+        // b2PulleyJoint divides by the ratio (2.2.1 asserts ratio != 0); a negative one is allowed.
+        throw new b2ArgumentError(method, 'def.ratio', 'must not be 0');
+      }
       return;
     }
     case b2JointType.e_mouseJoint: {
@@ -216,7 +222,7 @@ export function b2CheckJointDef(method: string, def: Readonly<b2JointDef>, world
     case b2JointType.e_ropeJoint: {
       const d = def as b2RopeJointDef;
       checkAnchors(method, d);
-      b2CheckPositive(method, 'def.maxLength', d.maxLength);
+      b2CheckNonNegative(method, 'def.maxLength', d.maxLength);
       return;
     }
     default:

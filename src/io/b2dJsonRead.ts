@@ -170,11 +170,6 @@ function reqPositive(o: b2dJsonObject, key: string, path: string): number {
   return value;
 }
 
-/** A limit pair: lower must not exceed upper (b2RevoluteJoint and b2PrismaticJoint assert it). */
-function checkLimits(path: string, lower: number, upper: number): void {
-  if (!(lower <= upper)) fail(keyPath(path, 'lowerLimit'), `must not exceed upperLimit (${lower} > ${upper})`);
-}
-
 /** A joint axis: the joint normalizes it, so it must not be zero. */
 function checkAxis(path: string, key: string, axis: b2Vec2): void {
   if (!(axis.x * axis.x + axis.y * axis.y > 0)) fail(keyPath(path, key), 'expected a non-zero axis, got (0, 0)');
@@ -335,7 +330,7 @@ function readShape(fixture: b2dJsonObject, path: string): { shape: b2Shape; box:
   switch (key) {
     case 'circle': {
       const circle = new b2CircleShape();
-      circle.m_radius = optPositive(o, 'radius', p, 0);
+      circle.m_radius = optNonNegative(o, 'radius', p, 0);
       optVec(o, 'center', p, circle.m_p);
       return { shape: circle, box: null };
     }
@@ -483,7 +478,6 @@ function readJoint(scene: b2dJsonScene, value: unknown, path: string): b2Joint {
       d.enableLimit = optBool(o, 'enableLimit', path, false);
       d.lowerAngle = optNumber(o, 'lowerLimit', path, 0);
       d.upperAngle = optNumber(o, 'upperLimit', path, 0);
-      checkLimits(path, d.lowerAngle, d.upperAngle);
       d.enableMotor = optBool(o, 'enableMotor', path, false);
       d.motorSpeed = optNumber(o, 'motorSpeed', path, 0);
       d.maxMotorTorque = optNonNegative(o, 'maxMotorTorque', path, 0);
@@ -503,7 +497,6 @@ function readJoint(scene: b2dJsonScene, value: unknown, path: string): b2Joint {
       d.enableLimit = optBool(o, 'enableLimit', path, false);
       d.lowerTranslation = optNumber(o, 'lowerLimit', path, 0);
       d.upperTranslation = optNumber(o, 'upperLimit', path, 0);
-      checkLimits(path, d.lowerTranslation, d.upperTranslation);
       d.enableMotor = optBool(o, 'enableMotor', path, false);
       d.motorSpeed = optNumber(o, 'motorSpeed', path, 0);
       d.maxMotorForce = optNonNegative(o, 'maxMotorForce', path, 0);
@@ -528,7 +521,8 @@ function readJoint(scene: b2dJsonScene, value: unknown, path: string): b2Joint {
       optVec(o, 'anchorB', path, d.localAnchorB);
       d.lengthA = optNonNegative(o, 'lengthA', path, 0);
       d.lengthB = optNonNegative(o, 'lengthB', path, 0);
-      d.ratio = optPositive(o, 'ratio', path, 0);
+      d.ratio = optNumber(o, 'ratio', path, 0);
+      if (d.ratio === 0) fail(keyPath(path, 'ratio'), 'must not be 0 (the pulley joint divides by it)');
       def = d;
       break;
     }
@@ -588,7 +582,7 @@ function readJoint(scene: b2dJsonScene, value: unknown, path: string): b2Joint {
       const d = new b2RopeJointDef();
       optVec(o, 'anchorA', path, d.localAnchorA);
       optVec(o, 'anchorB', path, d.localAnchorB);
-      d.maxLength = optPositive(o, 'maxLength', path, 0);
+      d.maxLength = optNonNegative(o, 'maxLength', path, 0);
       def = d;
       break;
     }

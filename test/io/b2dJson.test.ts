@@ -573,7 +573,7 @@ describe('b2dJson malformed input', () => {
     [
       'a zero pulley ratio',
       twoBodies({ type: 'pulley', bodyA: 0, bodyB: 1 }),
-      'joint[0].ratio: expected a finite number > 0, got 0 (the field is missing and defaults to it)',
+      'joint[0].ratio: must not be 0 (the pulley joint divides by it)',
     ],
     [
       'a gear before any joint',

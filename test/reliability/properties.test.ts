@@ -267,6 +267,7 @@ function badCall(world: b2World, which: number, body: b2Body | undefined): (() =
       return body ? () => body.SetLinearDamping(-1) : null;
     default: {
       const circle = new b2CircleShape();
+      circle.m_radius = -1;
       return body ? () => body.CreateFixture(circle, 1) : null;
     }
   }

@@ -7,7 +7,7 @@
  */
 
 import type { b2Vec2 } from '../../common/b2Math';
-import { b2ArgumentError, b2CheckInteger, b2CheckNonNegative, b2CheckPositive, b2CheckVec2, b2DescribeNumber } from '../../common/b2ArgumentError';
+import { b2ArgumentError, b2CheckInteger, b2CheckNonNegative, b2CheckVec2, b2DescribeNumber } from '../../common/b2ArgumentError';
 import { b2_epsilon, b2_maxPolygonVertices } from '../../common/b2Settings';
 import type { b2ChainShape } from './b2ChainShape';
 import type { b2CircleShape } from './b2CircleShape';
@@ -168,7 +168,7 @@ export function b2CheckShape(method: string, argument: string, shape: b2Shape, d
   switch (shape.m_type) {
     case b2Shape.e_circle: {
       const circle = shape as b2CircleShape;
-      b2CheckPositive(method, `${argument}.m_radius`, circle.m_radius);
+      b2CheckNonNegative(method, `${argument}.m_radius`, circle.m_radius);
       b2CheckVec2(method, `${argument}.m_p`, circle.m_p);
       return;
     }

@@ -664,32 +664,42 @@ export class b2ContactSolver {
 
   /** Sequential solver. */
   SolvePositionConstraints(): boolean {
-    let minSeparation = 0.0;
-
-    for (let i = 0; i < this.m_count; ++i) {
-      const pc = this.m_positionConstraints[i];
-      minSeparation = this.SolvePositionConstraint(pc, pc.invMassA, pc.invIA, pc.invMassB, pc.invIB, b2_baumgarte, minSeparation);
-    }
-
-    // We can't expect minSpeparation >= -b2_linearSlop because we don't
-    // push the separation above -b2_linearSlop.
-    return minSeparation >= -3.0 * b2_linearSlop;
+    return this.SolvePositionConstraintsOf(false, -1, -1);
   }
 
   /** Sequential position solver for position constraints. */
   SolveTOIPositionConstraints(toiIndexA: number, toiIndexB: number): boolean {
+    return this.SolvePositionConstraintsOf(true, toiIndexA, toiIndexB);
+  }
+
+  /**
+   * The body of SolvePositionConstraints (toi false) and SolveTOIPositionConstraints (toi true),
+   * which differ only in body A's masses, the Baumgarte factor and the final test. One loop with
+   * integer and boolean arguments: a per-contact helper taking and returning doubles would box
+   * them on every call V8 does not inline.
+   */
+  private SolvePositionConstraintsOf(toi: boolean, toiIndexA: number, toiIndexB: number): boolean {
     let minSeparation = 0.0;
+    const baumgarte = toi ? b2_toiBaugarte : b2_baumgarte;
+    const positions = this.m_positions;
+    const xfA = s_xfA;
+    const xfB = s_xfB;
+    const psm = s_psm;
 
     for (let i = 0; i < this.m_count; ++i) {
       const pc = this.m_positionConstraints[i];
 
       const indexA = pc.indexA;
+      const indexB = pc.indexB;
+      const localCenterA = pc.localCenterA;
+      const localCenterB = pc.localCenterB;
+      const pointCount = pc.pointCount;
 
-      let mA = 0.0;
-      let iA = 0.0;
-      if (indexA === toiIndexA || indexA === toiIndexB) {
-        mA = pc.invMassA;
-        iA = pc.invIA;
+      let mA = pc.invMassA;
+      let iA = pc.invIA;
+      if (toi && indexA !== toiIndexA && indexA !== toiIndexB) {
+        mA = 0.0;
+        iA = 0.0;
       }
 
       // Box2D 2.2.1 gives body B its mass whether or not it is one of the two TOI bodies (its
@@ -698,102 +708,76 @@ export class b2ContactSolver {
       const mB = pc.invMassB;
       const iB = pc.invIB;
 
-      minSeparation = this.SolvePositionConstraint(pc, mA, iA, mB, iB, b2_toiBaugarte, minSeparation);
+      const positionA = positions[indexA];
+      const positionB = positions[indexB];
+      let cAx = positionA.c.x;
+      let cAy = positionA.c.y;
+      let aA = positionA.a;
+
+      let cBx = positionB.c.x;
+      let cBy = positionB.c.y;
+      let aB = positionB.a;
+
+      // Solve normal constraints
+      for (let j = 0; j < pointCount; ++j) {
+        xfA.q.Set(aA);
+        xfB.q.Set(aB);
+        xfA.p.x = cAx - (xfA.q.c * localCenterA.x - xfA.q.s * localCenterA.y);
+        xfA.p.y = cAy - (xfA.q.s * localCenterA.x + xfA.q.c * localCenterA.y);
+        xfB.p.x = cBx - (xfB.q.c * localCenterB.x - xfB.q.s * localCenterB.y);
+        xfB.p.y = cBy - (xfB.q.s * localCenterB.x + xfB.q.c * localCenterB.y);
+
+        psm.Initialize(pc, xfA, xfB, j);
+        const normal = psm.normal;
+
+        const point = psm.point;
+        const separation = psm.separation;
+
+        const rAx = point.x - cAx;
+        const rAy = point.y - cAy;
+        const rBx = point.x - cBx;
+        const rBy = point.y - cBy;
+
+        // Track max constraint error.
+        minSeparation = b2Min(minSeparation, separation);
+
+        // Prevent large corrections and allow slop.
+        const C = b2Clamp(baumgarte * (separation + b2_linearSlop), -b2_maxLinearCorrection, 0.0);
+
+        // Compute the effective mass.
+        const rnA = rAx * normal.y - rAy * normal.x;
+        const rnB = rBx * normal.y - rBy * normal.x;
+        const K = mA + mB + iA * rnA * rnA + iB * rnB * rnB;
+
+        // Compute normal impulse
+        const impulse = K > 0.0 ? -C / K : 0.0;
+
+        const PX = impulse * normal.x;
+        const PY = impulse * normal.y;
+
+        cAx -= mA * PX;
+        cAy -= mA * PY;
+        aA -= iA * (rAx * PY - rAy * PX);
+
+        cBx += mB * PX;
+        cBy += mB * PY;
+        aB += iB * (rBx * PY - rBy * PX);
+      }
+
+      positionA.c.x = cAx;
+      positionA.c.y = cAy;
+      positionA.a = aA;
+
+      positionB.c.x = cBx;
+      positionB.c.y = cBy;
+      positionB.a = aB;
     }
 
     // We can't expect minSpeparation >= -b2_linearSlop because we don't
     // push the separation above -b2_linearSlop.
-    return minSeparation >= -1.5 * b2_linearSlop;
-  }
-
-  /**
-   * The per-contact body shared by SolvePositionConstraints and SolveTOIPositionConstraints,
-   * which differ only in the masses and the Baumgarte factor. Returns the updated minimum
-   * separation.
-   */
-  private SolvePositionConstraint(
-    pc: b2ContactPositionConstraint,
-    mA: number,
-    iA: number,
-    mB: number,
-    iB: number,
-    baumgarte: number,
-    minSeparation: number,
-  ): number {
-    const indexA = pc.indexA;
-    const indexB = pc.indexB;
-    const localCenterA = pc.localCenterA;
-    const localCenterB = pc.localCenterB;
-    const pointCount = pc.pointCount;
-
-    const positionA = this.m_positions[indexA];
-    const positionB = this.m_positions[indexB];
-    let cAx = positionA.c.x;
-    let cAy = positionA.c.y;
-    let aA = positionA.a;
-
-    let cBx = positionB.c.x;
-    let cBy = positionB.c.y;
-    let aB = positionB.a;
-
-    const xfA = s_xfA;
-    const xfB = s_xfB;
-    const psm = s_psm;
-
-    // Solve normal constraints
-    for (let j = 0; j < pointCount; ++j) {
-      xfA.q.Set(aA);
-      xfB.q.Set(aB);
-      xfA.p.x = cAx - (xfA.q.c * localCenterA.x - xfA.q.s * localCenterA.y);
-      xfA.p.y = cAy - (xfA.q.s * localCenterA.x + xfA.q.c * localCenterA.y);
-      xfB.p.x = cBx - (xfB.q.c * localCenterB.x - xfB.q.s * localCenterB.y);
-      xfB.p.y = cBy - (xfB.q.s * localCenterB.x + xfB.q.c * localCenterB.y);
-
-      psm.Initialize(pc, xfA, xfB, j);
-      const normal = psm.normal;
-
-      const point = psm.point;
-      const separation = psm.separation;
-
-      const rAx = point.x - cAx;
-      const rAy = point.y - cAy;
-      const rBx = point.x - cBx;
-      const rBy = point.y - cBy;
-
-      // Track max constraint error.
-      minSeparation = b2Min(minSeparation, separation);
-
-      // Prevent large corrections and allow slop.
-      const C = b2Clamp(baumgarte * (separation + b2_linearSlop), -b2_maxLinearCorrection, 0.0);
-
-      // Compute the effective mass.
-      const rnA = rAx * normal.y - rAy * normal.x;
-      const rnB = rBx * normal.y - rBy * normal.x;
-      const K = mA + mB + iA * rnA * rnA + iB * rnB * rnB;
-
-      // Compute normal impulse
-      const impulse = K > 0.0 ? -C / K : 0.0;
-
-      const PX = impulse * normal.x;
-      const PY = impulse * normal.y;
-
-      cAx -= mA * PX;
-      cAy -= mA * PY;
-      aA -= iA * (rAx * PY - rAy * PX);
-
-      cBx += mB * PX;
-      cBy += mB * PY;
-      aB += iB * (rBx * PY - rBy * PX);
+    if (toi) {
+      return minSeparation >= -1.5 * b2_linearSlop;
     }
-
-    positionA.c.x = cAx;
-    positionA.c.y = cAy;
-    positionA.a = aA;
-
-    positionB.c.x = cBx;
-    positionB.c.y = cBy;
-    positionB.a = aB;
-
-    return minSeparation;
+    return minSeparation >= -3.0 * b2_linearSlop;
   }
 }
