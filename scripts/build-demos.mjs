@@ -1,0 +1,95 @@
+// The testbed page (demos/): bundles demos/main.ts with esbuild into <outDir>/testbed.js and copies
+// index.html and testbed.css beside it. `node scripts/build-demos.mjs [outDir]` (default demos/dist);
+// `npm start` calls buildDemos() and serves the folder.
+//
+// The benchmark scenes come from bench/scenes.mjs, a Node module: its node:fs, node:path and
+// node:url imports are replaced by small browser stand-ins, and the one data file it reads (the
+// golden mixed-rain scene) is embedded when the golden folder is there at build time.
+import { build, context } from 'esbuild';
+import { copyFileSync, existsSync, mkdirSync, readFileSync } from 'node:fs';
+import path from 'node:path';
+import { fileURLToPath, pathToFileURL } from 'node:url';
+
+export const repoRoot = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
+export const defaultOutDir = path.join(repoRoot, 'demos', 'dist');
+
+/** The golden folder ($WEBPHYSICS_GOLDEN or ../shared/golden beside the checkout), or null. */
+function goldenDir() {
+  const dir = process.env.WEBPHYSICS_GOLDEN ?? path.resolve(repoRoot, '..', 'shared', 'golden');
+  return existsSync(dir) ? dir : null;
+}
+
+/** esbuild plugin: browser stand-ins for the Node built-ins bench/scenes.mjs imports. */
+function nodeShims() {
+  const golden = goldenDir();
+  const files = {};
+  if (golden !== null) {
+    const mixedRain = path.join(golden, 'scenes', 'mixed-rain.scene.json');
+    if (existsSync(mixedRain)) files['mixed-rain.scene.json'] = readFileSync(mixedRain, 'utf8');
+  }
+  const sources = {
+    fs: `const files = ${JSON.stringify(files)};
+const base = (f) => String(f).split('/').pop();
+export function existsSync(f) { return Object.prototype.hasOwnProperty.call(files, base(f)); }
+export function readFileSync(f) {
+  if (!existsSync(f)) throw new Error('not embedded in the testbed bundle: ' + f);
+  return files[base(f)];
+}`,
+    path: `const join = (...parts) => parts.filter((p) => p !== '').join('/');
+export default { join, resolve: join, dirname: (p) => String(p).split('/').slice(0, -1).join('/') };`,
+    url: `export function fileURLToPath(u) { return String(u ?? ''); }
+export function pathToFileURL(p) { return new URL(String(p), 'file:///'); }`,
+  };
+  return {
+    name: 'node-shims',
+    setup(b) {
+      b.onResolve({ filter: /^node:(fs|path|url)$/ }, (args) => ({ path: args.path.slice(5), namespace: 'node-shim' }));
+      b.onLoad({ filter: /.*/, namespace: 'node-shim' }, (args) => ({ contents: sources[args.path], loader: 'js' }));
+    },
+  };
+}
+
+function options(outDir) {
+  return {
+    entryPoints: [path.join(repoRoot, 'demos', 'main.ts')],
+    outfile: path.join(outDir, 'testbed.js'),
+    bundle: true,
+    format: 'esm',
+    platform: 'browser',
+    target: 'es2020',
+    sourcemap: true,
+    logLevel: 'warning',
+    legalComments: 'inline',
+    define: { 'process.env.WEBPHYSICS_GOLDEN': 'undefined' },
+    plugins: [nodeShims()],
+  };
+}
+
+function copyStatic(outDir) {
+  for (const file of ['index.html', 'testbed.css']) copyFileSync(path.join(repoRoot, 'demos', file), path.join(outDir, file));
+}
+
+/** Build the page into outDir. With watch, rebuild on every change (returns the esbuild context). */
+export async function buildDemos(outDir = defaultOutDir, { watch = false } = {}) {
+  mkdirSync(outDir, { recursive: true });
+  copyStatic(outDir);
+  if (!watch) {
+    await build(options(outDir));
+    return null;
+  }
+  const ctx = await context({
+    ...options(outDir),
+    plugins: [
+      ...options(outDir).plugins,
+      { name: 'copy-static', setup: (b) => b.onEnd(() => copyStatic(outDir)) },
+    ],
+  });
+  await ctx.watch();
+  return ctx;
+}
+
+if (import.meta.url === pathToFileURL(process.argv[1] ?? '').href) {
+  const outDir = path.resolve(process.argv[2] ?? defaultOutDir);
+  await buildDemos(outDir);
+  console.log(`Built the testbed into ${path.relative(process.cwd(), outDir) || '.'}`);
+}
