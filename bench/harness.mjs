@@ -32,6 +32,18 @@ export const ENGINES = [webphysics, box2dWasm, box2d3Wasm, rapier, phaserBox2d, 
 export const ENGINE_IDS = ENGINES.map((e) => e.id);
 export { SCENE_IDS };
 export const OURS = 'webphysics';
+/**
+ * `--baseline FILE`: another WebPhysics bundle (for example one built from git HEAD) run as one more
+ * engine, `webphysics-baseline`, with the same adapter, so a change is measured side by side with
+ * the code before it, in the same process and rounds.
+ */
+export const BASELINE = 'webphysics-baseline';
+const baselineAdapter = {
+  ...webphysics,
+  id: BASELINE,
+  name: 'WebPhysics baseline',
+  load: ({ baselineBundle }) => webphysics.load({ oursBundle: baselineBundle }),
+};
 export const RESULTS_SCHEMA = 'webphysics-bench/1';
 
 const list = (v, all, what) => {
@@ -46,9 +58,11 @@ export function resolveOptions(opts = {}) {
   const sleep = opts.sleep ?? 'both';
   if (!['on', 'off', 'both'].includes(sleep)) throw new Error(`sleep must be on, off or both, not "${sleep}"`);
   const quick = Boolean(opts.quick);
+  const engines = list(opts.engines, ENGINE_IDS, 'engine');
+  if (opts.baseline && !engines.includes(BASELINE)) engines.splice(engines.includes(OURS) ? engines.indexOf(OURS) + 1 : 0, 0, BASELINE);
   return {
     scenes: list(opts.scenes, SCENE_IDS, 'scene'),
-    engines: list(opts.engines, ENGINE_IDS, 'engine'),
+    engines,
     sleep,
     quick,
     steps: opts.steps ?? null,
@@ -56,6 +70,7 @@ export function resolveOptions(opts = {}) {
     preroll: opts.preroll ?? null,
     allocSteps: opts.allocSteps ?? null,
     ours: opts.ours ?? null,
+    baseline: opts.baseline ?? null,
     // Quick runs print only, unless told where to write.
     write: opts.write ?? (quick ? Boolean(opts.outDir) : true),
     outDir: opts.outDir ?? path.join(repoRoot, 'bench', 'results'),
@@ -210,10 +225,10 @@ export async function runBench(options = {}) {
 
   const engines = [];
   for (const id of o.engines) {
-    const e = ENGINES.find((x) => x.id === id);
+    const e = id === BASELINE ? baselineAdapter : ENGINES.find((x) => x.id === id);
     try {
       const t = performance.now();
-      const api = await e.load({ oursBundle });
+      const api = await e.load({ oursBundle, baselineBundle: o.baseline });
       engines.push({ e, api, error: null });
       o.log(`loaded ${e.name} ${e.version ?? ''} in ${(performance.now() - t).toFixed(0)} ms`);
     } catch (err) {
@@ -242,6 +257,7 @@ export async function runBench(options = {}) {
       preroll: o.preroll,
       allocSteps: o.allocSteps,
       ours: oursBundle ? (built ? 'built from the working tree (scripts/build.mjs)' : oursBundle) : null,
+      baseline: o.baseline,
     },
     engines: engines.map(({ e, error, api }) => ({
       id: e.id,

@@ -28,6 +28,8 @@ export const USAGE = `usage: node bench/run.mjs [options]   (npm run bench -- [o
   --out DIR        folder for the JSON and SVG files (default bench/results)
   --no-write       print the tables only
   --ours FILE      use this webphysics.mjs bundle instead of building the working tree
+  --baseline FILE  also run this webphysics.mjs bundle (e.g. built from git HEAD) as the engine
+                   webphysics-baseline, side by side with ours
   --json           print the results JSON to stdout (tables go to stderr)
   --list           list scenes and engines
   --markdown [F]   print README tables from results file F (default bench/results/latest.json)
@@ -53,6 +55,7 @@ export async function main(argv = process.argv.slice(2)) {
         out: { type: 'string' },
         'no-write': { type: 'boolean' },
         ours: { type: 'string' },
+        baseline: { type: 'string' },
         json: { type: 'boolean' },
         list: { type: 'boolean' },
         markdown: { type: 'boolean' },
@@ -105,6 +108,7 @@ export async function main(argv = process.argv.slice(2)) {
       outDir: values.out,
       write: values['no-write'] ? false : undefined,
       ours: values.ours,
+      baseline: values.baseline,
       print: values.json ? (s) => process.stderr.write(s + '\n') : undefined,
     });
     if (values.json) process.stdout.write(JSON.stringify(out, null, 1) + '\n');

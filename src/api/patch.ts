@@ -97,17 +97,33 @@ export function removedClass(name: string, instead: string): new (...args: unkno
 
 /**
  * An engine class whose constructor also accepts 2.1a's arguments (`new b2World(gravity, doSleep)`,
- * `new b2CircleShape(radius)`). The proxy forwards everything else to the class, so `instanceof`,
- * statics, prototypes and subclassing are the engine class's own: objects the engine creates
- * itself are instances of it.
+ * `new b2CircleShape(radius)`). The returned constructor shares the class's prototype and inherits
+ * its statics, so `instanceof`, statics, prototypes and subclassing are the engine class's own:
+ * objects the engine creates itself are instances of it.
+ *
+ * A plain function rather than a Proxy: a Proxy's construct trap hands the proxy to the class as
+ * new.target, and V8 then builds every object with a map of its own (no shared hidden class), so
+ * everything that touched those objects went megamorphic and `new` was 100 times slower. Here a
+ * direct `new` constructs the engine class itself (its usual map), and a subclass's super() call
+ * constructs with the subclass as new.target, as `class X extends b2World` expects.
  */
 export function acceptingArguments<C extends abstract new (...args: any) => any>(
   cls: C,
   construct: (args: readonly unknown[], make: (...engineArgs: unknown[]) => InstanceType<C>) => InstanceType<C>,
 ): C {
-  return new Proxy(cls, {
-    construct(target, args, newTarget) {
-      return construct(args, (...engineArgs) => Reflect.construct(target, engineArgs, newTarget));
-    },
-  });
+  const engineClass = cls as unknown as new (...args: unknown[]) => InstanceType<C>;
+  function compat(this: unknown, ...args: unknown[]): InstanceType<C> {
+    const target = new.target;
+    if (target === undefined) {
+      throw new TypeError(`Class constructor ${cls.name} cannot be invoked without 'new'`);
+    }
+    if (target === compat) {
+      return construct(args, (...engineArgs) => new engineClass(...engineArgs));
+    }
+    return construct(args, (...engineArgs) => Reflect.construct(engineClass, engineArgs, target) as InstanceType<C>);
+  }
+  compat.prototype = cls.prototype;
+  Object.setPrototypeOf(compat, cls);
+  Object.defineProperty(compat, 'name', { value: cls.name });
+  return compat as unknown as C;
 }

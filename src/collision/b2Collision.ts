@@ -445,7 +445,7 @@ export class b2AABB {
   /** From Real-time Collision Detection, p179. */
   RayCast(output: b2RayCastOutput, input: Readonly<b2RayCastInput>): boolean {
     let tmin = -b2_maxFloat;
-    let tmax = b2_maxFloat;
+    let tmax = +b2_maxFloat; // unary plus: see docs/PORTING.md, "Allocation-free hot paths"
 
     const px = input.p1.x;
     const py = input.p1.y;

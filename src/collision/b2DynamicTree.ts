@@ -86,7 +86,6 @@ function b2ReleaseTraversal(): void {
 }
 
 const s_combinedAABB = new b2AABB();
-const s_childAABB = new b2AABB();
 const s_r = new b2Vec2();
 const s_v = new b2Vec2();
 const s_absV = new b2Vec2();
@@ -436,18 +435,31 @@ export class b2DynamicTree {
     }
 
     // Find the best sibling for this node. The leaf's AABB does not change during insertion,
-    // so it is read in place where the C++ copies it.
+    // so it is read in place where the C++ copies it. The AABB combinations and perimeters
+    // (b2AABB.Combine2 with b2Min/b2Max's ternaries, GetPerimeter) are written out on scalars,
+    // the same operations in the same argument order: the loop calls them more often than V8
+    // inlines, and a perimeter returned from a call that is not inlined is a boxed double.
     const leafAABB = nodes[leaf].aabb;
+    const leafLowerX = leafAABB.lowerBound.x;
+    const leafLowerY = leafAABB.lowerBound.y;
+    const leafUpperX = leafAABB.upperBound.x;
+    const leafUpperY = leafAABB.upperBound.y;
     let index = this.m_root;
     while (nodes[index].IsLeaf() === false) {
-      const child1 = nodes[index].child1;
-      const child2 = nodes[index].child2;
+      const node = nodes[index];
+      const child1 = node.child1;
+      const child2 = node.child2;
 
-      const area = nodes[index].aabb.GetPerimeter();
+      const nodeLower = node.aabb.lowerBound;
+      const nodeUpper = node.aabb.upperBound;
+      const area = 2.0 * (nodeUpper.x - nodeLower.x + (nodeUpper.y - nodeLower.y));
 
-      const combinedAABB = s_combinedAABB;
-      combinedAABB.Combine2(nodes[index].aabb, leafAABB);
-      const combinedArea = combinedAABB.GetPerimeter();
+      // combinedAABB.Combine2(nodes[index].aabb, leafAABB)
+      const combinedLowerX = nodeLower.x < leafLowerX ? nodeLower.x : leafLowerX;
+      const combinedLowerY = nodeLower.y < leafLowerY ? nodeLower.y : leafLowerY;
+      const combinedUpperX = nodeUpper.x > leafUpperX ? nodeUpper.x : leafUpperX;
+      const combinedUpperY = nodeUpper.y > leafUpperY ? nodeUpper.y : leafUpperY;
+      const combinedArea = 2.0 * (combinedUpperX - combinedLowerX + (combinedUpperY - combinedLowerY));
 
       // Cost of creating a new parent for this node and the new leaf
       const cost = 2.0 * combinedArea;
@@ -457,30 +469,40 @@ export class b2DynamicTree {
 
       // Cost of descending into child1
       let cost1: number;
-      if (nodes[child1].IsLeaf()) {
-        const aabb = s_childAABB;
-        aabb.Combine2(leafAABB, nodes[child1].aabb);
-        cost1 = aabb.GetPerimeter() + inheritanceCost;
-      } else {
-        const aabb = s_childAABB;
-        aabb.Combine2(leafAABB, nodes[child1].aabb);
-        const oldArea = nodes[child1].aabb.GetPerimeter();
-        const newArea = aabb.GetPerimeter();
-        cost1 = newArea - oldArea + inheritanceCost;
+      {
+        // aabb.Combine2(leafAABB, nodes[child1].aabb)
+        const childLower = nodes[child1].aabb.lowerBound;
+        const childUpper = nodes[child1].aabb.upperBound;
+        const lowerX = leafLowerX < childLower.x ? leafLowerX : childLower.x;
+        const lowerY = leafLowerY < childLower.y ? leafLowerY : childLower.y;
+        const upperX = leafUpperX > childUpper.x ? leafUpperX : childUpper.x;
+        const upperY = leafUpperY > childUpper.y ? leafUpperY : childUpper.y;
+        const newArea = 2.0 * (upperX - lowerX + (upperY - lowerY));
+        if (nodes[child1].IsLeaf()) {
+          cost1 = newArea + inheritanceCost;
+        } else {
+          const oldArea = 2.0 * (childUpper.x - childLower.x + (childUpper.y - childLower.y));
+          cost1 = newArea - oldArea + inheritanceCost;
+        }
       }
 
       // Cost of descending into child2
       let cost2: number;
-      if (nodes[child2].IsLeaf()) {
-        const aabb = s_childAABB;
-        aabb.Combine2(leafAABB, nodes[child2].aabb);
-        cost2 = aabb.GetPerimeter() + inheritanceCost;
-      } else {
-        const aabb = s_childAABB;
-        aabb.Combine2(leafAABB, nodes[child2].aabb);
-        const oldArea = nodes[child2].aabb.GetPerimeter();
-        const newArea = aabb.GetPerimeter();
-        cost2 = newArea - oldArea + inheritanceCost;
+      {
+        // aabb.Combine2(leafAABB, nodes[child2].aabb)
+        const childLower = nodes[child2].aabb.lowerBound;
+        const childUpper = nodes[child2].aabb.upperBound;
+        const lowerX = leafLowerX < childLower.x ? leafLowerX : childLower.x;
+        const lowerY = leafLowerY < childLower.y ? leafLowerY : childLower.y;
+        const upperX = leafUpperX > childUpper.x ? leafUpperX : childUpper.x;
+        const upperY = leafUpperY > childUpper.y ? leafUpperY : childUpper.y;
+        const newArea = 2.0 * (upperX - lowerX + (upperY - lowerY));
+        if (nodes[child2].IsLeaf()) {
+          cost2 = newArea + inheritanceCost;
+        } else {
+          const oldArea = 2.0 * (childUpper.x - childLower.x + (childUpper.y - childLower.y));
+          cost2 = newArea - oldArea + inheritanceCost;
+        }
       }
 
       // Descend according to the minimum cost.
@@ -908,7 +930,7 @@ export class b2DynamicTree {
     }
 
     while (count > 1) {
-      let minCost = b2_maxFloat;
+      let minCost = +b2_maxFloat; // unary plus: see docs/PORTING.md, "Allocation-free hot paths"
       let iMin = -1;
       let jMin = -1;
       for (let i = 0; i < count; ++i) {

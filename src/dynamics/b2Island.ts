@@ -21,8 +21,8 @@ import {
 } from '../common/b2Settings';
 import { b2Timer } from '../common/b2Timer';
 import { b2Body, b2BodyType } from './b2Body';
-import { b2Position, b2SolverData, b2Velocity, type b2Profile, type b2TimeStep } from './b2TimeStep';
-import { b2ContactImpulse, type b2ContactListener } from './b2WorldCallbacks';
+import { b2SolverData, type b2Profile, type b2TimeStep } from './b2TimeStep';
+import { b2ContactImpulse, b2ContactListener } from './b2WorldCallbacks';
 import type { b2Contact } from './contacts/b2Contact';
 import { b2ContactSolver, b2ContactSolverDef, type b2ContactVelocityConstraint } from './contacts/b2ContactSolver';
 import type { b2Joint } from './joints/b2Joint';
@@ -31,13 +31,18 @@ import type { b2Joint } from './joints/b2Joint';
 export class b2Island {
   m_listener: b2ContactListener | null = null;
 
-  // Never replaced: the solver data and the contact solver def share these arrays.
+  // Never replaced: the contact solver def shares these arrays.
   readonly m_bodies: b2Body[] = [];
   readonly m_contacts: b2Contact[] = [];
   readonly m_joints: b2Joint[] = [];
 
-  readonly m_positions: b2Position[] = [];
-  readonly m_velocities: b2Velocity[] = [];
+  /**
+   * The b2Position and b2Velocity records of the island's bodies, three doubles each (see
+   * b2SolverData). Replaced by larger ones when the island grows; the solver data and the contact
+   * solver def are pointed at the new ones.
+   */
+  m_positions = new Float64Array(0);
+  m_velocities = new Float64Array(0);
 
   m_bodyCount = 0;
   m_jointCount = 0;
@@ -54,11 +59,7 @@ export class b2Island {
   private readonly m_impulse = new b2ContactImpulse();
 
   constructor(bodyCapacity: number, contactCapacity: number, jointCapacity: number, listener: b2ContactListener | null) {
-    this.m_solverData.positions = this.m_positions;
-    this.m_solverData.velocities = this.m_velocities;
     this.m_contactSolverDef.contacts = this.m_contacts;
-    this.m_contactSolverDef.positions = this.m_positions;
-    this.m_contactSolverDef.velocities = this.m_velocities;
     this.Initialize(bodyCapacity, contactCapacity, jointCapacity, listener);
   }
 
@@ -76,13 +77,16 @@ export class b2Island {
 
     this.m_listener = listener;
 
-    const length = this.m_positions.length;
+    const length = this.m_positions.length / 3;
     if (length < bodyCapacity) {
+      // Every solve writes the records of its bodies before reading them: nothing to copy.
       const newLength = b2Max(bodyCapacity, 2 * length);
-      for (let i = length; i < newLength; ++i) {
-        this.m_positions.push(new b2Position());
-        this.m_velocities.push(new b2Velocity());
-      }
+      this.m_positions = new Float64Array(3 * newLength);
+      this.m_velocities = new Float64Array(3 * newLength);
+      this.m_solverData.positions = this.m_positions;
+      this.m_solverData.velocities = this.m_velocities;
+      this.m_contactSolverDef.positions = this.m_positions;
+      this.m_contactSolverDef.velocities = this.m_velocities;
     }
   }
 
@@ -135,14 +139,12 @@ export class b2Island {
         w *= b2Clamp(1.0 - h * b.m_angularDamping, 0.0, 1.0);
       }
 
-      const position = positions[i];
-      position.c.x = cx;
-      position.c.y = cy;
-      position.a = a;
-      const velocity = velocities[i];
-      velocity.v.x = vx;
-      velocity.v.y = vy;
-      velocity.w = w;
+      positions[3 * i] = cx;
+      positions[3 * i + 1] = cy;
+      positions[3 * i + 2] = a;
+      velocities[3 * i] = vx;
+      velocities[3 * i + 1] = vy;
+      velocities[3 * i + 2] = w;
     }
 
     timer.Reset();
@@ -176,6 +178,9 @@ export class b2Island {
     }
 
     // Store impulses for warm starting
+    for (let j = 0; j < this.m_jointCount; ++j) {
+      this.m_joints[j].StoreImpulses();
+    }
     contactSolver.StoreImpulses();
     profile.solveVelocity = timer.GetMilliseconds();
 
@@ -206,19 +211,21 @@ export class b2Island {
     // Copy state buffers back to the bodies
     for (let i = 0; i < this.m_bodyCount; ++i) {
       const body = this.m_bodies[i];
-      body.m_sweep.c.Assign(positions[i].c);
-      body.m_sweep.a = positions[i].a;
-      body.m_linearVelocity.Assign(velocities[i].v);
-      body.m_angularVelocity = velocities[i].w;
+      body.m_sweep.c.x = positions[3 * i];
+      body.m_sweep.c.y = positions[3 * i + 1];
+      body.m_sweep.a = positions[3 * i + 2];
+      body.m_linearVelocity.x = velocities[3 * i];
+      body.m_linearVelocity.y = velocities[3 * i + 1];
+      body.m_angularVelocity = velocities[3 * i + 2];
       body.SynchronizeTransform();
     }
 
     profile.solvePosition = timer.GetMilliseconds();
 
-    this.Report(contactSolver.m_velocityConstraints);
+    this.ReportSolver(contactSolver);
 
     if (allowSleep) {
-      let minSleepTime = b2_maxFloat;
+      let minSleepTime = +b2_maxFloat; // unary plus: see docs/PORTING.md, "Allocation-free hot paths"
 
       const linTolSqr = b2_linearSleepTolerance * b2_linearSleepTolerance;
       const angTolSqr = b2_angularSleepTolerance * b2_angularSleepTolerance;
@@ -262,10 +269,12 @@ export class b2Island {
     // Initialize the body state.
     for (let i = 0; i < this.m_bodyCount; ++i) {
       const b = this.m_bodies[i];
-      positions[i].c.Assign(b.m_sweep.c);
-      positions[i].a = b.m_sweep.a;
-      velocities[i].v.Assign(b.m_linearVelocity);
-      velocities[i].w = b.m_angularVelocity;
+      positions[3 * i] = b.m_sweep.c.x;
+      positions[3 * i + 1] = b.m_sweep.c.y;
+      positions[3 * i + 2] = b.m_sweep.a;
+      velocities[3 * i] = b.m_linearVelocity.x;
+      velocities[3 * i + 1] = b.m_linearVelocity.y;
+      velocities[3 * i + 2] = b.m_angularVelocity;
     }
 
     const contactSolver = this.CreateContactSolver(subStep);
@@ -280,11 +289,13 @@ export class b2Island {
 
     // Leap of faith to new safe state.
     const sweepA = this.m_bodies[toiIndexA].m_sweep;
-    sweepA.c0.Assign(positions[toiIndexA].c);
-    sweepA.a0 = positions[toiIndexA].a;
+    sweepA.c0.x = positions[3 * toiIndexA];
+    sweepA.c0.y = positions[3 * toiIndexA + 1];
+    sweepA.a0 = positions[3 * toiIndexA + 2];
     const sweepB = this.m_bodies[toiIndexB].m_sweep;
-    sweepB.c0.Assign(positions[toiIndexB].c);
-    sweepB.a0 = positions[toiIndexB].a;
+    sweepB.c0.x = positions[3 * toiIndexB];
+    sweepB.c0.y = positions[3 * toiIndexB + 1];
+    sweepB.a0 = positions[3 * toiIndexB + 2];
 
     // No warm starting is needed for TOI events because warm
     // starting impulses were applied in the discrete solver.
@@ -303,19 +314,19 @@ export class b2Island {
     // Integrate positions
     for (let i = 0; i < this.m_bodyCount; ++i) {
       this.IntegratePosition(i, h);
-      const position = positions[i];
-      const velocity = velocities[i];
 
       // Sync bodies
       const body = this.m_bodies[i];
-      body.m_sweep.c.Assign(position.c);
-      body.m_sweep.a = position.a;
-      body.m_linearVelocity.Assign(velocity.v);
-      body.m_angularVelocity = velocity.w;
+      body.m_sweep.c.x = positions[3 * i];
+      body.m_sweep.c.y = positions[3 * i + 1];
+      body.m_sweep.a = positions[3 * i + 2];
+      body.m_linearVelocity.x = velocities[3 * i];
+      body.m_linearVelocity.y = velocities[3 * i + 1];
+      body.m_angularVelocity = velocities[3 * i + 2];
       body.SynchronizeTransform();
     }
 
-    this.Report(contactSolver.m_velocityConstraints);
+    this.ReportSolver(contactSolver);
   }
 
   Add(body: b2Body): void {
@@ -357,6 +368,26 @@ export class b2Island {
     }
   }
 
+  /**
+   * Report as the C++ Report(contactSolver.m_velocityConstraints) does, reading the impulses
+   * straight from the solver's constraint records.
+   */
+  private ReportSolver(contactSolver: b2ContactSolver): void {
+    const listener = this.m_listener;
+    // A listener without a PostSolve of its own (the world's default one) would get only calls
+    // to the empty base method: skipping them changes nothing.
+    if (listener === null || listener.PostSolve === b2ContactListener.prototype.PostSolve) {
+      return;
+    }
+
+    const impulse = this.m_impulse;
+    for (let i = 0; i < this.m_contactCount; ++i) {
+      const c = this.m_contacts[i];
+      contactSolver.GetImpulses(i, impulse);
+      listener.PostSolve(c, impulse);
+    }
+  }
+
   /** The C++ constructs a b2ContactSolver here; the island re-initialises its own. */
   private CreateContactSolver(step: Readonly<b2TimeStep>): b2ContactSolver {
     const def = this.m_contactSolverDef;
@@ -371,11 +402,11 @@ export class b2Island {
    * island's buffers.
    */
   private IntegratePosition(i: number, h: number): void {
-    const position = this.m_positions[i];
-    const velocity = this.m_velocities[i];
-    let vx = velocity.v.x;
-    let vy = velocity.v.y;
-    let w = velocity.w;
+    const positions = this.m_positions;
+    const velocities = this.m_velocities;
+    let vx = velocities[3 * i];
+    let vy = velocities[3 * i + 1];
+    let w = velocities[3 * i + 2];
 
     // Check for large velocities
     const translationX = h * vx;
@@ -394,11 +425,11 @@ export class b2Island {
     }
 
     // Integrate
-    position.c.x += h * vx;
-    position.c.y += h * vy;
-    position.a += h * w;
-    velocity.v.x = vx;
-    velocity.v.y = vy;
-    velocity.w = w;
+    positions[3 * i] += h * vx;
+    positions[3 * i + 1] += h * vy;
+    positions[3 * i + 2] += h * w;
+    velocities[3 * i] = vx;
+    velocities[3 * i + 1] = vy;
+    velocities[3 * i + 2] = w;
   }
 }

@@ -60,7 +60,10 @@ export class b2TimeStep {
   }
 }
 
-/** This is an internal structure. */
+/**
+ * This is an internal structure. The solver keeps these as records in a Float64Array (see
+ * b2SolverData); the class remains as the C++ declares it.
+ */
 export class b2Position {
   readonly c = new b2Vec2();
   a = 0.0;
@@ -76,7 +79,10 @@ export class b2Position {
   }
 }
 
-/** This is an internal structure. */
+/**
+ * This is an internal structure. The solver keeps these as records in a Float64Array (see
+ * b2SolverData); the class remains as the C++ declares it.
+ */
 export class b2Velocity {
   readonly v = new b2Vec2();
   w = 0.0;
@@ -93,13 +99,16 @@ export class b2Velocity {
 }
 
 /**
- * Solver Data. `positions` and `velocities` are the island's arrays, shared by reference as the
- * C++ pointers are; `step` is a copy.
+ * Solver Data. The C++'s `b2Position* positions` and `b2Velocity* velocities` are the island's
+ * arrays of those structs; here each is a Float64Array of the same records, three doubles a body
+ * (b2Position: c.x, c.y, a; b2Velocity: v.x, v.y, w), so body i's record starts at 3 * i. Typed
+ * arrays keep the doubles unboxed and together, where b2Position objects would cost four heap
+ * objects a body. They are shared by reference as the C++ pointers are; `step` is a copy.
  */
 export class b2SolverData {
   readonly step = new b2TimeStep();
-  positions: b2Position[] = [];
-  velocities: b2Velocity[] = [];
+  positions = new Float64Array(0);
+  velocities = new Float64Array(0);
 
   Clone(): b2SolverData {
     return new b2SolverData().Assign(this);

@@ -1095,17 +1095,15 @@ export class b2World {
     const island = this.m_island;
     island.Initialize(2 * b2_maxTOIContacts, b2_maxTOIContacts, 0, this.m_contactManager.m_contactListener);
 
+    // The C++ invalidates every contact's TOI here, in a loop of its own over the contact list,
+    // when the step is complete. The first search below walks the whole list and reads nothing
+    // of a contact before reaching it, so the invalidation is done there, contact by contact:
+    // one pass over the contacts instead of two, the same state.
+    let invalidateTOI = this.m_stepComplete;
     if (this.m_stepComplete) {
       for (let b = this.m_bodyList; b; b = b.m_next) {
         b.m_flags &= ~b2Body.e_islandFlag;
         b.m_sweep.alpha0 = 0.0;
-      }
-
-      for (let c = this.m_contactManager.m_contactList; c; c = c.m_next) {
-        // Invalidate TOI
-        c.m_flags &= ~(b2Contact.e_toiFlag | b2Contact.e_islandFlag);
-        c.m_toiCount = 0;
-        c.m_toi = 1.0;
       }
     }
 
@@ -1123,6 +1121,13 @@ export class b2World {
       let minAlpha = 1.0;
 
       for (let c = this.m_contactManager.m_contactList; c; c = c.m_next) {
+        if (invalidateTOI) {
+          // Invalidate TOI
+          c.m_flags &= ~(b2Contact.e_toiFlag | b2Contact.e_islandFlag);
+          c.m_toiCount = 0;
+          c.m_toi = 1.0;
+        }
+
         // Is this contact disabled?
         if (c.IsEnabled() === false) {
           continue;
@@ -1213,6 +1218,7 @@ export class b2World {
           minAlpha = alpha;
         }
       }
+      invalidateTOI = false;
 
       if (minContact === null || 1.0 - 10.0 * b2_epsilon < minAlpha) {
         // No more TOI events. Done!

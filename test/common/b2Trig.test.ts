@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { b2Atan2, b2Cos, b2Sin } from '../../src/common/b2Trig';
+import { b2Atan2, b2Cos, b2Sin, b2SinCos, b2SinCosArg } from '../../src/common/b2Trig';
 
 // A seeded generator so a failure names an input that can be replayed.
 function mulberry32(seed: number): () => number {
@@ -81,6 +81,29 @@ describe('b2Sin and b2Cos reproduce fdlibm (Math.sin/Math.cos in Node 20)', () =
     expect(firstMismatch(b2Cos, Math.cos, specialInputs())).toBeNull();
     expect(Object.is(b2Sin(-0), -0)).toBe(true);
     expect(Number.isNaN(b2Cos(Infinity))).toBe(true);
+  });
+});
+
+describe('b2SinCos (b2Rot.Set) is b2Sin and b2Cos computed together', () => {
+  function* allInputs(): Generator<number> {
+    yield* specialInputs();
+    yield* randomInputs(11, 300_000, 8 * Math.PI);
+    yield* randomInputs(12, 50_000, 1e6);
+    yield* randomInputs(13, 50_000, 1e300);
+  }
+
+  it('gives the same bits as b2Sin and b2Cos on special, random and huge angles', () => {
+    const rot = { s: 0.0, c: 1.0 };
+    let mismatch: string | null = null;
+    for (const x of allInputs()) {
+      b2SinCosArg[0] = x;
+      b2SinCos(rot);
+      if (!Object.is(rot.s, b2Sin(x)) || !Object.is(rot.c, b2Cos(x))) {
+        mismatch = `x=${x}: got (${rot.s}, ${rot.c}), expected (${b2Sin(x)}, ${b2Cos(x)})`;
+        break;
+      }
+    }
+    expect(mismatch).toBeNull();
   });
 });
 

@@ -365,7 +365,7 @@ export function checkWorldInvariants(world: b2World): string[] {
 export function poolSizes(world: b2World): Record<string, number> {
   const bp = world.m_contactManager.m_broadPhase;
   const w = world as unknown as {
-    m_island: { m_bodyCapacity: number; m_contactCapacity: number; m_jointCapacity: number; m_bodies: unknown[]; m_contacts: unknown[]; m_joints: unknown[]; m_positions: unknown[]; m_velocities: unknown[] };
+    m_island: { m_bodyCapacity: number; m_contactCapacity: number; m_jointCapacity: number; m_bodies: unknown[]; m_contacts: unknown[]; m_joints: unknown[]; m_positions: Float64Array; m_velocities: Float64Array };
     m_stack: unknown[];
     m_queryWrappers: unknown[];
     m_rayCastWrappers: unknown[];
@@ -380,8 +380,9 @@ export function poolSizes(world: b2World): Record<string, number> {
     islandBodies: island.m_bodies.length,
     islandContacts: island.m_contacts.length,
     islandJoints: island.m_joints.length,
-    islandPositions: island.m_positions.length,
-    islandVelocities: island.m_velocities.length,
+    // records of three doubles a body (see b2SolverData)
+    islandPositions: island.m_positions.length / 3,
+    islandVelocities: island.m_velocities.length / 3,
     stack: w.m_stack.length,
     queryWrappers: w.m_queryWrappers.length,
     rayCastWrappers: w.m_rayCastWrappers.length,

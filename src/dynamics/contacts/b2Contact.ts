@@ -14,7 +14,7 @@ import type { b2Transform } from '../../common/b2Math';
 import { b2Assert } from '../../common/b2Settings';
 import type { b2Body } from '../b2Body';
 import type { b2Fixture } from '../b2Fixture';
-import type { b2ContactListener } from '../b2WorldCallbacks';
+import { b2ContactListener } from '../b2WorldCallbacks';
 
 /**
  * Friction mixing law. The idea is to allow either fixture to drive the restitution to zero.
@@ -330,7 +330,33 @@ export abstract class b2Contact {
    * Note: do not assume the fixture AABBs are overlapping or are valid.
    */
   Update(listener: b2ContactListener | null): void {
-    const oldManifold = s_oldManifold.Assign(this.m_manifold);
+    const manifold = this.m_manifold;
+
+    // The C++ copies the whole manifold (oldManifold) for PreSolve and for matching the new
+    // points to the old. Only a listener with a PreSolve of its own can see the copy, so it is
+    // made only then; the matching reads the old ids and impulses, kept here in locals.
+    if (listener !== null && listener.PreSolve !== b2ContactListener.prototype.PreSolve) {
+      s_oldManifold.Assign(manifold);
+    }
+    const oldPointCount = manifold.pointCount;
+    let oldKey0 = 0;
+    let oldNormalImpulse0 = 0.0;
+    let oldTangentImpulse0 = 0.0;
+    let oldKey1 = 0;
+    let oldNormalImpulse1 = 0.0;
+    let oldTangentImpulse1 = 0.0;
+    if (oldPointCount > 0) {
+      const mp1 = manifold.points[0];
+      oldKey0 = mp1.id.key;
+      oldNormalImpulse0 = mp1.normalImpulse;
+      oldTangentImpulse0 = mp1.tangentImpulse;
+      if (oldPointCount > 1) {
+        const mp2 = manifold.points[1];
+        oldKey1 = mp2.id.key;
+        oldNormalImpulse1 = mp2.normalImpulse;
+        oldTangentImpulse1 = mp2.tangentImpulse;
+      }
+    }
 
     // Re-enable this contact.
     this.m_flags |= b2Contact.e_enabledFlag;
@@ -354,27 +380,26 @@ export abstract class b2Contact {
       touching = b2TestOverlapShapes(shapeA, this.m_indexA, shapeB, this.m_indexB, xfA, xfB);
 
       // Sensors don't generate manifolds.
-      this.m_manifold.pointCount = 0;
+      manifold.pointCount = 0;
     } else {
-      this.Evaluate(this.m_manifold, xfA, xfB);
-      touching = this.m_manifold.pointCount > 0;
+      this.Evaluate(manifold, xfA, xfB);
+      touching = manifold.pointCount > 0;
 
       // Match old contact ids to new contact ids and copy the
       // stored impulses to warm start the solver.
-      for (let i = 0; i < this.m_manifold.pointCount; ++i) {
-        const mp2 = this.m_manifold.points[i];
+      for (let i = 0; i < manifold.pointCount; ++i) {
+        const mp2 = manifold.points[i];
         mp2.normalImpulse = 0.0;
         mp2.tangentImpulse = 0.0;
         const key2 = mp2.id.key;
 
-        for (let j = 0; j < oldManifold.pointCount; ++j) {
-          const mp1 = oldManifold.points[j];
-
-          if (mp1.id.key === key2) {
-            mp2.normalImpulse = mp1.normalImpulse;
-            mp2.tangentImpulse = mp1.tangentImpulse;
-            break;
-          }
+        // for (j = 0; j < oldManifold.pointCount; ++j): the first old point with this key.
+        if (oldPointCount > 0 && oldKey0 === key2) {
+          mp2.normalImpulse = oldNormalImpulse0;
+          mp2.tangentImpulse = oldTangentImpulse0;
+        } else if (oldPointCount > 1 && oldKey1 === key2) {
+          mp2.normalImpulse = oldNormalImpulse1;
+          mp2.tangentImpulse = oldTangentImpulse1;
         }
       }
 
@@ -399,7 +424,7 @@ export abstract class b2Contact {
     }
 
     if (sensor === false && touching && listener) {
-      listener.PreSolve(this, oldManifold);
+      listener.PreSolve(this, s_oldManifold);
     }
   }
 }

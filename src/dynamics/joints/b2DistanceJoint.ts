@@ -120,28 +120,30 @@ export class b2DistanceJoint extends b2Joint {
     this.m_invIA = bA.m_invI;
     this.m_invIB = bB.m_invI;
 
-    const posA = data.positions[this.m_indexA];
-    const velA = data.velocities[this.m_indexA];
-    const cA = posA.c;
-    const aA = posA.a;
-    let vAx = velA.v.x;
-    let vAy = velA.v.y;
-    let wA = velA.w;
+    const oA = 3 * this.m_indexA;
+    const positions = data.positions;
+    const velocities = data.velocities;
+    const cAx = positions[oA];
+    const cAy = positions[oA + 1];
+    const aA = positions[oA + 2];
+    let vAx = velocities[oA];
+    let vAy = velocities[oA + 1];
+    let wA = velocities[oA + 2];
 
-    const posB = data.positions[this.m_indexB];
-    const velB = data.velocities[this.m_indexB];
-    const cB = posB.c;
-    const aB = posB.a;
-    let vBx = velB.v.x;
-    let vBy = velB.v.y;
-    let wB = velB.w;
+    const oB = 3 * this.m_indexB;
+    const cBx = positions[oB];
+    const cBy = positions[oB + 1];
+    const aB = positions[oB + 2];
+    let vBx = velocities[oB];
+    let vBy = velocities[oB + 1];
+    let wB = velocities[oB + 2];
 
     const qA = s_qA.Set(aA);
     const qB = s_qB.Set(aB);
 
     const rA = b2MulRV(qA, b2SubVV(this.m_localAnchorA, this.m_localCenterA, this.m_rA), this.m_rA);
     const rB = b2MulRV(qB, b2SubVV(this.m_localAnchorB, this.m_localCenterB, this.m_rB), this.m_rB);
-    const u = this.m_u.Set(cB.x + rB.x - cA.x - rA.x, cB.y + rB.y - cA.y - rA.y);
+    const u = this.m_u.Set(cBx + rB.x - cAx - rA.x, cBy + rB.y - cAy - rA.y);
 
     // Handle singularity.
     const length = u.Length();
@@ -199,23 +201,24 @@ export class b2DistanceJoint extends b2Joint {
       this.m_impulse = 0.0;
     }
 
-    velA.v.x = vAx;
-    velA.v.y = vAy;
-    velA.w = wA;
-    velB.v.x = vBx;
-    velB.v.y = vBy;
-    velB.w = wB;
+    velocities[oA] = vAx;
+    velocities[oA + 1] = vAy;
+    velocities[oA + 2] = wA;
+    velocities[oB] = vBx;
+    velocities[oB + 1] = vBy;
+    velocities[oB + 2] = wB;
   }
 
   override SolveVelocityConstraints(data: b2SolverData): void {
-    const velA = data.velocities[this.m_indexA];
-    const velB = data.velocities[this.m_indexB];
-    let vAx = velA.v.x;
-    let vAy = velA.v.y;
-    let wA = velA.w;
-    let vBx = velB.v.x;
-    let vBy = velB.v.y;
-    let wB = velB.w;
+    const oA = 3 * this.m_indexA;
+    const velocities = data.velocities;
+    const oB = 3 * this.m_indexB;
+    let vAx = velocities[oA];
+    let vAy = velocities[oA + 1];
+    let wA = velocities[oA + 2];
+    let vBx = velocities[oB];
+    let vBy = velocities[oB + 1];
+    let wB = velocities[oB + 2];
 
     const rA = this.m_rA;
     const rB = this.m_rB;
@@ -240,12 +243,12 @@ export class b2DistanceJoint extends b2Joint {
     vBy += this.m_invMassB * Py;
     wB += this.m_invIB * (rB.x * Py - rB.y * Px);
 
-    velA.v.x = vAx;
-    velA.v.y = vAy;
-    velA.w = wA;
-    velB.v.x = vBx;
-    velB.v.y = vBy;
-    velB.w = wB;
+    velocities[oA] = vAx;
+    velocities[oA + 1] = vAy;
+    velocities[oA + 2] = wA;
+    velocities[oB] = vBx;
+    velocities[oB + 1] = vBy;
+    velocities[oB + 2] = wB;
   }
 
   override SolvePositionConstraints(data: b2SolverData): boolean {
@@ -254,14 +257,15 @@ export class b2DistanceJoint extends b2Joint {
       return true;
     }
 
-    const posA = data.positions[this.m_indexA];
-    const posB = data.positions[this.m_indexB];
-    let cAx = posA.c.x;
-    let cAy = posA.c.y;
-    let aA = posA.a;
-    let cBx = posB.c.x;
-    let cBy = posB.c.y;
-    let aB = posB.a;
+    const oA = 3 * this.m_indexA;
+    const positions = data.positions;
+    const oB = 3 * this.m_indexB;
+    let cAx = positions[oA];
+    let cAy = positions[oA + 1];
+    let aA = positions[oA + 2];
+    let cBx = positions[oB];
+    let cBy = positions[oB + 1];
+    let aB = positions[oB + 2];
 
     const qA = s_qA.Set(aA);
     const qB = s_qB.Set(aB);
@@ -285,12 +289,12 @@ export class b2DistanceJoint extends b2Joint {
     cBy += this.m_invMassB * Py;
     aB += this.m_invIB * (rB.x * Py - rB.y * Px);
 
-    posA.c.x = cAx;
-    posA.c.y = cAy;
-    posA.a = aA;
-    posB.c.x = cBx;
-    posB.c.y = cBy;
-    posB.a = aB;
+    positions[oA] = cAx;
+    positions[oA + 1] = cAy;
+    positions[oA + 2] = aA;
+    positions[oB] = cBx;
+    positions[oB + 1] = cBy;
+    positions[oB + 2] = aB;
 
     return b2Abs(C) < b2_linearSlop;
   }

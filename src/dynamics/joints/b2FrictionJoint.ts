@@ -101,17 +101,18 @@ export class b2FrictionJoint extends b2Joint {
     this.m_invIA = bA.m_invI;
     this.m_invIB = bB.m_invI;
 
-    const aA = data.positions[this.m_indexA].a;
-    const velA = data.velocities[this.m_indexA];
-    let vAx = velA.v.x;
-    let vAy = velA.v.y;
-    let wA = velA.w;
+    const oA = 3 * this.m_indexA;
+    const aA = data.positions[oA + 2];
+    const velocities = data.velocities;
+    let vAx = velocities[oA];
+    let vAy = velocities[oA + 1];
+    let wA = velocities[oA + 2];
 
-    const aB = data.positions[this.m_indexB].a;
-    const velB = data.velocities[this.m_indexB];
-    let vBx = velB.v.x;
-    let vBy = velB.v.y;
-    let wB = velB.w;
+    const oB = 3 * this.m_indexB;
+    const aB = data.positions[oB + 2];
+    let vBx = velocities[oB];
+    let vBy = velocities[oB + 1];
+    let wB = velocities[oB + 2];
 
     const qA = s_qA.Set(aA);
     const qB = s_qB.Set(aB);
@@ -165,23 +166,24 @@ export class b2FrictionJoint extends b2Joint {
       this.m_angularImpulse = 0.0;
     }
 
-    velA.v.x = vAx;
-    velA.v.y = vAy;
-    velA.w = wA;
-    velB.v.x = vBx;
-    velB.v.y = vBy;
-    velB.w = wB;
+    velocities[oA] = vAx;
+    velocities[oA + 1] = vAy;
+    velocities[oA + 2] = wA;
+    velocities[oB] = vBx;
+    velocities[oB + 1] = vBy;
+    velocities[oB + 2] = wB;
   }
 
   override SolveVelocityConstraints(data: b2SolverData): void {
-    const velA = data.velocities[this.m_indexA];
-    const velB = data.velocities[this.m_indexB];
-    let vAx = velA.v.x;
-    let vAy = velA.v.y;
-    let wA = velA.w;
-    let vBx = velB.v.x;
-    let vBy = velB.v.y;
-    let wB = velB.w;
+    const oA = 3 * this.m_indexA;
+    const velocities = data.velocities;
+    const oB = 3 * this.m_indexB;
+    let vAx = velocities[oA];
+    let vAy = velocities[oA + 1];
+    let wA = velocities[oA + 2];
+    let vBx = velocities[oB];
+    let vBy = velocities[oB + 1];
+    let wB = velocities[oB + 2];
 
     const mA = this.m_invMassA;
     const mB = this.m_invMassB;
@@ -236,12 +238,12 @@ export class b2FrictionJoint extends b2Joint {
       wB += iB * (rB.x * impulse.y - rB.y * impulse.x);
     }
 
-    velA.v.x = vAx;
-    velA.v.y = vAy;
-    velA.w = wA;
-    velB.v.x = vBx;
-    velB.v.y = vBy;
-    velB.w = wB;
+    velocities[oA] = vAx;
+    velocities[oA + 1] = vAy;
+    velocities[oA + 2] = wA;
+    velocities[oB] = vBx;
+    velocities[oB + 1] = vBy;
+    velocities[oB + 2] = wB;
   }
 
   override SolvePositionConstraints(data: b2SolverData): boolean {

@@ -238,29 +238,30 @@ export class b2GearJoint extends b2Joint {
     this.m_iC = bC.m_invI;
     this.m_iD = bD.m_invI;
 
-    const aA = data.positions[this.m_indexA].a;
-    const velA = data.velocities[this.m_indexA];
-    let vAx = velA.v.x;
-    let vAy = velA.v.y;
-    let wA = velA.w;
+    const oA = 3 * this.m_indexA;
+    const aA = data.positions[oA + 2];
+    const velocities = data.velocities;
+    let vAx = velocities[oA];
+    let vAy = velocities[oA + 1];
+    let wA = velocities[oA + 2];
 
-    const aB = data.positions[this.m_indexB].a;
-    const velB = data.velocities[this.m_indexB];
-    let vBx = velB.v.x;
-    let vBy = velB.v.y;
-    let wB = velB.w;
+    const oB = 3 * this.m_indexB;
+    const aB = data.positions[oB + 2];
+    let vBx = velocities[oB];
+    let vBy = velocities[oB + 1];
+    let wB = velocities[oB + 2];
 
-    const aC = data.positions[this.m_indexC].a;
-    const velC = data.velocities[this.m_indexC];
-    let vCx = velC.v.x;
-    let vCy = velC.v.y;
-    let wC = velC.w;
+    const oC = 3 * this.m_indexC;
+    const aC = data.positions[oC + 2];
+    let vCx = velocities[oC];
+    let vCy = velocities[oC + 1];
+    let wC = velocities[oC + 2];
 
-    const aD = data.positions[this.m_indexD].a;
-    const velD = data.velocities[this.m_indexD];
-    let vDx = velD.v.x;
-    let vDy = velD.v.y;
-    let wD = velD.w;
+    const oD = 3 * this.m_indexD;
+    const aD = data.positions[oD + 2];
+    let vDx = velocities[oD];
+    let vDy = velocities[oD + 1];
+    let wD = velocities[oD + 2];
 
     this.m_mass = 0.0;
 
@@ -328,37 +329,38 @@ export class b2GearJoint extends b2Joint {
       this.m_impulse = 0.0;
     }
 
-    velA.v.x = vAx;
-    velA.v.y = vAy;
-    velA.w = wA;
-    velB.v.x = vBx;
-    velB.v.y = vBy;
-    velB.w = wB;
-    velC.v.x = vCx;
-    velC.v.y = vCy;
-    velC.w = wC;
-    velD.v.x = vDx;
-    velD.v.y = vDy;
-    velD.w = wD;
+    velocities[oA] = vAx;
+    velocities[oA + 1] = vAy;
+    velocities[oA + 2] = wA;
+    velocities[oB] = vBx;
+    velocities[oB + 1] = vBy;
+    velocities[oB + 2] = wB;
+    velocities[oC] = vCx;
+    velocities[oC + 1] = vCy;
+    velocities[oC + 2] = wC;
+    velocities[oD] = vDx;
+    velocities[oD + 1] = vDy;
+    velocities[oD + 2] = wD;
   }
 
   override SolveVelocityConstraints(data: b2SolverData): void {
-    const velA = data.velocities[this.m_indexA];
-    const velB = data.velocities[this.m_indexB];
-    const velC = data.velocities[this.m_indexC];
-    const velD = data.velocities[this.m_indexD];
-    let vAx = velA.v.x;
-    let vAy = velA.v.y;
-    let wA = velA.w;
-    let vBx = velB.v.x;
-    let vBy = velB.v.y;
-    let wB = velB.w;
-    let vCx = velC.v.x;
-    let vCy = velC.v.y;
-    let wC = velC.w;
-    let vDx = velD.v.x;
-    let vDy = velD.v.y;
-    let wD = velD.w;
+    const oA = 3 * this.m_indexA;
+    const velocities = data.velocities;
+    const oB = 3 * this.m_indexB;
+    const oC = 3 * this.m_indexC;
+    const oD = 3 * this.m_indexD;
+    let vAx = velocities[oA];
+    let vAy = velocities[oA + 1];
+    let wA = velocities[oA + 2];
+    let vBx = velocities[oB];
+    let vBy = velocities[oB + 1];
+    let wB = velocities[oB + 2];
+    let vCx = velocities[oC];
+    let vCy = velocities[oC + 1];
+    let wC = velocities[oC + 2];
+    let vDx = velocities[oD];
+    let vDy = velocities[oD + 1];
+    let wD = velocities[oD + 2];
 
     const JvAC = this.m_JvAC;
     const JvBD = this.m_JvBD;
@@ -386,37 +388,38 @@ export class b2GearJoint extends b2Joint {
     vDy -= sD * JvBD.y;
     wD -= this.m_iD * impulse * this.m_JwD;
 
-    velA.v.x = vAx;
-    velA.v.y = vAy;
-    velA.w = wA;
-    velB.v.x = vBx;
-    velB.v.y = vBy;
-    velB.w = wB;
-    velC.v.x = vCx;
-    velC.v.y = vCy;
-    velC.w = wC;
-    velD.v.x = vDx;
-    velD.v.y = vDy;
-    velD.w = wD;
+    velocities[oA] = vAx;
+    velocities[oA + 1] = vAy;
+    velocities[oA + 2] = wA;
+    velocities[oB] = vBx;
+    velocities[oB + 1] = vBy;
+    velocities[oB + 2] = wB;
+    velocities[oC] = vCx;
+    velocities[oC + 1] = vCy;
+    velocities[oC + 2] = wC;
+    velocities[oD] = vDx;
+    velocities[oD + 1] = vDy;
+    velocities[oD + 2] = wD;
   }
 
   override SolvePositionConstraints(data: b2SolverData): boolean {
-    const posA = data.positions[this.m_indexA];
-    const posB = data.positions[this.m_indexB];
-    const posC = data.positions[this.m_indexC];
-    const posD = data.positions[this.m_indexD];
-    let cAx = posA.c.x;
-    let cAy = posA.c.y;
-    let aA = posA.a;
-    let cBx = posB.c.x;
-    let cBy = posB.c.y;
-    let aB = posB.a;
-    let cCx = posC.c.x;
-    let cCy = posC.c.y;
-    let aC = posC.a;
-    let cDx = posD.c.x;
-    let cDy = posD.c.y;
-    let aD = posD.a;
+    const oA = 3 * this.m_indexA;
+    const positions = data.positions;
+    const oB = 3 * this.m_indexB;
+    const oC = 3 * this.m_indexC;
+    const oD = 3 * this.m_indexD;
+    let cAx = positions[oA];
+    let cAy = positions[oA + 1];
+    let aA = positions[oA + 2];
+    let cBx = positions[oB];
+    let cBy = positions[oB + 1];
+    let aB = positions[oB + 2];
+    let cCx = positions[oC];
+    let cCy = positions[oC + 1];
+    let aC = positions[oC + 2];
+    let cDx = positions[oD];
+    let cDy = positions[oD + 1];
+    let aD = positions[oD + 2];
 
     const linearError = 0.0;
 
@@ -503,18 +506,18 @@ export class b2GearJoint extends b2Joint {
     cDy -= sD * JvBD.y;
     aD -= this.m_iD * impulse * JwD;
 
-    posA.c.x = cAx;
-    posA.c.y = cAy;
-    posA.a = aA;
-    posB.c.x = cBx;
-    posB.c.y = cBy;
-    posB.a = aB;
-    posC.c.x = cCx;
-    posC.c.y = cCy;
-    posC.a = aC;
-    posD.c.x = cDx;
-    posD.c.y = cDy;
-    posD.a = aD;
+    positions[oA] = cAx;
+    positions[oA + 1] = cAy;
+    positions[oA + 2] = aA;
+    positions[oB] = cBx;
+    positions[oB + 1] = cBy;
+    positions[oB + 2] = aB;
+    positions[oC] = cCx;
+    positions[oC + 1] = cCy;
+    positions[oC + 2] = aC;
+    positions[oD] = cDx;
+    positions[oD + 1] = cDy;
+    positions[oD + 2] = aD;
 
     // 2.2.1 never measures the gear's position error, so the gear always reports success.
     return linearError < b2_linearSlop;

@@ -210,6 +210,14 @@ export abstract class b2Joint {
   abstract InitVelocityConstraints(data: b2SolverData): void;
   abstract SolveVelocityConstraints(data: b2SolverData): void;
 
+  /**
+   * Not in the C++: b2Island.Solve calls this for every joint after the velocity iterations.
+   * A joint whose solver accumulates its impulses in a record of its own (b2RevoluteJoint) writes
+   * them back to its fields here, where the C++ would have had them all along; nothing reads them
+   * in between. The others have nothing to do.
+   */
+  StoreImpulses(): void {}
+
   /** This returns true if the position errors are within tolerance. */
   abstract SolvePositionConstraints(data: b2SolverData): boolean;
 }

@@ -143,13 +143,15 @@ export class b2MouseJoint extends b2Joint {
     this.m_invMassB = bB.m_invMass;
     this.m_invIB = bB.m_invI;
 
-    const posB = data.positions[this.m_indexB];
-    const velB = data.velocities[this.m_indexB];
-    const cB = posB.c;
-    const aB = posB.a;
-    let vBx = velB.v.x;
-    let vBy = velB.v.y;
-    let wB = velB.w;
+    const oB = 3 * this.m_indexB;
+    const positions = data.positions;
+    const velocities = data.velocities;
+    const cBx = positions[oB];
+    const cBy = positions[oB + 1];
+    const aB = positions[oB + 2];
+    let vBx = velocities[oB];
+    let vBy = velocities[oB + 1];
+    let wB = velocities[oB + 2];
 
     const qB = s_qB.Set(aB);
 
@@ -189,7 +191,7 @@ export class b2MouseJoint extends b2Joint {
 
     K.GetInverse(this.m_mass);
 
-    this.m_C.Set(cB.x + rB.x - this.m_targetA.x, cB.y + rB.y - this.m_targetA.y);
+    this.m_C.Set(cBx + rB.x - this.m_targetA.x, cBy + rB.y - this.m_targetA.y);
     this.m_C.Multiply(this.m_beta);
 
     // Cheat with some damping
@@ -204,16 +206,17 @@ export class b2MouseJoint extends b2Joint {
       this.m_impulse.SetZero();
     }
 
-    velB.v.x = vBx;
-    velB.v.y = vBy;
-    velB.w = wB;
+    velocities[oB] = vBx;
+    velocities[oB + 1] = vBy;
+    velocities[oB + 2] = wB;
   }
 
   override SolveVelocityConstraints(data: b2SolverData): void {
-    const velB = data.velocities[this.m_indexB];
-    let vBx = velB.v.x;
-    let vBy = velB.v.y;
-    let wB = velB.w;
+    const oB = 3 * this.m_indexB;
+    const velocities = data.velocities;
+    let vBx = velocities[oB];
+    let vBy = velocities[oB + 1];
+    let wB = velocities[oB + 2];
 
     const rB = this.m_rB;
 
@@ -240,9 +243,9 @@ export class b2MouseJoint extends b2Joint {
     vBy += this.m_invMassB * impulse.y;
     wB += this.m_invIB * (rB.x * impulse.y - rB.y * impulse.x);
 
-    velB.v.x = vBx;
-    velB.v.y = vBy;
-    velB.w = wB;
+    velocities[oB] = vBx;
+    velocities[oB + 1] = vBy;
+    velocities[oB + 2] = wB;
   }
 
   override SolvePositionConstraints(data: b2SolverData): boolean {

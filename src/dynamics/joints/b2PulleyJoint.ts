@@ -148,21 +148,23 @@ export class b2PulleyJoint extends b2Joint {
     this.m_invIA = bA.m_invI;
     this.m_invIB = bB.m_invI;
 
-    const posA = data.positions[this.m_indexA];
-    const velA = data.velocities[this.m_indexA];
-    const cA = posA.c;
-    const aA = posA.a;
-    let vAx = velA.v.x;
-    let vAy = velA.v.y;
-    let wA = velA.w;
+    const oA = 3 * this.m_indexA;
+    const positions = data.positions;
+    const velocities = data.velocities;
+    const cAx = positions[oA];
+    const cAy = positions[oA + 1];
+    const aA = positions[oA + 2];
+    let vAx = velocities[oA];
+    let vAy = velocities[oA + 1];
+    let wA = velocities[oA + 2];
 
-    const posB = data.positions[this.m_indexB];
-    const velB = data.velocities[this.m_indexB];
-    const cB = posB.c;
-    const aB = posB.a;
-    let vBx = velB.v.x;
-    let vBy = velB.v.y;
-    let wB = velB.w;
+    const oB = 3 * this.m_indexB;
+    const cBx = positions[oB];
+    const cBy = positions[oB + 1];
+    const aB = positions[oB + 2];
+    let vBx = velocities[oB];
+    let vBy = velocities[oB + 1];
+    let wB = velocities[oB + 2];
 
     const qA = s_qA.Set(aA);
     const qB = s_qB.Set(aB);
@@ -171,8 +173,8 @@ export class b2PulleyJoint extends b2Joint {
     const rB = b2MulRV(qB, b2SubVV(this.m_localAnchorB, this.m_localCenterB, this.m_rB), this.m_rB);
 
     // Get the pulley axes.
-    const uA = this.m_uA.Set(cA.x + rA.x - this.m_groundAnchorA.x, cA.y + rA.y - this.m_groundAnchorA.y);
-    const uB = this.m_uB.Set(cB.x + rB.x - this.m_groundAnchorB.x, cB.y + rB.y - this.m_groundAnchorB.y);
+    const uA = this.m_uA.Set(cAx + rA.x - this.m_groundAnchorA.x, cAy + rA.y - this.m_groundAnchorA.y);
+    const uB = this.m_uB.Set(cBx + rB.x - this.m_groundAnchorB.x, cBy + rB.y - this.m_groundAnchorB.y);
 
     const lengthA = uA.Length();
     const lengthB = uB.Length();
@@ -224,23 +226,24 @@ export class b2PulleyJoint extends b2Joint {
       this.m_impulse = 0.0;
     }
 
-    velA.v.x = vAx;
-    velA.v.y = vAy;
-    velA.w = wA;
-    velB.v.x = vBx;
-    velB.v.y = vBy;
-    velB.w = wB;
+    velocities[oA] = vAx;
+    velocities[oA + 1] = vAy;
+    velocities[oA + 2] = wA;
+    velocities[oB] = vBx;
+    velocities[oB + 1] = vBy;
+    velocities[oB + 2] = wB;
   }
 
   override SolveVelocityConstraints(data: b2SolverData): void {
-    const velA = data.velocities[this.m_indexA];
-    const velB = data.velocities[this.m_indexB];
-    let vAx = velA.v.x;
-    let vAy = velA.v.y;
-    let wA = velA.w;
-    let vBx = velB.v.x;
-    let vBy = velB.v.y;
-    let wB = velB.w;
+    const oA = 3 * this.m_indexA;
+    const velocities = data.velocities;
+    const oB = 3 * this.m_indexB;
+    let vAx = velocities[oA];
+    let vAy = velocities[oA + 1];
+    let wA = velocities[oA + 2];
+    let vBx = velocities[oB];
+    let vBy = velocities[oB + 1];
+    let wB = velocities[oB + 2];
 
     const rA = this.m_rA;
     const rB = this.m_rB;
@@ -269,23 +272,24 @@ export class b2PulleyJoint extends b2Joint {
     vBy += this.m_invMassB * PBy;
     wB += this.m_invIB * (rB.x * PBy - rB.y * PBx);
 
-    velA.v.x = vAx;
-    velA.v.y = vAy;
-    velA.w = wA;
-    velB.v.x = vBx;
-    velB.v.y = vBy;
-    velB.w = wB;
+    velocities[oA] = vAx;
+    velocities[oA + 1] = vAy;
+    velocities[oA + 2] = wA;
+    velocities[oB] = vBx;
+    velocities[oB + 1] = vBy;
+    velocities[oB + 2] = wB;
   }
 
   override SolvePositionConstraints(data: b2SolverData): boolean {
-    const posA = data.positions[this.m_indexA];
-    const posB = data.positions[this.m_indexB];
-    let cAx = posA.c.x;
-    let cAy = posA.c.y;
-    let aA = posA.a;
-    let cBx = posB.c.x;
-    let cBy = posB.c.y;
-    let aB = posB.a;
+    const oA = 3 * this.m_indexA;
+    const positions = data.positions;
+    const oB = 3 * this.m_indexB;
+    let cAx = positions[oA];
+    let cAy = positions[oA + 1];
+    let aA = positions[oA + 2];
+    let cBx = positions[oB];
+    let cBy = positions[oB + 1];
+    let aB = positions[oB + 2];
 
     const qA = s_qA.Set(aA);
     const qB = s_qB.Set(aB);
@@ -344,12 +348,12 @@ export class b2PulleyJoint extends b2Joint {
     cBy += this.m_invMassB * PBy;
     aB += this.m_invIB * (rB.x * PBy - rB.y * PBx);
 
-    posA.c.x = cAx;
-    posA.c.y = cAy;
-    posA.a = aA;
-    posB.c.x = cBx;
-    posB.c.y = cBy;
-    posB.a = aB;
+    positions[oA] = cAx;
+    positions[oA + 1] = cAy;
+    positions[oA + 2] = aA;
+    positions[oB] = cBx;
+    positions[oB + 1] = cBy;
+    positions[oB + 2] = aB;
 
     return linearError < b2_linearSlop;
   }

@@ -18,7 +18,7 @@
  * `vB.y + wB * rB.x`, the same IEEE operations as the C++ vector code.
  */
 
-import { b2Abs, b2Clamp, b2Mat22, b2Mat33, b2MulRV, b2Rot, b2SubVV, b2Vec2, b2Vec3 } from '../../common/b2Math';
+import { b2Abs, b2Clamp, b2Mat33, b2MulRV, b2Rot, b2SubVV, b2Vec2, b2Vec3 } from '../../common/b2Math';
 import {
   b2_angularSlop,
   b2_linearSlop,
@@ -32,14 +32,52 @@ import { b2CheckFinite, b2CheckLimits, b2CheckNonNegative } from '../../common/b
 
 const s_qA = new b2Rot();
 const s_qB = new b2Rot();
-const s_rA = new b2Vec2();
-const s_rB = new b2Vec2();
-const s_Cdot = new b2Vec3();
-const s_impulse3 = new b2Vec3();
-const s_rhs = new b2Vec2();
-const s_reduced = new b2Vec2();
-const s_impulse2 = new b2Vec2();
-const s_K = new b2Mat22();
+
+/**
+ * The joint's solver record (m_solverRecord): what SolveVelocityConstraints and
+ * SolvePositionConstraints read, copied by InitVelocityConstraints into one Float64Array, and the
+ * impulses they accumulate. The fields remain the C++ ones (InitVelocityConstraints still sets
+ * m_rA, m_mass...; StoreImpulses writes m_impulse and m_motorImpulse back after the velocity
+ * iterations): the record only spares the solver's eight velocity and three position passes the
+ * twenty-odd small heap objects those fields are (V8 boxes every double in an object field). In
+ * a 10,000-body joint grid those passes were bound by memory latency.
+ */
+const enum RJ {
+  rAx = 0,
+  rAy = 1,
+  rBx = 2,
+  rBy = 3,
+  invMassA = 4,
+  invMassB = 5,
+  invIA = 6,
+  invIB = 7,
+  // m_mass, column by column as b2Mat33: ex.x, ex.y, ex.z, ey.x...
+  massExX = 8,
+  massExY = 9,
+  massExZ = 10,
+  massEyX = 11,
+  massEyY = 12,
+  massEyZ = 13,
+  massEzX = 14,
+  massEzY = 15,
+  massEzZ = 16,
+  motorMass = 17,
+  impulseX = 18,
+  impulseY = 19,
+  impulseZ = 20,
+  motorImpulse = 21,
+  motorSpeed = 22,
+  maxMotorTorque = 23,
+  referenceAngle = 24,
+  lowerAngle = 25,
+  upperAngle = 26,
+  // m_localAnchorA - m_localCenterA and the same for B, as SolvePositionConstraints computes them
+  localAnchorAX = 27,
+  localAnchorAY = 28,
+  localAnchorBX = 29,
+  localAnchorBY = 30,
+  size = 31,
+}
 
 /**
  * Revolute joint definition. This requires defining an anchor point where the bodies are joined.
@@ -125,6 +163,9 @@ export class b2RevoluteJoint extends b2Joint {
   m_motorMass = 0.0;
   m_limitState = b2LimitState.e_inactiveLimit;
 
+  /** The solver record (see RJ): valid from InitVelocityConstraints to the step's end. */
+  readonly m_solverRecord = new Float64Array(RJ.size);
+
   constructor(def: b2RevoluteJointDef) {
     super(def);
 
@@ -156,17 +197,18 @@ export class b2RevoluteJoint extends b2Joint {
     this.m_invIA = bA.m_invI;
     this.m_invIB = bB.m_invI;
 
-    const aA = data.positions[this.m_indexA].a;
-    const velA = data.velocities[this.m_indexA];
-    let vAx = velA.v.x;
-    let vAy = velA.v.y;
-    let wA = velA.w;
+    const oA = 3 * this.m_indexA;
+    const aA = data.positions[oA + 2];
+    const velocities = data.velocities;
+    let vAx = velocities[oA];
+    let vAy = velocities[oA + 1];
+    let wA = velocities[oA + 2];
 
-    const aB = data.positions[this.m_indexB].a;
-    const velB = data.velocities[this.m_indexB];
-    let vBx = velB.v.x;
-    let vBy = velB.v.y;
-    let wB = velB.w;
+    const oB = 3 * this.m_indexB;
+    const aB = data.positions[oB + 2];
+    let vBx = velocities[oB];
+    let vBy = velocities[oB + 1];
+    let wB = velocities[oB + 2];
 
     const qA = s_qA.Set(aA);
     const qB = s_qB.Set(aB);
@@ -252,41 +294,79 @@ export class b2RevoluteJoint extends b2Joint {
       this.m_motorImpulse = 0.0;
     }
 
-    velA.v.x = vAx;
-    velA.v.y = vAy;
-    velA.w = wA;
-    velB.v.x = vBx;
-    velB.v.y = vBy;
-    velB.w = wB;
+    const t = this.m_solverRecord;
+    t[RJ.rAx] = rA.x;
+    t[RJ.rAy] = rA.y;
+    t[RJ.rBx] = rB.x;
+    t[RJ.rBy] = rB.y;
+    t[RJ.invMassA] = mA;
+    t[RJ.invMassB] = mB;
+    t[RJ.invIA] = iA;
+    t[RJ.invIB] = iB;
+    t[RJ.massExX] = K.ex.x;
+    t[RJ.massExY] = K.ex.y;
+    t[RJ.massExZ] = K.ex.z;
+    t[RJ.massEyX] = K.ey.x;
+    t[RJ.massEyY] = K.ey.y;
+    t[RJ.massEyZ] = K.ey.z;
+    t[RJ.massEzX] = K.ez.x;
+    t[RJ.massEzY] = K.ez.y;
+    t[RJ.massEzZ] = K.ez.z;
+    t[RJ.motorMass] = this.m_motorMass;
+    t[RJ.impulseX] = this.m_impulse.x;
+    t[RJ.impulseY] = this.m_impulse.y;
+    t[RJ.impulseZ] = this.m_impulse.z;
+    t[RJ.motorImpulse] = this.m_motorImpulse;
+    t[RJ.motorSpeed] = this.m_motorSpeed;
+    t[RJ.maxMotorTorque] = this.m_maxMotorTorque;
+    t[RJ.referenceAngle] = this.m_referenceAngle;
+    t[RJ.lowerAngle] = this.m_lowerAngle;
+    t[RJ.upperAngle] = this.m_upperAngle;
+    t[RJ.localAnchorAX] = this.m_localAnchorA.x - this.m_localCenterA.x;
+    t[RJ.localAnchorAY] = this.m_localAnchorA.y - this.m_localCenterA.y;
+    t[RJ.localAnchorBX] = this.m_localAnchorB.x - this.m_localCenterB.x;
+    t[RJ.localAnchorBY] = this.m_localAnchorB.y - this.m_localCenterB.y;
+
+    velocities[oA] = vAx;
+    velocities[oA + 1] = vAy;
+    velocities[oA + 2] = wA;
+    velocities[oB] = vBx;
+    velocities[oB + 1] = vBy;
+    velocities[oB + 2] = wB;
   }
 
   override SolveVelocityConstraints(data: b2SolverData): void {
-    const velA = data.velocities[this.m_indexA];
-    const velB = data.velocities[this.m_indexB];
-    let vAx = velA.v.x;
-    let vAy = velA.v.y;
-    let wA = velA.w;
-    let vBx = velB.v.x;
-    let vBy = velB.v.y;
-    let wB = velB.w;
+    const t = this.m_solverRecord;
+    const oA = 3 * this.m_indexA;
+    const velocities = data.velocities;
+    const oB = 3 * this.m_indexB;
+    let vAx = velocities[oA];
+    let vAy = velocities[oA + 1];
+    let wA = velocities[oA + 2];
+    let vBx = velocities[oB];
+    let vBy = velocities[oB + 1];
+    let wB = velocities[oB + 2];
 
-    const mA = this.m_invMassA;
-    const mB = this.m_invMassB;
-    const iA = this.m_invIA;
-    const iB = this.m_invIB;
-    const rA = this.m_rA;
-    const rB = this.m_rB;
+    const mA = t[RJ.invMassA];
+    const mB = t[RJ.invMassB];
+    const iA = t[RJ.invIA];
+    const iB = t[RJ.invIB];
+    const rAx = t[RJ.rAx];
+    const rAy = t[RJ.rAy];
+    const rBx = t[RJ.rBx];
+    const rBy = t[RJ.rBy];
 
     const fixedRotation = iA + iB === 0.0;
 
     // Solve motor constraint.
     if (this.m_enableMotor && this.m_limitState !== b2LimitState.e_equalLimits && fixedRotation === false) {
-      const Cdot = wB - wA - this.m_motorSpeed;
-      let impulse = -this.m_motorMass * Cdot;
-      const oldImpulse = this.m_motorImpulse;
-      const maxImpulse = data.step.dt * this.m_maxMotorTorque;
-      this.m_motorImpulse = b2Clamp(this.m_motorImpulse + impulse, -maxImpulse, maxImpulse);
-      impulse = this.m_motorImpulse - oldImpulse;
+      const Cdot = wB - wA - t[RJ.motorSpeed];
+      let impulse = -t[RJ.motorMass] * Cdot;
+      const oldImpulse = t[RJ.motorImpulse];
+      const maxImpulse = data.step.dt * t[RJ.maxMotorTorque];
+      const motorImpulse = b2Clamp(oldImpulse + impulse, -maxImpulse, maxImpulse);
+      t[RJ.motorImpulse] = motorImpulse;
+      impulse = motorImpulse - oldImpulse;
 
       wA -= iA * impulse;
       wB += iB * impulse;
@@ -294,128 +374,168 @@ export class b2RevoluteJoint extends b2Joint {
 
     // Solve limit constraint.
     if (this.m_enableLimit && this.m_limitState !== b2LimitState.e_inactiveLimit && fixedRotation === false) {
-      const Cdot1x = vBx - wB * rB.y - vAx + wA * rA.y;
-      const Cdot1y = vBy + wB * rB.x - vAy - wA * rA.x;
+      const Cdot1x = vBx - wB * rBy - vAx + wA * rAy;
+      const Cdot1y = vBy + wB * rBx - vAy - wA * rAx;
       const Cdot2 = wB - wA;
-      const Cdot = s_Cdot.Set(Cdot1x, Cdot1y, Cdot2);
 
-      const impulse = this.m_mass.Solve33(Cdot, s_impulse3);
-      impulse.x = -impulse.x;
-      impulse.y = -impulse.y;
-      impulse.z = -impulse.z;
+      // impulse = -m_mass.Solve33(Cdot), as b2Mat33.Solve33 computes it
+      const exx = t[RJ.massExX];
+      const exy = t[RJ.massExY];
+      const exz = t[RJ.massExZ];
+      const eyx = t[RJ.massEyX];
+      const eyy = t[RJ.massEyY];
+      const eyz = t[RJ.massEyZ];
+      const ezx = t[RJ.massEzX];
+      const ezy = t[RJ.massEzY];
+      const ezz = t[RJ.massEzZ];
+      let det = exx * (eyy * ezz - eyz * ezy) + exy * (eyz * ezx - eyx * ezz) + exz * (eyx * ezy - eyy * ezx);
+      if (det !== 0.0) {
+        det = 1.0 / det;
+      }
+      let impulseX = -(det * (Cdot1x * (eyy * ezz - eyz * ezy) + Cdot1y * (eyz * ezx - eyx * ezz) + Cdot2 * (eyx * ezy - eyy * ezx)));
+      let impulseY = -(det * (exx * (Cdot1y * ezz - Cdot2 * ezy) + exy * (Cdot2 * ezx - Cdot1x * ezz) + exz * (Cdot1x * ezy - Cdot1y * ezx)));
+      let impulseZ = -(det * (exx * (eyy * Cdot2 - eyz * Cdot1y) + exy * (eyz * Cdot1x - eyx * Cdot2) + exz * (eyx * Cdot1y - eyy * Cdot1x)));
 
-      if (this.m_limitState === b2LimitState.e_equalLimits) {
-        this.m_impulse.Add(impulse);
-      } else if (this.m_limitState === b2LimitState.e_atLowerLimit) {
-        const newImpulse = this.m_impulse.z + impulse.z;
-        if (newImpulse < 0.0) {
-          this.SolveReducedLimit(Cdot1x, Cdot1y, impulse);
-        } else {
-          this.m_impulse.Add(impulse);
-        }
+      let reduced = false;
+      if (this.m_limitState === b2LimitState.e_atLowerLimit) {
+        reduced = t[RJ.impulseZ] + impulseZ < 0.0;
       } else if (this.m_limitState === b2LimitState.e_atUpperLimit) {
-        const newImpulse = this.m_impulse.z + impulse.z;
-        if (newImpulse > 0.0) {
-          this.SolveReducedLimit(Cdot1x, Cdot1y, impulse);
-        } else {
-          this.m_impulse.Add(impulse);
-        }
+        reduced = t[RJ.impulseZ] + impulseZ > 0.0;
       }
 
-      const Px = impulse.x;
-      const Py = impulse.y;
+      if (reduced) {
+        // The limit impulse would change sign: solve the point constraint alone with the limit
+        // impulse removed. reduced = m_mass.Solve22(rhs), as b2Mat33.Solve22 computes it.
+        const oldImpulseZ = t[RJ.impulseZ];
+        const rhsX = -Cdot1x + oldImpulseZ * ezx;
+        const rhsY = -Cdot1y + oldImpulseZ * ezy;
+        let det2 = exx * eyy - eyx * exy;
+        if (det2 !== 0.0) {
+          det2 = 1.0 / det2;
+        }
+        const reducedX = det2 * (eyy * rhsX - eyx * rhsY);
+        const reducedY = det2 * (exx * rhsY - exy * rhsX);
+        impulseX = reducedX;
+        impulseY = reducedY;
+        impulseZ = -oldImpulseZ;
+        t[RJ.impulseX] += reducedX;
+        t[RJ.impulseY] += reducedY;
+        t[RJ.impulseZ] = 0.0;
+      } else {
+        // m_impulse += impulse (e_equalLimits, or a limit impulse that keeps its sign)
+        t[RJ.impulseX] += impulseX;
+        t[RJ.impulseY] += impulseY;
+        t[RJ.impulseZ] += impulseZ;
+      }
+
+      const Px = impulseX;
+      const Py = impulseY;
 
       vAx -= mA * Px;
       vAy -= mA * Py;
-      wA -= iA * (rA.x * Py - rA.y * Px + impulse.z);
+      wA -= iA * (rAx * Py - rAy * Px + impulseZ);
 
       vBx += mB * Px;
       vBy += mB * Py;
-      wB += iB * (rB.x * Py - rB.y * Px + impulse.z);
+      wB += iB * (rBx * Py - rBy * Px + impulseZ);
     } else {
       // Solve point-to-point constraint
-      const Cdotx = vBx - wB * rB.y - vAx + wA * rA.y;
-      const Cdoty = vBy + wB * rB.x - vAy - wA * rA.x;
-      const impulse = this.m_mass.Solve22(s_rhs.Set(-Cdotx, -Cdoty), s_impulse2);
+      const Cdotx = vBx - wB * rBy - vAx + wA * rAy;
+      const Cdoty = vBy + wB * rBx - vAy - wA * rAx;
 
-      this.m_impulse.x += impulse.x;
-      this.m_impulse.y += impulse.y;
+      // impulse = m_mass.Solve22(-Cdot), as b2Mat33.Solve22 computes it
+      const a11 = t[RJ.massExX];
+      const a12 = t[RJ.massEyX];
+      const a21 = t[RJ.massExY];
+      const a22 = t[RJ.massEyY];
+      let det = a11 * a22 - a12 * a21;
+      if (det !== 0.0) {
+        det = 1.0 / det;
+      }
+      const bx = -Cdotx;
+      const by = -Cdoty;
+      const impulseX = det * (a22 * bx - a12 * by);
+      const impulseY = det * (a11 * by - a21 * bx);
 
-      vAx -= mA * impulse.x;
-      vAy -= mA * impulse.y;
-      wA -= iA * (rA.x * impulse.y - rA.y * impulse.x);
+      t[RJ.impulseX] += impulseX;
+      t[RJ.impulseY] += impulseY;
 
-      vBx += mB * impulse.x;
-      vBy += mB * impulse.y;
-      wB += iB * (rB.x * impulse.y - rB.y * impulse.x);
+      vAx -= mA * impulseX;
+      vAy -= mA * impulseY;
+      wA -= iA * (rAx * impulseY - rAy * impulseX);
+
+      vBx += mB * impulseX;
+      vBy += mB * impulseY;
+      wB += iB * (rBx * impulseY - rBy * impulseX);
     }
 
-    velA.v.x = vAx;
-    velA.v.y = vAy;
-    velA.w = wA;
-    velB.v.x = vBx;
-    velB.v.y = vBy;
-    velB.w = wB;
+    velocities[oA] = vAx;
+    velocities[oA + 1] = vAy;
+    velocities[oA + 2] = wA;
+    velocities[oB] = vBx;
+    velocities[oB + 1] = vBy;
+    velocities[oB + 2] = wB;
   }
 
-  /**
-   * The limit impulse would change sign: solve the point constraint alone with the limit impulse
-   * removed (shared by the lower and upper limit branches of the C++).
-   */
-  private SolveReducedLimit(Cdot1x: number, Cdot1y: number, impulse: b2Vec3): void {
-    const rhs = s_rhs.Set(-Cdot1x + this.m_impulse.z * this.m_mass.ez.x, -Cdot1y + this.m_impulse.z * this.m_mass.ez.y);
-    const reduced = this.m_mass.Solve22(rhs, s_reduced);
-    impulse.x = reduced.x;
-    impulse.y = reduced.y;
-    impulse.z = -this.m_impulse.z;
-    this.m_impulse.x += reduced.x;
-    this.m_impulse.y += reduced.y;
-    this.m_impulse.z = 0.0;
+  /** The impulses the velocity iterations accumulated in the solver record, back to the fields. */
+  override StoreImpulses(): void {
+    const t = this.m_solverRecord;
+    this.m_impulse.x = t[RJ.impulseX];
+    this.m_impulse.y = t[RJ.impulseY];
+    this.m_impulse.z = t[RJ.impulseZ];
+    this.m_motorImpulse = t[RJ.motorImpulse];
   }
 
   override SolvePositionConstraints(data: b2SolverData): boolean {
-    const posA = data.positions[this.m_indexA];
-    const posB = data.positions[this.m_indexB];
-    let cAx = posA.c.x;
-    let cAy = posA.c.y;
-    let aA = posA.a;
-    let cBx = posB.c.x;
-    let cBy = posB.c.y;
-    let aB = posB.a;
+    const t = this.m_solverRecord;
+    const oA = 3 * this.m_indexA;
+    const positions = data.positions;
+    const oB = 3 * this.m_indexB;
+    let cAx = positions[oA];
+    let cAy = positions[oA + 1];
+    let aA = positions[oA + 2];
+    let cBx = positions[oB];
+    let cBy = positions[oB + 1];
+    let aB = positions[oB + 2];
 
     let angularError = 0.0;
     let positionError = 0.0;
 
-    const fixedRotation = this.m_invIA + this.m_invIB === 0.0;
+    const mA = t[RJ.invMassA];
+    const mB = t[RJ.invMassB];
+    const iA = t[RJ.invIA];
+    const iB = t[RJ.invIB];
+
+    const fixedRotation = iA + iB === 0.0;
 
     // Solve angular limit constraint.
     if (this.m_enableLimit && this.m_limitState !== b2LimitState.e_inactiveLimit && fixedRotation === false) {
-      const angle = aB - aA - this.m_referenceAngle;
+      const angle = aB - aA - t[RJ.referenceAngle];
       let limitImpulse = 0.0;
 
       if (this.m_limitState === b2LimitState.e_equalLimits) {
         // Prevent large angular corrections
-        const C = b2Clamp(angle - this.m_lowerAngle, -b2_maxAngularCorrection, b2_maxAngularCorrection);
-        limitImpulse = -this.m_motorMass * C;
+        const C = b2Clamp(angle - t[RJ.lowerAngle], -b2_maxAngularCorrection, b2_maxAngularCorrection);
+        limitImpulse = -t[RJ.motorMass] * C;
         angularError = b2Abs(C);
       } else if (this.m_limitState === b2LimitState.e_atLowerLimit) {
-        let C = angle - this.m_lowerAngle;
+        let C = angle - t[RJ.lowerAngle];
         angularError = -C;
 
         // Prevent large angular corrections and allow some slop.
         C = b2Clamp(C + b2_angularSlop, -b2_maxAngularCorrection, 0.0);
-        limitImpulse = -this.m_motorMass * C;
+        limitImpulse = -t[RJ.motorMass] * C;
       } else if (this.m_limitState === b2LimitState.e_atUpperLimit) {
-        let C = angle - this.m_upperAngle;
+        let C = angle - t[RJ.upperAngle];
         angularError = C;
 
         // Prevent large angular corrections and allow some slop.
         C = b2Clamp(C - b2_angularSlop, 0.0, b2_maxAngularCorrection);
-        limitImpulse = -this.m_motorMass * C;
+        limitImpulse = -t[RJ.motorMass] * C;
       }
 
-      aA -= this.m_invIA * limitImpulse;
-      aB += this.m_invIB * limitImpulse;
+      aA -= iA * limitImpulse;
+      aB += iB * limitImpulse;
     }
 
     // Solve point-to-point constraint.
@@ -423,43 +543,46 @@ export class b2RevoluteJoint extends b2Joint {
       // The C++ also builds qA/qB from the initial angles; only these rotations are ever read.
       const qA = s_qA.Set(aA);
       const qB = s_qB.Set(aB);
-      const rA = b2MulRV(qA, b2SubVV(this.m_localAnchorA, this.m_localCenterA, s_rA), s_rA);
-      const rB = b2MulRV(qB, b2SubVV(this.m_localAnchorB, this.m_localCenterB, s_rB), s_rB);
+      // rA = b2Mul(qA, m_localAnchorA - m_localCenterA); likewise rB.
+      const lAx = t[RJ.localAnchorAX];
+      const lAy = t[RJ.localAnchorAY];
+      const lBx = t[RJ.localAnchorBX];
+      const lBy = t[RJ.localAnchorBY];
+      const rAx = qA.c * lAx - qA.s * lAy;
+      const rAy = qA.s * lAx + qA.c * lAy;
+      const rBx = qB.c * lBx - qB.s * lBy;
+      const rBy = qB.s * lBx + qB.c * lBy;
 
-      const Cx = cBx + rB.x - cAx - rA.x;
-      const Cy = cBy + rB.y - cAy - rA.y;
+      const Cx = cBx + rBx - cAx - rAx;
+      const Cy = cBy + rBy - cAy - rAy;
       positionError = Math.sqrt(Cx * Cx + Cy * Cy);
 
-      const mA = this.m_invMassA;
-      const mB = this.m_invMassB;
-      const iA = this.m_invIA;
-      const iB = this.m_invIB;
+      // K = [[k11, k12], [k12, k22]]; impulse = -K.Solve(C), as b2Mat22.Solve computes it
+      const k11 = mA + mB + iA * rAy * rAy + iB * rBy * rBy;
+      const k12 = -iA * rAx * rAy - iB * rBx * rBy;
+      const k22 = mA + mB + iA * rAx * rAx + iB * rBx * rBx;
+      let det = k11 * k22 - k12 * k12;
+      if (det !== 0.0) {
+        det = 1.0 / det;
+      }
+      const impulseX = -(det * (k22 * Cx - k12 * Cy));
+      const impulseY = -(det * (k11 * Cy - k12 * Cx));
 
-      const K = s_K;
-      K.ex.x = mA + mB + iA * rA.y * rA.y + iB * rB.y * rB.y;
-      K.ex.y = -iA * rA.x * rA.y - iB * rB.x * rB.y;
-      K.ey.x = K.ex.y;
-      K.ey.y = mA + mB + iA * rA.x * rA.x + iB * rB.x * rB.x;
+      cAx -= mA * impulseX;
+      cAy -= mA * impulseY;
+      aA -= iA * (rAx * impulseY - rAy * impulseX);
 
-      const impulse = K.Solve(s_rhs.Set(Cx, Cy), s_impulse2);
-      impulse.x = -impulse.x;
-      impulse.y = -impulse.y;
-
-      cAx -= mA * impulse.x;
-      cAy -= mA * impulse.y;
-      aA -= iA * (rA.x * impulse.y - rA.y * impulse.x);
-
-      cBx += mB * impulse.x;
-      cBy += mB * impulse.y;
-      aB += iB * (rB.x * impulse.y - rB.y * impulse.x);
+      cBx += mB * impulseX;
+      cBy += mB * impulseY;
+      aB += iB * (rBx * impulseY - rBy * impulseX);
     }
 
-    posA.c.x = cAx;
-    posA.c.y = cAy;
-    posA.a = aA;
-    posB.c.x = cBx;
-    posB.c.y = cBy;
-    posB.a = aB;
+    positions[oA] = cAx;
+    positions[oA + 1] = cAy;
+    positions[oA + 2] = aA;
+    positions[oB] = cBx;
+    positions[oB + 1] = cBy;
+    positions[oB + 2] = aB;
 
     return positionError <= b2_linearSlop && angularError <= b2_angularSlop;
   }

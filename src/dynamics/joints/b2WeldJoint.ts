@@ -119,17 +119,18 @@ export class b2WeldJoint extends b2Joint {
     this.m_invIA = bA.m_invI;
     this.m_invIB = bB.m_invI;
 
-    const aA = data.positions[this.m_indexA].a;
-    const velA = data.velocities[this.m_indexA];
-    let vAx = velA.v.x;
-    let vAy = velA.v.y;
-    let wA = velA.w;
+    const oA = 3 * this.m_indexA;
+    const aA = data.positions[oA + 2];
+    const velocities = data.velocities;
+    let vAx = velocities[oA];
+    let vAy = velocities[oA + 1];
+    let wA = velocities[oA + 2];
 
-    const aB = data.positions[this.m_indexB].a;
-    const velB = data.velocities[this.m_indexB];
-    let vBx = velB.v.x;
-    let vBy = velB.v.y;
-    let wB = velB.w;
+    const oB = 3 * this.m_indexB;
+    const aB = data.positions[oB + 2];
+    let vBx = velocities[oB];
+    let vBy = velocities[oB + 1];
+    let wB = velocities[oB + 2];
 
     const qA = s_qA.Set(aA);
     const qB = s_qB.Set(aB);
@@ -211,23 +212,24 @@ export class b2WeldJoint extends b2Joint {
       this.m_impulse.SetZero();
     }
 
-    velA.v.x = vAx;
-    velA.v.y = vAy;
-    velA.w = wA;
-    velB.v.x = vBx;
-    velB.v.y = vBy;
-    velB.w = wB;
+    velocities[oA] = vAx;
+    velocities[oA + 1] = vAy;
+    velocities[oA + 2] = wA;
+    velocities[oB] = vBx;
+    velocities[oB + 1] = vBy;
+    velocities[oB + 2] = wB;
   }
 
   override SolveVelocityConstraints(data: b2SolverData): void {
-    const velA = data.velocities[this.m_indexA];
-    const velB = data.velocities[this.m_indexB];
-    let vAx = velA.v.x;
-    let vAy = velA.v.y;
-    let wA = velA.w;
-    let vBx = velB.v.x;
-    let vBy = velB.v.y;
-    let wB = velB.w;
+    const oA = 3 * this.m_indexA;
+    const velocities = data.velocities;
+    const oB = 3 * this.m_indexB;
+    let vAx = velocities[oA];
+    let vAy = velocities[oA + 1];
+    let wA = velocities[oA + 2];
+    let vBx = velocities[oB];
+    let vBy = velocities[oB + 1];
+    let wB = velocities[oB + 2];
 
     const mA = this.m_invMassA;
     const mB = this.m_invMassB;
@@ -287,23 +289,24 @@ export class b2WeldJoint extends b2Joint {
       wB += iB * (rB.x * Py - rB.y * Px + impulse.z);
     }
 
-    velA.v.x = vAx;
-    velA.v.y = vAy;
-    velA.w = wA;
-    velB.v.x = vBx;
-    velB.v.y = vBy;
-    velB.w = wB;
+    velocities[oA] = vAx;
+    velocities[oA + 1] = vAy;
+    velocities[oA + 2] = wA;
+    velocities[oB] = vBx;
+    velocities[oB + 1] = vBy;
+    velocities[oB + 2] = wB;
   }
 
   override SolvePositionConstraints(data: b2SolverData): boolean {
-    const posA = data.positions[this.m_indexA];
-    const posB = data.positions[this.m_indexB];
-    let cAx = posA.c.x;
-    let cAy = posA.c.y;
-    let aA = posA.a;
-    let cBx = posB.c.x;
-    let cBy = posB.c.y;
-    let aB = posB.a;
+    const oA = 3 * this.m_indexA;
+    const positions = data.positions;
+    const oB = 3 * this.m_indexB;
+    let cAx = positions[oA];
+    let cAy = positions[oA + 1];
+    let aA = positions[oA + 2];
+    let cBx = positions[oB];
+    let cBy = positions[oB + 1];
+    let aB = positions[oB + 2];
 
     const qA = s_qA.Set(aA);
     const qB = s_qB.Set(aB);
@@ -372,12 +375,12 @@ export class b2WeldJoint extends b2Joint {
       aB += iB * (rB.x * Py - rB.y * Px + impulse.z);
     }
 
-    posA.c.x = cAx;
-    posA.c.y = cAy;
-    posA.a = aA;
-    posB.c.x = cBx;
-    posB.c.y = cBy;
-    posB.a = aB;
+    positions[oA] = cAx;
+    positions[oA + 1] = cAy;
+    positions[oA + 2] = aA;
+    positions[oB] = cBx;
+    positions[oB + 1] = cBy;
+    positions[oB + 2] = aB;
 
     return positionError <= b2_linearSlop && angularError <= b2_angularSlop;
   }

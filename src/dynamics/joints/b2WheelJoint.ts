@@ -175,21 +175,23 @@ export class b2WheelJoint extends b2Joint {
     const iA = this.m_invIA;
     const iB = this.m_invIB;
 
-    const posA = data.positions[this.m_indexA];
-    const velA = data.velocities[this.m_indexA];
-    const cA = posA.c;
-    const aA = posA.a;
-    let vAx = velA.v.x;
-    let vAy = velA.v.y;
-    let wA = velA.w;
+    const oA = 3 * this.m_indexA;
+    const positions = data.positions;
+    const velocities = data.velocities;
+    const cAx = positions[oA];
+    const cAy = positions[oA + 1];
+    const aA = positions[oA + 2];
+    let vAx = velocities[oA];
+    let vAy = velocities[oA + 1];
+    let wA = velocities[oA + 2];
 
-    const posB = data.positions[this.m_indexB];
-    const velB = data.velocities[this.m_indexB];
-    const cB = posB.c;
-    const aB = posB.a;
-    let vBx = velB.v.x;
-    let vBy = velB.v.y;
-    let wB = velB.w;
+    const oB = 3 * this.m_indexB;
+    const cBx = positions[oB];
+    const cBy = positions[oB + 1];
+    const aB = positions[oB + 2];
+    let vBx = velocities[oB];
+    let vBy = velocities[oB + 1];
+    let wB = velocities[oB + 2];
 
     const qA = s_qA.Set(aA);
     const qB = s_qB.Set(aB);
@@ -197,8 +199,8 @@ export class b2WheelJoint extends b2Joint {
     // Compute the effective masses.
     const rA = b2MulRV(qA, b2SubVV(this.m_localAnchorA, this.m_localCenterA, s_rA), s_rA);
     const rB = b2MulRV(qB, b2SubVV(this.m_localAnchorB, this.m_localCenterB, s_rB), s_rB);
-    const dx = cB.x + rB.x - cA.x - rA.x;
-    const dy = cB.y + rB.y - cA.y - rA.y;
+    const dx = cBx + rB.x - cAx - rA.x;
+    const dy = cBy + rB.y - cAy - rA.y;
 
     // Point to line constraint
     {
@@ -291,12 +293,12 @@ export class b2WheelJoint extends b2Joint {
       this.m_motorImpulse = 0.0;
     }
 
-    velA.v.x = vAx;
-    velA.v.y = vAy;
-    velA.w = wA;
-    velB.v.x = vBx;
-    velB.v.y = vBy;
-    velB.w = wB;
+    velocities[oA] = vAx;
+    velocities[oA + 1] = vAy;
+    velocities[oA + 2] = wA;
+    velocities[oB] = vBx;
+    velocities[oB + 1] = vBy;
+    velocities[oB + 2] = wB;
   }
 
   override SolveVelocityConstraints(data: b2SolverData): void {
@@ -305,14 +307,15 @@ export class b2WheelJoint extends b2Joint {
     const iA = this.m_invIA;
     const iB = this.m_invIB;
 
-    const velA = data.velocities[this.m_indexA];
-    const velB = data.velocities[this.m_indexB];
-    let vAx = velA.v.x;
-    let vAy = velA.v.y;
-    let wA = velA.w;
-    let vBx = velB.v.x;
-    let vBy = velB.v.y;
-    let wB = velB.w;
+    const oA = 3 * this.m_indexA;
+    const velocities = data.velocities;
+    const oB = 3 * this.m_indexB;
+    let vAx = velocities[oA];
+    let vAy = velocities[oA + 1];
+    let wA = velocities[oA + 2];
+    let vBx = velocities[oB];
+    let vBy = velocities[oB + 1];
+    let wB = velocities[oB + 2];
 
     const ax = this.m_ax;
     const ay = this.m_ay;
@@ -371,23 +374,24 @@ export class b2WheelJoint extends b2Joint {
       wB += iB * LB;
     }
 
-    velA.v.x = vAx;
-    velA.v.y = vAy;
-    velA.w = wA;
-    velB.v.x = vBx;
-    velB.v.y = vBy;
-    velB.w = wB;
+    velocities[oA] = vAx;
+    velocities[oA + 1] = vAy;
+    velocities[oA + 2] = wA;
+    velocities[oB] = vBx;
+    velocities[oB + 1] = vBy;
+    velocities[oB + 2] = wB;
   }
 
   override SolvePositionConstraints(data: b2SolverData): boolean {
-    const posA = data.positions[this.m_indexA];
-    const posB = data.positions[this.m_indexB];
-    let cAx = posA.c.x;
-    let cAy = posA.c.y;
-    let aA = posA.a;
-    let cBx = posB.c.x;
-    let cBy = posB.c.y;
-    let aB = posB.a;
+    const oA = 3 * this.m_indexA;
+    const positions = data.positions;
+    const oB = 3 * this.m_indexB;
+    let cAx = positions[oA];
+    let cAy = positions[oA + 1];
+    let aA = positions[oA + 2];
+    let cBx = positions[oB];
+    let cBy = positions[oB + 1];
+    let aB = positions[oB + 2];
 
     const qA = s_qA.Set(aA);
     const qB = s_qB.Set(aB);
@@ -428,12 +432,12 @@ export class b2WheelJoint extends b2Joint {
     cBy += this.m_invMassB * Py;
     aB += this.m_invIB * LB;
 
-    posA.c.x = cAx;
-    posA.c.y = cAy;
-    posA.a = aA;
-    posB.c.x = cBx;
-    posB.c.y = cBy;
-    posB.a = aB;
+    positions[oA] = cAx;
+    positions[oA + 1] = cAy;
+    positions[oA + 2] = aA;
+    positions[oB] = cBx;
+    positions[oB + 1] = cBy;
+    positions[oB + 2] = aB;
 
     return b2Abs(C) <= b2_linearSlop;
   }

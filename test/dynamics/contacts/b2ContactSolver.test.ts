@@ -8,7 +8,6 @@ import { b2_linearSlop, b2_polygonRadius } from '../../../src/common/b2Settings'
 import { b2BodyDef, b2BodyType } from '../../../src/dynamics/b2Body';
 import type { b2Body } from '../../../src/dynamics/b2Body';
 import { b2FixtureDef } from '../../../src/dynamics/b2Fixture';
-import { b2Position, b2Velocity } from '../../../src/dynamics/b2TimeStep';
 import { b2World } from '../../../src/dynamics/b2World';
 import { b2ContactListener } from '../../../src/dynamics/b2WorldCallbacks';
 import type { b2ContactImpulse } from '../../../src/dynamics/b2WorldCallbacks';
@@ -66,11 +65,13 @@ function makeIsland(options: IslandOptions) {
     GetManifold: () => manifold,
   } as unknown as b2Contact;
 
-  const positions = [new b2Position(), new b2Position()];
-  positions[1].c.Set(0.0, yB);
-  const velocities = [new b2Velocity(), new b2Velocity()];
-  velocities[1].v.Set(options.vB[0], options.vB[1]);
-  velocities[1].w = options.wB ?? 0.0;
+  // The solver's b2Position and b2Velocity records: three doubles a body (see b2SolverData).
+  const positionData = new Float64Array(6);
+  positionData[4] = yB;
+  const velocityData = new Float64Array(6);
+  velocityData[3] = options.vB[0];
+  velocityData[4] = options.vB[1];
+  velocityData[5] = options.wB ?? 0.0;
 
   const def = new b2ContactSolverDef();
   def.step.dt = 1.0 / 60.0;
@@ -79,11 +80,20 @@ function makeIsland(options: IslandOptions) {
   def.step.warmStarting = options.warmStarting ?? true;
   def.contacts = [contact];
   def.count = 1;
-  def.positions = positions;
-  def.velocities = velocities;
+  def.positions = positionData;
+  def.velocities = velocityData;
 
   const solver = new b2ContactSolver(def);
-  return { solver, manifold, positions, velocities };
+  // The records read as the C++ structs: positions[i].c.y, velocities[i].w...
+  const positions = [0, 1].map((i) => ({
+    c: { get x() { return positionData[3 * i]; }, get y() { return positionData[3 * i + 1]; } },
+    get a() { return positionData[3 * i + 2]; },
+  }));
+  const velocities = [0, 1].map((i) => ({
+    v: { get x() { return velocityData[3 * i]; }, get y() { return velocityData[3 * i + 1]; } },
+    get w() { return velocityData[3 * i + 2]; },
+  }));
+  return { solver, manifold, positions, velocities, positionData, velocityData };
 }
 
 const digits = 12;
@@ -192,8 +202,10 @@ describe('b2ContactSolver single point, friction and restitution', () => {
     // b2Clamp(-1.2, -0, 0) is max(-0, -1.2): a negative zero, as in the C++.
     expect(vcp.tangentImpulse).toBe(-0);
     expect(vcp.normalImpulse).toBe(1.0);
-    // Second pass: the unclamped friction impulse -3 / 2.5 is clamped to -0.5 * 1.
+    // Second pass: the unclamped friction impulse -3 / 2.5 is clamped to -0.5 * 1. (The
+    // constraint objects are filled from the solver's records when read, so read them again.)
     solver.SolveVelocityConstraints();
+    expect(solver.m_velocityConstraints[0].points[0]).toBe(vcp);
     expect(vcp.tangentImpulse).toBe(-0.5);
     expect(velocities[1].v.x).toBe(2.5);
     expect(velocities[1].w).toBe(-1.5);
@@ -242,8 +254,8 @@ describe('b2ContactSolver warm starting and impulse storage', () => {
     def.step.warmStarting = true;
     def.contacts = first.solver.m_contacts;
     def.count = 1;
-    def.positions = second.positions;
-    def.velocities = second.velocities;
+    def.positions = second.positionData;
+    def.velocities = second.velocityData;
     first.solver.Initialize(def);
     expect(first.solver.m_velocityConstraints[0]).toBe(constraint);
     expect(constraint.K.ex.x).toBe(0.0);
