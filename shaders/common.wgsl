@@ -139,3 +139,54 @@ fn workgroup_exclusive_scan(lid: u32, value: u32) -> u32 {
   workgroupBarrier();
   return wg_scan[lid] + wg_scan_segment[lid / 16u];
 }
+
+// ---- The narrow phase (part 2; src-gpu/layout.ts NP, BIN, NP_ARGS, MF) ----
+
+// Word indices of the narrow phase's state buffer (array<u32>, 32 words).
+const NP_COUNT_0: u32 = 0u;            // contacts held by contact set 0 (the sets alternate per step)
+const NP_COUNT_1: u32 = 1u;            // contacts held by contact set 1
+const NP_CONTACTS: u32 = 2u;           // contacts this step: min(pairs, capacity)
+const NP_PREV: u32 = 3u;               // contacts of the previous step (the other set)
+const NP_CAPACITY: u32 = 4u;           // contacts the buffers hold (host)
+const NP_OVERFLOW: u32 = 5u;           // OVERFLOW_CONTACTS when the pairs did not fit
+const NP_PAIRS: u32 = 6u;              // pairs the broad phase handed over (the capacity needed)
+const NP_SOLVER: u32 = 7u;             // touching non-sensor contacts (the solver list's length)
+const NP_EVENTS: u32 = 8u;             // begin/end events
+const NP_EVENT_SLOTS: u32 = 9u;        // NP_CONTACTS + NP_PREV (the event scan's length)
+const NP_BINS: u32 = 16u;              // 9 words: first contact of bin b in the binned list, then the end
+
+const OVERFLOW_CONTACTS: u32 = 1u;
+
+// Pair-type bins (contact A/B as b2Contact::Create orders them).
+const BIN_CIRCLES: u32 = 0u;           // circle A, circle B
+const BIN_POLYGON_CIRCLE: u32 = 1u;    // polygon A, circle B
+const BIN_POLYGONS: u32 = 2u;          // polygon A, polygon B
+const BIN_EDGE_CIRCLE: u32 = 3u;       // edge A, circle B
+const BIN_EDGE_POLYGON: u32 = 4u;      // edge A, polygon B
+const BIN_CHAIN_CIRCLE: u32 = 5u;      // chain child A, circle B
+const BIN_CHAIN_POLYGON: u32 = 6u;     // chain child A, polygon B
+const BIN_SENSOR: u32 = 7u;            // either fixture is a sensor: b2TestOverlap only
+const BIN_NONE: u32 = 8u;              // no contact type (not produced by the broad phase)
+const BIN_COUNT: u32 = 8u;
+
+// Indirect-dispatch triples of the narrow phase (u32 word offsets in its indirect buffer).
+const NP_ARGS_CONTACTS: u32 = 0u;      // one invocation per contact
+const NP_ARGS_TILES: u32 = 3u;         // bin sort, one workgroup per 1024 contacts
+const NP_ARGS_BLOCKS: u32 = 6u;        // scans over the contacts, one workgroup per 4096
+const NP_ARGS_PREV: u32 = 9u;          // one invocation per contact of the previous step
+const NP_ARGS_EVENT_SLOTS: u32 = 12u;  // one invocation per event slot (contacts, then previous contacts)
+const NP_ARGS_EVENT_BLOCKS: u32 = 15u; // the event scan, one workgroup per 4096 slots
+const NP_ARGS_SOLVER: u32 = 18u;       // one invocation per solver contact (part 3)
+const NP_ARGS_BINS: u32 = 21u;         // + 3 * bin: one invocation per contact of the bin
+
+// Contact flags in the manifold header word (bits 0-1 b2Manifold::Type, bits 2-3 pointCount).
+const MF_TOUCHING: u32 = 0x10u;        // b2Contact::e_touchingFlag after this step's update
+const MF_SENSOR: u32 = 0x20u;          // either fixture is a sensor (no manifold, no solver contact)
+const MF_BEGAN: u32 = 0x40u;           // BeginContact: touching now, not before
+const MF_ENDED: u32 = 0x80u;           // EndContact: touching before, not now
+const MF_WARM: u32 = 0x100u;           // matched a contact of the previous step
+const MF_SWAPPED: u32 = 0x200u;        // fixture A is the pair's second proxy (b2Contact::Create swapped)
+
+const NO_CONTACT: u32 = 0xffffffffu;
+const EVENT_BEGIN: u32 = 1u;
+const EVENT_END: u32 = 2u;

@@ -9,7 +9,8 @@
  *           (strip, quantised lower bound) (8 passes)
  *   sweep   sorted AABBs, candidate ranges, work offsets, pairs           src-gpu/sweep.ts, scan.ts
  *   pairs   overflow check, pairs radix-sorted by (a, b)                   src-gpu/pairs.ts
- * then copies the state words (pair count, overflow, axis, work items) to a mappable buffer. If
+ * then copies the state words (pair count, overflow, axis, work items) and the pass timestamps to
+ * one mappable buffer, read back with a single mapAsync (one GPU round trip per update). If
  * the pairs overflowed the pair buffer, the count the GPU kept counting says exactly how much is
  * needed: the buffer grows (doubling) and the sweep and pair passes run again, so no pair is ever
  * lost. Nothing else is read back; the pairs stay on the GPU for the narrow phase (`pairs`,
@@ -34,8 +35,15 @@ import { digitPasses, RadixSort } from './radixSort';
 import { SweepStage } from './sweep';
 import type { SweepInputs } from './sweep';
 import { PassTimer } from './timing';
+import { Readback } from './readback';
 import { ARGS, INDIRECT_WORDS, MAP_READ, OVERFLOW_ENTRIES, OVERFLOW_PAIRS, STATE, STATE_WORDS, USAGE } from './layout';
 import { GpuWorld } from './world';
+
+/** Opens a (timed) compute pass named `name`, lets `body` record into it, and closes it. */
+export type PassRecorder = (name: string, body: (rec: Recorder) => void) => void;
+
+/** Byte offset of the timestamps in the read-back buffer (after the 64-byte state). */
+const TIMER_OFFSET = 256;
 
 export interface GpuBroadPhaseOptions {
   /** Pairs the pair buffer holds at first (default 4 per proxy, at least 1024); it grows. */
@@ -88,10 +96,11 @@ export class GpuBroadPhase {
   private readonly pairsB: GpuArray;
   readonly state: GPUBuffer;
   readonly indirect: GPUBuffer;
-  private readonly stateRead: GPUBuffer;
+  private readonly readback: Readback;
   private readonly stateWords = new Uint32Array(STATE_WORDS);
   private sortedPairs: GPUBuffer | null = null;
   private lastInputs: SweepInputs | null = null;
+  private lastSource: GpuWorld | GpuProxySet | null = null;
   /** Pairs in the last update's sorted list. */
   pairCount = 0;
   /** Times the entry buffers had to grow (over all updates). */
@@ -120,7 +129,7 @@ export class GpuBroadPhase {
     this.pairsB = new GpuArray(ctx, 'pairs tmp', 8, capacity);
     this.state = ctx.createBuffer('broadphase state', 4 * STATE_WORDS, USAGE.STORAGE | USAGE.COPY_DST | USAGE.COPY_SRC);
     this.indirect = ctx.createBuffer('broadphase indirect', 4 * INDIRECT_WORDS, USAGE.STORAGE | USAGE.INDIRECT | USAGE.COPY_DST);
-    this.stateRead = ctx.createBuffer('broadphase state read', 4 * STATE_WORDS, USAGE.MAP_READ | USAGE.COPY_DST);
+    this.readback = new Readback(ctx, 'broadphase read-back', TIMER_OFFSET + this.timer.bytes);
   }
 
   /** The pair capacity now. */
@@ -132,6 +141,12 @@ export class GpuBroadPhase {
   get pairs(): GPUBuffer {
     if (!this.sortedPairs) throw new Error('GpuBroadPhase: no update yet');
     return this.sortedPairs;
+  }
+
+  /** The inputs of the update being recorded (beginUpdate's), for encodeRegrow. */
+  get lastUpdateInputs(): SweepInputs {
+    if (!this.lastInputs) throw new Error('GpuBroadPhase: no update yet');
+    return this.lastInputs;
   }
 
   /** The proxy AABBs the last update used (GpuWorld input: computed by the bounds stage). */
@@ -171,94 +186,91 @@ export class GpuBroadPhase {
     return source;
   }
 
-  private async run(source: GpuWorld | GpuProxySet): Promise<BroadPhaseResult> {
-    await this.ctx.checkErrors();
+  /**
+   * Starts an update (used by update() and by GpuNarrowPhase, which appends its passes to the same
+   * submission): the inputs, the capacities, and the host-written state words, queued before the
+   * passes. Call encodePasses() next.
+   */
+  beginUpdate(source: GpuWorld | GpuProxySet): SweepInputs {
     const inputs = this.inputsOf(source);
     this.lastInputs = inputs;
+    this.lastSource = source;
+    if (!this.entryCapacityGiven) this.entryCapacity = Math.max(this.entryCapacity, 3 * inputs.slotCount + 64);
+    this.reserve(this.entryCapacity, this.pairsA.capacity);
+    const words = this.stateWords;
+    words.fill(0);
+    words[STATE.PAIR_CAPACITY] = this.pairsA.capacity;
+    words[STATE.ENTRY_CAPACITY] = this.entryCapacity;
+    words[STATE.SLOT_COUNT] = inputs.slotCount;
+    words[STATE.LIVE_COUNT] = inputs.liveCount;
+    this.ctx.device.queue.writeBuffer(this.state, 0, words);
+    this.sweep.setPairCapacity(this.pairsA.capacity);
+    return inputs;
+  }
+
+  /** Records the five passes of an update; returns the buffer that will hold the sorted pairs. */
+  encodePasses(pass: PassRecorder, inputs: SweepInputs): GPUBuffer {
+    const source = this.lastSource;
     const n = inputs.slotCount;
-    const live = inputs.liveCount;
-    if (!this.entryCapacityGiven) this.entryCapacity = Math.max(this.entryCapacity, 3 * n + 64);
-    const queue = this.ctx.device.queue;
-    const maxDim = this.ctx.maxWorkgroupsPerDimension;
-
-    let regrows = 0;
-    let dispatches = 0;
-    let gpuTime: Record<string, number> | null = null;
-    let state: Uint32Array;
-    for (;;) {
-      this.reserve(this.entryCapacity, this.pairsA.capacity);
-      const words = this.stateWords;
-      words.fill(0);
-      words[STATE.PAIR_CAPACITY] = this.pairsA.capacity;
-      words[STATE.ENTRY_CAPACITY] = this.entryCapacity;
-      words[STATE.SLOT_COUNT] = n;
-      words[STATE.LIVE_COUNT] = live;
-      queue.writeBuffer(this.state, 0, words);
-      this.sweep.setPairCapacity(this.pairsA.capacity);
-      await this.ctx.checkErrors();
-
-      const encoder = this.ctx.device.createCommandEncoder({ label: 'broadphase' });
-      this.timer.reset();
-      dispatches = 0;
-      const pass = (name: string, body: (rec: Recorder) => void) => {
-        const p = this.timer.beginPass(encoder, name);
-        const rec = new Recorder(p, maxDim);
-        body(rec);
-        p.end();
-        dispatches += rec.dispatches;
-      };
-      if (source instanceof GpuWorld) {
-        pass('bounds', (rec) => this.bounds.encode(rec, source, inputs.proxyAABB, this.extension));
-      }
-      pass('axis', (rec) => this.axis.encode(rec, inputs.proxyAABB, n, this.state));
-      let sorted: GPUBuffer = this.items.buffer;
-      pass('sort', (rec) => {
-        this.keys.encode(rec, inputs.proxyAABB, n, this.state, this.items.buffer, this.indirect);
-        sorted = this.sort.encode(rec, this.items.buffer, this.itemsTmp.buffer, digitPasses(32, 0), this.state, STATE.ENTRIES, {
-          indirect: this.indirect,
-          offset: ARGS.ENTRY_TILES * 4,
-        });
-      });
-      pass('sweep', (rec) => {
-        this.sweep.encodePrepare(rec, inputs, sorted, this.state, this.indirect);
-        this.sweep.encodeEmit(rec, inputs, this.pairsA.buffer, this.state, this.indirect);
-      });
-      pass('pairs', (rec) => {
-        this.sortedPairs = this.pairStage.encode(rec, this.sort, this.pairsA.buffer, this.pairsB.buffer, n, this.state, this.indirect);
-      });
-      encoder.copyBufferToBuffer(this.state, 0, this.stateRead, 0, 4 * STATE_WORDS);
-      this.timer.resolve(encoder);
-      queue.submit([encoder.finish()]);
-      state = await this.readState();
-      gpuTime = await this.timer.read();
-      if ((state[STATE.OVERFLOW] & OVERFLOW_ENTRIES) === 0) break;
-      // More sweep entries than room for them (not expected: see keys.ts): grow, redo everything.
-      regrows++;
-      this.entryRegrows++;
-      this.entryCapacity = Math.max(2 * this.entryCapacity, state[STATE.ENTRY_TOTAL]);
+    if (source instanceof GpuWorld) {
+      pass('bounds', (rec) => this.bounds.encode(rec, source, inputs.proxyAABB, this.extension));
     }
-
-    while ((state[STATE.OVERFLOW] & OVERFLOW_PAIRS) !== 0) {
-      // The GPU counted every pair it found: grow to hold them all, redo the emit and the sort.
-      regrows++;
-      this.reserve(this.entryCapacity, state[STATE.PAIR_COUNT]);
-      const cap = this.pairsA.capacity;
-      queue.writeBuffer(this.state, 4 * STATE.PAIR_COUNT, new Uint32Array([0]));
-      queue.writeBuffer(this.state, 4 * STATE.OVERFLOW, new Uint32Array([0]));
-      queue.writeBuffer(this.state, 4 * STATE.PAIR_CAPACITY, new Uint32Array([cap]));
-      this.sweep.setPairCapacity(cap);
-      await this.ctx.checkErrors();
-      const redo = this.ctx.device.createCommandEncoder({ label: 'broadphase regrow' });
-      const p = redo.beginComputePass({ label: 'sweep+pairs (regrow)' });
-      const rec = new Recorder(p, maxDim);
+    pass('axis', (rec) => this.axis.encode(rec, inputs.proxyAABB, n, this.state));
+    let sorted: GPUBuffer = this.items.buffer;
+    pass('sort', (rec) => {
+      this.keys.encode(rec, inputs.proxyAABB, n, this.state, this.items.buffer, this.indirect);
+      sorted = this.sort.encode(rec, this.items.buffer, this.itemsTmp.buffer, digitPasses(32, 0), this.state, STATE.ENTRIES, {
+        indirect: this.indirect,
+        offset: ARGS.ENTRY_TILES * 4,
+      });
+    });
+    pass('sweep', (rec) => {
+      this.sweep.encodePrepare(rec, inputs, sorted, this.state, this.indirect);
       this.sweep.encodeEmit(rec, inputs, this.pairsA.buffer, this.state, this.indirect);
+    });
+    pass('pairs', (rec) => {
       this.sortedPairs = this.pairStage.encode(rec, this.sort, this.pairsA.buffer, this.pairsB.buffer, n, this.state, this.indirect);
-      p.end();
-      redo.copyBufferToBuffer(this.state, 0, this.stateRead, 0, 4 * STATE_WORDS);
-      queue.submit([redo.finish()]);
-      state = await this.readState();
-    }
-    await this.ctx.checkErrors();
+    });
+    return this.sortedPairs!;
+  }
+
+  /**
+   * After a read-back that shows OVERFLOW_ENTRIES: grows the entry buffers to `total` (at least
+   * doubling). The whole update must be recorded again (beginUpdate, encodePasses).
+   */
+  growEntries(total: number): void {
+    this.entryRegrows++;
+    this.entryCapacity = Math.max(2 * this.entryCapacity, total);
+  }
+
+  /**
+   * After a read-back that shows OVERFLOW_PAIRS: grows the pair buffers to hold `found` pairs and
+   * queues the state words for a redo of the emit and the pair sort (encodeRegrow).
+   */
+  growPairs(found: number): void {
+    this.reserve(this.entryCapacity, found);
+    const cap = this.pairsA.capacity;
+    const queue = this.ctx.device.queue;
+    queue.writeBuffer(this.state, 4 * STATE.PAIR_COUNT, new Uint32Array([0]));
+    queue.writeBuffer(this.state, 4 * STATE.OVERFLOW, new Uint32Array([0]));
+    queue.writeBuffer(this.state, 4 * STATE.PAIR_CAPACITY, new Uint32Array([cap]));
+    this.sweep.setPairCapacity(cap);
+  }
+
+  /** Records the emit and the pair sort again (after growPairs); returns the sorted pairs' buffer. */
+  encodeRegrow(rec: Recorder, inputs: SweepInputs): GPUBuffer {
+    this.sweep.encodeEmit(rec, inputs, this.pairsA.buffer, this.state, this.indirect);
+    this.sortedPairs = this.pairStage.encode(rec, this.sort, this.pairsA.buffer, this.pairsB.buffer, inputs.slotCount, this.state, this.indirect);
+    return this.sortedPairs;
+  }
+
+  /** Records the state words' copy to `dst` at byte `offset` (64 bytes). */
+  encodeStateCopy(encoder: GPUCommandEncoder, dst: GPUBuffer, offset: number): void {
+    encoder.copyBufferToBuffer(this.state, 0, dst, offset, 4 * STATE_WORDS);
+  }
+
+  /** Ends an update with the state words read back; returns its result. */
+  finishUpdate(state: Uint32Array, regrows: number, dispatches: number, gpuTime: Record<string, number> | null): BroadPhaseResult {
     this.pairCount = state[STATE.PAIR_COUNT];
     this.lastState = state;
     return {
@@ -274,6 +286,61 @@ export class GpuBroadPhase {
     };
   }
 
+  private async run(source: GpuWorld | GpuProxySet): Promise<BroadPhaseResult> {
+    await this.ctx.checkErrors();
+    const maxDim = this.ctx.maxWorkgroupsPerDimension;
+    const queue = this.ctx.device.queue;
+    const readback = this.readback;
+
+    let regrows = 0;
+    let dispatches = 0;
+    let gpuTime: Record<string, number> | null = null;
+    let state: Uint32Array;
+    let inputs: SweepInputs;
+    for (;;) {
+      inputs = this.beginUpdate(source);
+      await this.ctx.checkErrors();
+      const encoder = this.ctx.device.createCommandEncoder({ label: 'broadphase' });
+      this.timer.reset();
+      dispatches = 0;
+      const pass: PassRecorder = (name, body) => {
+        const p = this.timer.beginPass(encoder, name);
+        const rec = new Recorder(p, maxDim);
+        body(rec);
+        p.end();
+        dispatches += rec.dispatches;
+      };
+      this.encodePasses(pass, inputs);
+      this.encodeStateCopy(encoder, readback.buffer, 0);
+      this.timer.resolveTo(encoder, readback.buffer, TIMER_OFFSET);
+      queue.submit([encoder.finish()]);
+      const bytes = await readback.read(this.ctx, TIMER_OFFSET + this.timer.bytes);
+      state = new Uint32Array(bytes, 0, STATE_WORDS);
+      gpuTime = this.timer.parse(bytes, TIMER_OFFSET);
+      if ((state[STATE.OVERFLOW] & OVERFLOW_ENTRIES) === 0) break;
+      // More sweep entries than room for them (not expected: see keys.ts): grow, redo everything.
+      regrows++;
+      this.growEntries(state[STATE.ENTRY_TOTAL]);
+    }
+
+    while ((state[STATE.OVERFLOW] & OVERFLOW_PAIRS) !== 0) {
+      // The GPU counted every pair it found: grow to hold them all, redo the emit and the sort.
+      regrows++;
+      this.growPairs(state[STATE.PAIR_COUNT]);
+      await this.ctx.checkErrors();
+      const redo = this.ctx.device.createCommandEncoder({ label: 'broadphase regrow' });
+      const p = redo.beginComputePass({ label: 'sweep+pairs (regrow)' });
+      const rec = new Recorder(p, maxDim);
+      this.encodeRegrow(rec, inputs);
+      p.end();
+      this.encodeStateCopy(redo, readback.buffer, 0);
+      queue.submit([redo.finish()]);
+      state = new Uint32Array(await readback.read(this.ctx, 4 * STATE_WORDS), 0, STATE_WORDS);
+    }
+    await this.ctx.checkErrors();
+    return this.finishUpdate(state, regrows, dispatches, gpuTime);
+  }
+
   /** Makes room for `entries` sweep entries and `pairs` pairs. */
   private reserve(entries: number, pairs: number): void {
     this.items.ensure(entries);
@@ -282,21 +349,6 @@ export class GpuBroadPhase {
     this.pairsA.ensure(pairs);
     this.pairsB.ensure(pairs);
     this.sort.reserve(Math.max(entries, this.pairsA.capacity));
-  }
-
-  private async readState(): Promise<Uint32Array> {
-    const lost = this.ctx.lost.then((info) => {
-      throw new Error(`device lost: ${info.message}`);
-    });
-    try {
-      await Promise.race([this.stateRead.mapAsync(MAP_READ), lost]);
-    } catch {
-      this.ctx.assertAlive();
-      throw new Error('GpuBroadPhase: reading the state back failed');
-    }
-    const words = new Uint32Array(this.stateRead.getMappedRange().slice(0));
-    this.stateRead.unmap();
-    return words;
   }
 
   /** Copies a GPU buffer's first `bytes` bytes to the CPU. */
@@ -330,7 +382,7 @@ export class GpuBroadPhase {
     for (const a of [this.proxyAABBs, this.items, this.itemsTmp, this.pairsA, this.pairsB]) a.destroy();
     this.state.destroy();
     this.indirect.destroy();
-    this.stateRead.destroy();
+    this.readback.destroy();
     this.timer.destroy();
   }
 }

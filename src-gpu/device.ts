@@ -125,6 +125,12 @@ export class GpuContext {
   readonly timestamps: boolean;
   /** Resolves when the device is lost. */
   readonly lost: Promise<GpuLossInfo>;
+  /**
+   * Rejects (with GpuDeviceLostError) when the device is lost, never settles otherwise: race a
+   * GPU promise against it. One promise for the context's life, so that racing it every step adds
+   * nothing (a `lost.then(...)` per read would pile reactions onto a promise that never settles).
+   */
+  readonly lostRejection: Promise<never>;
   /** Set when the device is lost. */
   lossInfo: GpuLossInfo | null = null;
   /**
@@ -159,6 +165,10 @@ export class GpuContext {
       onLost?.(loss);
       return loss;
     });
+    this.lostRejection = this.lost.then((info) => {
+      throw new GpuDeviceLostError(info.reason, info.message);
+    });
+    this.lostRejection.catch(() => undefined);
     device.addEventListener('uncapturederror', (event: Event) => {
       const error = (event as GPUUncapturedErrorEvent).error;
       if (this.firstError === null) {

@@ -32,3 +32,5 @@ export { GpuProxySet } from './proxies';
 export type { RawProxies } from './proxies';
 export { AABB_EXTENSION } from './bounds';
 export * as layout from './layout';
+export { GpuNarrowPhase } from './narrowPhase';
+export type { GpuNarrowPhaseOptions, NarrowPhaseUpdateOptions, NarrowPhaseResult, GpuContactRecord, GpuContactEvent } from './narrowPhase';

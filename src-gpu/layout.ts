@@ -48,12 +48,33 @@
  *   proxyRef    vec4<u32>  fixture slot, child index, body slot, flag word: shape type (bits 0-1),
  *                          body type (bits 2-3), PROXY_LIVE, PROXY_SENSOR, PROXY_JOINTED
  *   proxyFilter vec2<u32>  categoryBits | maskBits << 16, groupIndex & 0xffff (int16 bits)
+ *   proxyKey    vec2<u32>  the engine's broad-phase proxy id (b2FixtureProxy.proxyId; the slot
+ *                          when there is none), the slot's generation (changes whenever the slot
+ *                          is given to another proxy)
  *   proxyAABB   vec4<f32>  lower.x, lower.y, upper.x, upper.y relative to the world origin cell,
  *                          written by the bounds stage; EMPTY for a dead slot
  * Broad-phase output
  *   pairs       vec2<u32>  (proxy a, proxy b), a < b, sorted by (a, b), no duplicates
  *   state       u32 x STATE_WORDS  counts and parameters passed between stages (STATE below)
  *   indirect    u32 x INDIRECT_WORDS  dispatch sizes computed on the GPU (ARGS below)
+ *
+ * Narrow-phase output (part 2, src-gpu/narrowPhase.ts; index: contact = position in this step's
+ * pair list, sorted by (proxy a, proxy b)). Two contact sets alternate: this step's and the
+ * previous step's (keys and manifolds), the rest is per step.
+ *   contactKey  vec4<u32>  proxy a, proxy b (a < b, the pair), generation of a, generation of b:
+ *                          the persistent key, sorted
+ *   contactRef  2 x vec4<u32>  (fixture A, child A, body A, bin << 4 | sensor << 1 | swapped),
+ *                          (fixture B, child B, body B, previous step's index or NO_CONTACT):
+ *                          A and B ordered as b2Contact::Create orders the fixtures
+ *   manifold    4 x vec4   [header (u32): type | pointCount << 2 | MF flags, id key 0, id key 1,
+ *                          previous index], [localNormal, localPoint] (f32), [points[0].localPoint,
+ *                          points[1].localPoint] (f32), [normalImpulse 0, tangentImpulse 0,
+ *                          normalImpulse 1, tangentImpulse 1] (f32): b2Manifold, id keys packed
+ *                          as b2ContactID::key (indexA | indexB << 8 | typeA << 16 | typeB << 24)
+ *   solverList  u32        indices of the touching non-sensor contacts, ascending (NP.SOLVER)
+ *   events      vec4<u32>  (proxy A, proxy B, EVENT_BEGIN | EVENT_END, contact index, or previous
+ *                          index | 0x80000000 for a contact gone with its pair), in contact order
+ *   npState     u32 x NP_STATE_WORDS  (NP below), npIndirect u32 x NP_INDIRECT_WORDS (NP_ARGS)
  */
 
 /** GPUBufferUsage, without relying on the WebGPU globals being installed. */
@@ -122,6 +143,68 @@ export const SHAPE_SENSOR = 0x4;
 
 export const BODY_LIVE = 0x80000000;
 export const JOINT_LIVE = 0x80000000;
+
+/** Word indices of the narrow phase's state buffer (shaders/common.wgsl NP_*). */
+export const NP = {
+  COUNT_0: 0,
+  COUNT_1: 1,
+  CONTACTS: 2,
+  PREV: 3,
+  CAPACITY: 4,
+  OVERFLOW: 5,
+  PAIRS: 6,
+  SOLVER: 7,
+  EVENTS: 8,
+  EVENT_SLOTS: 9,
+  BINS: 16,
+} as const;
+export const NP_STATE_WORDS = 32;
+
+/** Bit of npState[NP.OVERFLOW]. */
+export const OVERFLOW_CONTACTS = 1;
+
+/** Pair-type bins (shaders/common.wgsl BIN_*): contact A/B as b2Contact::Create orders them. */
+export const BIN = {
+  CIRCLES: 0,
+  POLYGON_CIRCLE: 1,
+  POLYGONS: 2,
+  EDGE_CIRCLE: 3,
+  EDGE_POLYGON: 4,
+  CHAIN_CIRCLE: 5,
+  CHAIN_POLYGON: 6,
+  SENSOR: 7,
+  NONE: 8,
+} as const;
+export const BIN_COUNT = 8;
+export const BIN_NAMES = ['circles', 'polygon-circle', 'polygons', 'edge-circle', 'edge-polygon', 'chain-circle', 'chain-polygon', 'sensor'] as const;
+
+/** Word offsets of the narrow phase's indirect triples (shaders/common.wgsl NP_ARGS_*). */
+export const NP_ARGS = {
+  CONTACTS: 0,
+  TILES: 3,
+  BLOCKS: 6,
+  PREV: 9,
+  EVENT_SLOTS: 12,
+  EVENT_BLOCKS: 15,
+  SOLVER: 18,
+  BINS: 21,
+} as const;
+export const NP_INDIRECT_WORDS = 48;
+
+/** Flags of a manifold's header word (shaders/common.wgsl MF_*); bits 0-1 type, 2-3 point count. */
+export const MF = {
+  TOUCHING: 0x10,
+  SENSOR: 0x20,
+  BEGAN: 0x40,
+  ENDED: 0x80,
+  WARM: 0x100,
+  SWAPPED: 0x200,
+} as const;
+/** u32 words per contact in the manifold buffer. */
+export const MANIFOLD_WORDS = 16;
+export const NO_CONTACT = 0xffffffff;
+export const EVENT_BEGIN = 1;
+export const EVENT_END = 2;
 
 /** The default cell size in metres (a power of two, so cell * cellSize is exact in float32). */
 export const DEFAULT_CELL_SIZE = 32;

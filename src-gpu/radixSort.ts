@@ -53,6 +53,11 @@ export class RadixSort {
     this.digitTotals = new GpuArray(ctx, 'radix digitTotals', 4, 16);
   }
 
+  /** The last pass's count of each digit (16 u32; the narrow phase's bin sizes). */
+  get digitTotalsBuffer(): GPUBuffer {
+    return this.digitTotals.buffer;
+  }
+
   /** Makes room for sorting up to `n` elements. */
   reserve(n: number): void {
     this.tileHist.ensure(16 * Math.max(1, Math.ceil(n / SORT_TILE)));

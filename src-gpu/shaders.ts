@@ -1,7 +1,8 @@
 /*
  * The WGSL of every stage, as text bundled with the code (esbuild's text loader in the builds,
  * a small plugin in vitest.config.ts for the tests). shaders/common.wgsl is prepended to each
- * stage, since WGSL has no include.
+ * stage, since WGSL has no include, and shaders/manifold.wgsl (bindings and helpers of the collide
+ * kernels) to the four narrow-phase collide stages.
  */
 
 import common from '../shaders/common.wgsl';
@@ -12,6 +13,14 @@ import radixSort from '../shaders/radixSort.wgsl';
 import scan from '../shaders/scan.wgsl';
 import sweep from '../shaders/sweep.wgsl';
 import pairs from '../shaders/pairs.wgsl';
+import manifold from '../shaders/manifold.wgsl';
+import contacts from '../shaders/contacts.wgsl';
+import collideCircle from '../shaders/collideCircle.wgsl';
+import collidePolygon from '../shaders/collidePolygon.wgsl';
+import collideEdge from '../shaders/collideEdge.wgsl';
+import overlap from '../shaders/overlap.wgsl';
+import persist from '../shaders/persist.wgsl';
+import compact from '../shaders/compact.wgsl';
 
 export const SHADERS = {
   common,
@@ -22,6 +31,13 @@ export const SHADERS = {
   scan: `${common}\n${scan}`,
   sweep: `${common}\n${sweep}`,
   pairs: `${common}\n${pairs}`,
+  contacts: `${common}\n${contacts}`,
+  collideCircle: `${common}\n${manifold}\n${collideCircle}`,
+  collidePolygon: `${common}\n${manifold}\n${collidePolygon}`,
+  collideEdge: `${common}\n${manifold}\n${collideEdge}`,
+  overlap: `${common}\n${manifold}\n${overlap}`,
+  persist: `${common}\n${persist}`,
+  compact: `${common}\n${compact}`,
 } as const;
 
 export type ShaderName = Exclude<keyof typeof SHADERS, 'common'>;

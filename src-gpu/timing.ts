@@ -1,6 +1,7 @@
 /*
  * GPU time per compute pass with timestamp queries ('timestamp-query'), when the device has them.
- * Each pass writes a timestamp at its start and end; read() gives milliseconds per pass name and
+ * Each pass writes a timestamp at its start and end; read() (its own map) or resolveTo() + parse()
+ * (copied into a read-back buffer shared with other results) give milliseconds per pass name and
  * the span from the first start to the last end.
  */
 
@@ -41,6 +42,43 @@ export class PassTimer {
     });
   }
 
+  /** Bytes the timestamps take in a read-back buffer (resolveTo). */
+  get bytes(): number {
+    return 16 * this.capacity;
+  }
+
+  /**
+   * Records the resolve of this frame's timestamps and their copy to `dst` at byte `offset` (a
+   * multiple of 8), so that they come back with the other results in one map; parse() reads them.
+   */
+  resolveTo(encoder: GPUCommandEncoder, dst: GPUBuffer, offset: number): void {
+    if (!this.enabled || this.names.length === 0) return;
+    const n = 2 * this.names.length;
+    encoder.resolveQuerySet(this.querySet!, 0, n, this.resolveBuffer!, 0);
+    encoder.copyBufferToBuffer(this.resolveBuffer!, 0, dst, offset, 8 * n);
+  }
+
+  /** Milliseconds per pass and `total` from bytes copied by resolveTo, or null without timestamps. */
+  parse(bytes: ArrayBuffer, offset: number): Record<string, number> | null {
+    if (!this.enabled || this.names.length === 0) return null;
+    return this.times(new BigInt64Array(bytes, offset, 2 * this.names.length));
+  }
+
+  private times(t: BigInt64Array): Record<string, number> {
+    const out: Record<string, number> = {};
+    let first = t[0];
+    let last = t[1];
+    for (let i = 0; i < this.names.length; ++i) {
+      const begin = t[2 * i];
+      const end = t[2 * i + 1];
+      if (begin < first) first = begin;
+      if (end > last) last = end;
+      out[this.names[i]] = (out[this.names[i]] ?? 0) + Number(end - begin) / 1e6;
+    }
+    out.total = Number(last - first) / 1e6;
+    return out;
+  }
+
   /** Records the resolve of this frame's timestamps (after the last pass). */
   resolve(encoder: GPUCommandEncoder): void {
     if (!this.enabled || this.names.length === 0) return;
@@ -56,18 +94,7 @@ export class PassTimer {
     await buffer.mapAsync(MAP_READ, 0, 16 * this.names.length);
     const t = new BigInt64Array(buffer.getMappedRange(0, 16 * this.names.length).slice(0));
     buffer.unmap();
-    const out: Record<string, number> = {};
-    let first = t[0];
-    let last = t[1];
-    for (let i = 0; i < this.names.length; ++i) {
-      const begin = t[2 * i];
-      const end = t[2 * i + 1];
-      if (begin < first) first = begin;
-      if (end > last) last = end;
-      out[this.names[i]] = (out[this.names[i]] ?? 0) + Number(end - begin) / 1e6;
-    }
-    out.total = Number(last - first) / 1e6;
-    return out;
+    return this.times(t);
   }
 
   destroy(): void {

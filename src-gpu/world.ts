@@ -228,6 +228,12 @@ export class GpuWorld {
   // Proxy tables.
   readonly proxyRef: MirrorTable;
   readonly proxyFilter: MirrorTable;
+  /**
+   * Per proxy slot (layout.ts): the engine's broad-phase proxy id (b2FixtureProxy.proxyId, which
+   * orders same-type contacts as b2BroadPhase::QueryCallback does) and the slot's generation
+   * (changes whenever the slot is handed to a new proxy, so a contact key names one proxy pair).
+   */
+  readonly proxyKey: MirrorTable;
 
   /** The world has a contact filter other than the default; the GPU applies the default rules. */
   usesCustomContactFilter = false;
@@ -239,6 +245,8 @@ export class GpuWorld {
   private readonly proxySlots = new SlotAllocator<number>();
   private readonly proxyFixture: (b2Fixture | null)[] = [];
   private readonly proxyChild: number[] = [];
+  /** Generation of each proxy slot (proxyKey.y). */
+  private proxyGeneration = new Uint32Array(64);
   /** The proxy slots of each fixture slot, by child index. */
   private readonly fixtureProxies: number[][] = [];
   /** Body slots in body-list order (sync's walk). */
@@ -275,6 +283,7 @@ export class GpuWorld {
     this.shapePool = new MirrorTable(ctx, 'shapePool', 2, 256);
     this.proxyRef = new MirrorTable(ctx, 'proxyRef', 4);
     this.proxyFilter = new MirrorTable(ctx, 'proxyFilter', 2);
+    this.proxyKey = new MirrorTable(ctx, 'proxyKey', 2);
     this.allTables = [
       this.bodyXf,
       this.bodyCell,
@@ -292,6 +301,7 @@ export class GpuWorld {
       this.shapePool,
       this.proxyRef,
       this.proxyFilter,
+      this.proxyKey,
     ];
   }
 
@@ -339,6 +349,11 @@ export class GpuWorld {
   }
   get fixtureSlotCount(): number {
     return this.fixtureSlots.highWater;
+  }
+
+  /** The generation of a proxy slot: it changes whenever the slot is given to a new proxy. */
+  proxyGenerationOf(slot: number): number {
+    return slot < this.proxyGeneration.length ? this.proxyGeneration[slot] : 0;
   }
 
   /** The world position of a body slot as the GPU stores it (cell and float32 offset), in float64. */
@@ -421,6 +436,7 @@ export class GpuWorld {
       this.proxyFixture[slot] = null;
       this.proxyRef.commitWords(slot, 0, 0, 0, 0);
       this.proxyFilter.commitWords(slot, 0, 0);
+      this.proxyKey.commitWords(slot, 0, this.proxyGeneration[slot]);
     });
 
     stats.bodies.live = this.bodySlots.live;
@@ -618,8 +634,10 @@ export class GpuWorld {
     const filterWord = ((filter.categoryBits & 0xffff) | ((filter.maskBits & 0xffff) << 16)) >>> 0;
     const group = filter.groupIndex & 0xffff;
     const proxies = this.proxySlots;
+    const engineProxies = (f as { m_proxies?: { proxyId: number }[] }).m_proxies;
     for (let child = 0; child < n; ++child) {
       let slot: number;
+      let fresh = false;
       if (child < slots.length) {
         slot = slots[child];
       } else {
@@ -627,12 +645,28 @@ export class GpuWorld {
         proxies.items[slot] = fixtureSlot;
         slots.push(slot);
         stats.proxies.created++;
+        fresh = true;
       }
       proxies.mark(slot, gen);
       this.proxyFixture[slot] = f;
       this.proxyChild[slot] = child;
       this.proxyRef.commitWords(slot, fixtureSlot, child, bodySlot, word);
       this.proxyFilter.commitWords(slot, filterWord, group);
+      // The engine's proxy id orders same-type contacts (b2BroadPhase::QueryCallback puts the
+      // lower id first, b2Contact::Create makes it fixture A); without one (a synthetic world),
+      // the slot orders them. A new proxy in the slot, or a new engine proxy (the body was
+      // deactivated and reactivated between syncs), gets a new generation.
+      const engineId = engineProxies?.[child]?.proxyId;
+      const order = typeof engineId === 'number' && engineId >= 0 ? engineId : slot;
+      if (slot >= this.proxyGeneration.length) {
+        let size = this.proxyGeneration.length;
+        while (size <= slot) size *= 2;
+        const grown = new Uint32Array(size);
+        grown.set(this.proxyGeneration);
+        this.proxyGeneration = grown;
+      }
+      if (fresh || this.proxyKey.u32[2 * slot] !== order) this.proxyGeneration[slot] = (this.proxyGeneration[slot] + 1) >>> 0;
+      this.proxyKey.commitWords(slot, order, this.proxyGeneration[slot]);
     }
   }
 

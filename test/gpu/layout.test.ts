@@ -9,6 +9,8 @@ import { readdirSync, readFileSync } from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { expect, it } from 'vitest';
+import { b2ContactFeature, b2Manifold } from '../../src/collision/b2Collision';
+import { b2_polygonRadius } from '../../src/common/b2Settings';
 import * as layout from '../../src-gpu/layout';
 
 const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
@@ -16,11 +18,26 @@ const wgsl = (name: string) => readFileSync(path.join(root, 'shaders', `${name}.
 
 function constants(source: string): Map<string, number> {
   const out = new Map<string, number>();
-  for (const m of source.matchAll(/^const (\w+): (?:u32|f32) = ([0-9.x]+)u?;/gm)) out.set(m[1], Number(m[2]));
+  for (const m of source.matchAll(/^const (\w+): (?:u32|f32) = (0x[0-9a-fA-F]+|[0-9.]+)u?;/gm)) out.set(m[1], Number(m[2]));
   return out;
 }
 
-const STAGES = ['bounds', 'axis', 'keys', 'radixSort', 'scan', 'sweep', 'pairs'];
+const STAGES = [
+  'bounds',
+  'axis',
+  'keys',
+  'radixSort',
+  'scan',
+  'sweep',
+  'pairs',
+  'contacts',
+  'collideCircle',
+  'collidePolygon',
+  'collideEdge',
+  'overlap',
+  'persist',
+  'compact',
+];
 
 it('declares the state words, indirect offsets and flags the host uses', () => {
   const c = constants(wgsl('common'));
@@ -38,11 +55,37 @@ it('declares the state words, indirect offsets and flags the host uses', () => {
   expect(Math.max(...Object.values(layout.ARGS)) + 3).toBeLessThanOrEqual(layout.INDIRECT_WORDS);
 });
 
+it('declares the narrow phase\'s state words, bins, indirect offsets and contact flags the host uses', () => {
+  const c = constants(wgsl('common'));
+  for (const [name, value] of Object.entries(layout.NP)) expect(c.get(`NP_${name}`), name).toBe(value);
+  for (const [name, value] of Object.entries(layout.NP_ARGS)) expect(c.get(`NP_ARGS_${name}`), name).toBe(value);
+  for (const [name, value] of Object.entries(layout.BIN)) expect(c.get(`BIN_${name}`), name).toBe(value);
+  for (const [name, value] of Object.entries(layout.MF)) expect(c.get(`MF_${name}`), name).toBe(value);
+  expect(c.get('BIN_COUNT')).toBe(layout.BIN_COUNT);
+  expect(c.get('OVERFLOW_CONTACTS')).toBe(layout.OVERFLOW_CONTACTS);
+  expect(c.get('NO_CONTACT')).toBe(layout.NO_CONTACT);
+  expect(c.get('EVENT_BEGIN')).toBe(layout.EVENT_BEGIN);
+  expect(c.get('EVENT_END')).toBe(layout.EVENT_END);
+  expect(layout.BIN_NAMES.length).toBe(layout.BIN_COUNT);
+  expect(layout.NP.BINS + layout.BIN_COUNT).toBeLessThan(layout.NP_STATE_WORDS);
+  expect(layout.NP_ARGS.BINS + 3 * layout.BIN_COUNT).toBeLessThanOrEqual(layout.NP_INDIRECT_WORDS);
+  // The manifold kernels use b2Manifold::Type and b2ContactFeature::Type as the engine numbers them.
+  const m = constants(wgsl('manifold'));
+  expect(m.get('E_CIRCLES')).toBe(b2Manifold.e_circles);
+  expect(m.get('E_FACE_A')).toBe(b2Manifold.e_faceA);
+  expect(m.get('E_FACE_B')).toBe(b2Manifold.e_faceB);
+  expect(m.get('F_VERTEX')).toBe(b2ContactFeature.e_vertex);
+  expect(m.get('F_FACE')).toBe(b2ContactFeature.e_face);
+  expect(m.get('POLYGON_RADIUS')).toBe(b2_polygonRadius);
+});
+
 it('uses the tile sizes the host dispatches with', () => {
   expect(constants(wgsl('radixSort')).get('TILE')).toBe(layout.SORT_TILE);
   expect(constants(wgsl('scan')).get('BLOCK')).toBe(layout.SCAN_BLOCK);
   expect(constants(wgsl('axis')).get('ITEMS_PER_GROUP')).toBe(layout.AXIS_ITEMS_PER_GROUP);
   expect(constants(wgsl('sweep')).get('CHUNK')).toBe(layout.SWEEP_CHUNK);
+  expect(constants(wgsl('contacts')).get('SORT_TILE')).toBe(layout.SORT_TILE);
+  expect(constants(wgsl('contacts')).get('SCAN_BLOCK')).toBe(layout.SCAN_BLOCK);
 });
 
 it('has one WGSL file and one host module per stage, each opening with what it reads and writes', () => {
