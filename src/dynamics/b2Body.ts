@@ -917,6 +917,7 @@ export class b2Body {
     } else {
       this.m_flags &= ~b2Body.e_bulletFlag;
     }
+    this.m_world.m_toiCandidatesStale = true;
   }
 
   /** Is this body treated like a bullet for continuous collision detection? */

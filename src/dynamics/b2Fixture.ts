@@ -195,6 +195,7 @@ export class b2Fixture {
     if (sensor !== this.m_isSensor) {
       this.m_body.SetAwake(true);
       this.m_isSensor = sensor;
+      this.m_body.m_world.m_toiCandidatesStale = true;
     }
   }
 

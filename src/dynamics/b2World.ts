@@ -185,6 +185,12 @@ export class b2World {
   private readonly m_backup1 = new b2Sweep();
   private readonly m_backup2 = new b2Sweep();
   private readonly m_toiBodies: b2Body[] = [];
+  /** Not in the C++: the contacts SolveTOI's search must visit after its first pass (IsTOICandidate). */
+  private readonly m_toiCandidates: b2Contact[] = [];
+  private m_toiCandidateCount = 0;
+  private m_toiListHead: b2Contact | null = null;
+  /** Set by b2Body.SetBullet and b2Fixture.SetSensor: SolveTOI's candidates may be out of date. */
+  m_toiCandidatesStale = false;
 
   // One query/ray-cast wrapper per nesting level, so a callback may query the world again.
   private readonly m_queryWrappers: b2WorldQueryWrapper[] = [];
@@ -1090,6 +1096,127 @@ export class b2World {
     }
   }
 
+  /**
+   * One contact of SolveTOI's search for the first TOI, as the C++ loop body: the contact's TOI
+   * (computed and cached, or the cached one), or 1.0 where the C++ skips the contact with
+   * `continue` (a skipped contact can never be the minimum, which must be below 1.0).
+   */
+  private ComputeContactTOI(c: b2Contact): number {
+    const input = this.m_toiInput;
+    const output = this.m_toiOutput;
+
+    // Is this contact disabled?
+    if (c.IsEnabled() === false) {
+      return 1.0;
+    }
+
+    // Prevent excessive sub-stepping.
+    if (c.m_toiCount > b2_maxSubSteps) {
+      return 1.0;
+    }
+
+    let alpha = 1.0;
+    if (c.m_flags & b2Contact.e_toiFlag) {
+      // This contact has a valid cached TOI.
+      alpha = c.m_toi;
+    } else {
+      const fA = c.GetFixtureA();
+      const fB = c.GetFixtureB();
+
+      // Is there a sensor?
+      if (fA.IsSensor() || fB.IsSensor()) {
+        return 1.0;
+      }
+
+      const bA = fA.GetBody();
+      const bB = fB.GetBody();
+
+      const typeA = bA.m_type;
+      const typeB = bB.m_type;
+      b2Assert(typeA === b2BodyType.b2_dynamicBody || typeB === b2BodyType.b2_dynamicBody);
+
+      const activeA = bA.IsAwake() && typeA !== b2BodyType.b2_staticBody;
+      const activeB = bB.IsAwake() && typeB !== b2BodyType.b2_staticBody;
+
+      // Is at least one body active (awake and dynamic or kinematic)?
+      if (activeA === false && activeB === false) {
+        return 1.0;
+      }
+
+      const collideA = bA.IsBullet() || typeA !== b2BodyType.b2_dynamicBody;
+      const collideB = bB.IsBullet() || typeB !== b2BodyType.b2_dynamicBody;
+
+      // Are these two non-bullet dynamic bodies?
+      if (collideA === false && collideB === false) {
+        return 1.0;
+      }
+
+      // Compute the TOI for this contact.
+      // Put the sweeps onto the same time interval.
+      let alpha0 = bA.m_sweep.alpha0;
+
+      if (bA.m_sweep.alpha0 < bB.m_sweep.alpha0) {
+        alpha0 = bB.m_sweep.alpha0;
+        bA.m_sweep.Advance(alpha0);
+      } else if (bB.m_sweep.alpha0 < bA.m_sweep.alpha0) {
+        alpha0 = bA.m_sweep.alpha0;
+        bB.m_sweep.Advance(alpha0);
+      }
+
+      b2Assert(alpha0 < 1.0);
+
+      const indexA = c.GetChildIndexA();
+      const indexB = c.GetChildIndexB();
+
+      // Compute the time of impact in interval [0, minTOI]
+      input.proxyA.Set(fA.GetShape(), indexA);
+      input.proxyB.Set(fB.GetShape(), indexB);
+      input.sweepA.Assign(bA.m_sweep);
+      input.sweepB.Assign(bB.m_sweep);
+      input.tMax = 1.0;
+
+      b2TimeOfImpact(output, input);
+
+      // Beta is the fraction of the remaining portion of the .
+      const beta = output.t;
+      if (output.state === b2TOIOutput.e_touching) {
+        alpha = b2Min(alpha0 + (1.0 - alpha0) * beta, 1.0);
+      } else {
+        alpha = 1.0;
+      }
+
+      c.m_toi = alpha;
+      c.m_flags |= b2Contact.e_toiFlag;
+    }
+
+    return alpha;
+  }
+
+  /**
+   * Not in the C++: whether SolveTOI's search must look at contact c again after its first pass.
+   * A contact without a cached TOI whose fixtures include a sensor, or whose bodies are both
+   * dynamic and not bullets, is skipped by every pass, and nothing in a step changes that except
+   * b2Body.SetBullet and b2Fixture.SetSensor called from a callback, which set
+   * m_toiCandidatesStale for a full search again (b2Body.SetType, which would, is refused while
+   * the world is locked). In a pyramid of n boxes that leaves the few contacts with the ground, so
+   * the searches after the first cost those instead of every contact, with the same result.
+   */
+  private static IsTOICandidate(c: b2Contact): boolean {
+    if (c.m_flags & b2Contact.e_toiFlag) {
+      return true;
+    }
+    const fA = c.m_fixtureA;
+    const fB = c.m_fixtureB;
+    if (fA.m_isSensor || fB.m_isSensor) {
+      return false;
+    }
+    const bA = fA.m_body;
+    const bB = fB.m_body;
+    const collideA = bA.IsBullet() || bA.m_type !== b2BodyType.b2_dynamicBody;
+    const collideB = bB.IsBullet() || bB.m_type !== b2BodyType.b2_dynamicBody;
+    return collideA || collideB;
+  }
+
   /** Find TOI contacts and solve them. */
   SolveTOI(step: Readonly<b2TimeStep>): void {
     const island = this.m_island;
@@ -1107,12 +1234,12 @@ export class b2World {
       }
     }
 
-    const input = this.m_toiInput;
-    const output = this.m_toiOutput;
     const backup1 = this.m_backup1;
     const backup2 = this.m_backup2;
     const backup = this.m_backup;
     const bodies = this.m_toiBodies;
+    const candidates = this.m_toiCandidates;
+    let fullSearch = true;
 
     // Find TOI events and solve them.
     for (;;) {
@@ -1120,102 +1247,50 @@ export class b2World {
       let minContact: b2Contact | null = null;
       let minAlpha = 1.0;
 
-      for (let c = this.m_contactManager.m_contactList; c; c = c.m_next) {
-        if (invalidateTOI) {
-          // Invalidate TOI
-          c.m_flags &= ~(b2Contact.e_toiFlag | b2Contact.e_islandFlag);
-          c.m_toiCount = 0;
-          c.m_toi = 1.0;
+      if (fullSearch || this.m_toiCandidatesStale) {
+        fullSearch = false;
+        this.m_toiCandidatesStale = false;
+        let count = 0;
+        for (let c = this.m_contactManager.m_contactList; c; c = c.m_next) {
+          if (invalidateTOI) {
+            // Invalidate TOI
+            c.m_flags &= ~(b2Contact.e_toiFlag | b2Contact.e_islandFlag);
+            c.m_toiCount = 0;
+            c.m_toi = 1.0;
+          }
+
+          if (b2World.IsTOICandidate(c)) {
+            candidates[count++] = c;
+          }
+
+          const alpha = this.ComputeContactTOI(c);
+          if (alpha < minAlpha) {
+            // This is the minimum TOI found so far.
+            minContact = c;
+            minAlpha = alpha;
+          }
         }
-
-        // Is this contact disabled?
-        if (c.IsEnabled() === false) {
-          continue;
+        this.m_toiCandidateCount = count;
+        this.m_toiListHead = this.m_contactManager.m_contactList;
+      } else {
+        // The same search over the same list order: first the contacts created since the full
+        // search (AddPair puts them at the head of the list), then the candidates it kept.
+        const head = this.m_toiListHead;
+        for (let c = this.m_contactManager.m_contactList; c !== head && c !== null; c = c.m_next) {
+          const alpha = this.ComputeContactTOI(c);
+          if (alpha < minAlpha) {
+            minContact = c;
+            minAlpha = alpha;
+          }
         }
-
-        // Prevent excessive sub-stepping.
-        if (c.m_toiCount > b2_maxSubSteps) {
-          continue;
-        }
-
-        let alpha = 1.0;
-        if (c.m_flags & b2Contact.e_toiFlag) {
-          // This contact has a valid cached TOI.
-          alpha = c.m_toi;
-        } else {
-          const fA = c.GetFixtureA();
-          const fB = c.GetFixtureB();
-
-          // Is there a sensor?
-          if (fA.IsSensor() || fB.IsSensor()) {
-            continue;
+        const count = this.m_toiCandidateCount;
+        for (let i = 0; i < count; ++i) {
+          const c = candidates[i];
+          const alpha = this.ComputeContactTOI(c);
+          if (alpha < minAlpha) {
+            minContact = c;
+            minAlpha = alpha;
           }
-
-          const bA = fA.GetBody();
-          const bB = fB.GetBody();
-
-          const typeA = bA.m_type;
-          const typeB = bB.m_type;
-          b2Assert(typeA === b2BodyType.b2_dynamicBody || typeB === b2BodyType.b2_dynamicBody);
-
-          const activeA = bA.IsAwake() && typeA !== b2BodyType.b2_staticBody;
-          const activeB = bB.IsAwake() && typeB !== b2BodyType.b2_staticBody;
-
-          // Is at least one body active (awake and dynamic or kinematic)?
-          if (activeA === false && activeB === false) {
-            continue;
-          }
-
-          const collideA = bA.IsBullet() || typeA !== b2BodyType.b2_dynamicBody;
-          const collideB = bB.IsBullet() || typeB !== b2BodyType.b2_dynamicBody;
-
-          // Are these two non-bullet dynamic bodies?
-          if (collideA === false && collideB === false) {
-            continue;
-          }
-
-          // Compute the TOI for this contact.
-          // Put the sweeps onto the same time interval.
-          let alpha0 = bA.m_sweep.alpha0;
-
-          if (bA.m_sweep.alpha0 < bB.m_sweep.alpha0) {
-            alpha0 = bB.m_sweep.alpha0;
-            bA.m_sweep.Advance(alpha0);
-          } else if (bB.m_sweep.alpha0 < bA.m_sweep.alpha0) {
-            alpha0 = bA.m_sweep.alpha0;
-            bB.m_sweep.Advance(alpha0);
-          }
-
-          b2Assert(alpha0 < 1.0);
-
-          const indexA = c.GetChildIndexA();
-          const indexB = c.GetChildIndexB();
-
-          // Compute the time of impact in interval [0, minTOI]
-          input.proxyA.Set(fA.GetShape(), indexA);
-          input.proxyB.Set(fB.GetShape(), indexB);
-          input.sweepA.Assign(bA.m_sweep);
-          input.sweepB.Assign(bB.m_sweep);
-          input.tMax = 1.0;
-
-          b2TimeOfImpact(output, input);
-
-          // Beta is the fraction of the remaining portion of the .
-          const beta = output.t;
-          if (output.state === b2TOIOutput.e_touching) {
-            alpha = b2Min(alpha0 + (1.0 - alpha0) * beta, 1.0);
-          } else {
-            alpha = 1.0;
-          }
-
-          c.m_toi = alpha;
-          c.m_flags |= b2Contact.e_toiFlag;
-        }
-
-        if (alpha < minAlpha) {
-          // This is the minimum TOI found so far.
-          minContact = c;
-          minAlpha = alpha;
         }
       }
       invalidateTOI = false;

@@ -18,6 +18,7 @@ import {
 import { b2Contact } from '../../src/dynamics/contacts/b2Contact';
 import { b2DistanceJointDef } from '../../src/dynamics/joints/b2DistanceJoint';
 import type { b2Joint } from '../../src/dynamics/joints/b2Joint';
+import { motionDigest } from '../support/invariants';
 
 const h = 1.0 / 60.0;
 
@@ -603,6 +604,56 @@ describe('b2World continuous collision: bullets (2.2.1 SolveTOI rules)', () => {
     expect(ball.GetPosition().y).toBeGreaterThan(0.05 + 0.1 - 3.0 * 0.005);
     expect(ball.GetPosition().y).toBeLessThan(0.2);
     expect(plate.GetPosition().y).toBe(0.0);
+  });
+
+  // SolveTOI's searches after the first visit only the contacts that can have a TOI (see
+  // b2World.IsTOICandidate). A callback inside SolveTOI can turn a skipped contact into a candidate
+  // with SetBullet or SetSensor; the search must then see it in the same step, as the C++'s full
+  // walk does.
+  function bulletFromCallback(everyContactACandidate: boolean, setBullet: boolean) {
+    const world = new b2World(new b2Vec2(0.0, 0.0));
+    if (everyContactACandidate) {
+      (b2World as unknown as { IsTOICandidate: () => boolean }).IsTOICandidate = () => true;
+    }
+    const wall = createBody(world, b2BodyType.b2_staticBody, -10.0, 0.0);
+    addBox(wall, 2.0, 0.05, 1.0);
+    const plate = createBody(world, b2BodyType.b2_dynamicBody, 10.0, 0.0);
+    addBox(plate, 2.0, 0.05, 1.0);
+    const balls = [-10.0, 10.0].map((x) => {
+      const bd = new b2BodyDef();
+      bd.type = b2BodyType.b2_dynamicBody;
+      bd.position.Set(x, 1.0);
+      bd.linearVelocity.Set(0.0, -120.0);
+      const ball = world.CreateBody(bd);
+      addCircle(ball, 0.1, 1.0);
+      return ball;
+    });
+    const listener = new b2ContactListener();
+    let calls = 0;
+    listener.BeginContact = () => {
+      // The left ball reaches the static wall in SolveTOI: make the right ball a bullet then.
+      if (setBullet) balls[1].SetBullet(true);
+      calls++;
+    };
+    world.SetContactListener(listener);
+    world.Step(h, 8, 3);
+    return { y: balls[1].GetPosition().y, plateY: plate.GetPosition().y, digest: motionDigest(world), calls };
+  }
+
+  it('sees a contact that a callback inside SolveTOI made a bullet contact, in the same step, as the C++ full search', () => {
+    const original = (b2World as unknown as { IsTOICandidate: unknown }).IsTOICandidate;
+    try {
+      const skipped = bulletFromCallback(false, false);
+      // Without the callback the right ball tunnels through the dynamic plate.
+      expect(skipped.y).toBe(1.0 + h * -120.0);
+      const fast = bulletFromCallback(false, true);
+      expect(fast.calls).toBeGreaterThan(0);
+      expect(fast.y).toBeGreaterThan(fast.plateY + 0.05 + 0.1 - 3.0 * 0.005);
+      const full = bulletFromCallback(true, true);
+      expect(fast.digest).toBe(full.digest);
+    } finally {
+      (b2World as unknown as { IsTOICandidate: unknown }).IsTOICandidate = original;
+    }
   });
 });
 
