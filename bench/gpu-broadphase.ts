@@ -426,7 +426,7 @@ function svgChart(rows: Row[]): string {
   const H = 460;
   const m = { l: 70, r: 200, t: 30, b: 50 };
   const xs = rows.map((r) => r.proxies);
-  const ys = rows.flatMap((r) => [r.gpu?.deviceMs, r.gpu?.wallMs, r.js?.ms].filter((v): v is number => v !== undefined && v > 0));
+  const ys = rows.flatMap((r) => [r.gpu?.deviceMs, r.gpu?.wallMs, r.unvalidated?.wallMs, r.js?.ms].filter((v): v is number => v !== undefined && v > 0));
   const x0 = Math.log10(Math.min(...xs)) - 0.1;
   const x1 = Math.log10(Math.max(...xs)) + 0.1;
   const y0 = Math.floor(Math.log10(Math.min(...ys)));
@@ -451,6 +451,7 @@ function svgChart(rows: Row[]): string {
   const series: [string, (r: Row) => number | undefined, string][] = [
     ['GPU device', (r) => r.gpu?.deviceMs, ''],
     ['GPU wall', (r) => r.gpu?.wallMs, '6 3'],
+    ['GPU wall, no validation', (r) => r.unvalidated?.wallMs, '1 2'],
     ['JS tree', (r) => r.js?.ms, '2 3'],
   ];
   let legend = 0;
@@ -480,6 +481,8 @@ interface Row {
   scenario: string;
   proxies: number;
   gpu: GpuRow | null;
+  /** The same update on a second device with Dawn's validation off (GpuContextOptions.skipValidation). */
+  unvalidated: GpuRow | null;
   js: JsRow | null;
 }
 
@@ -494,14 +497,14 @@ function markdown(rows: Row[], meta: Record<string, unknown>): string {
     '',
     `Device: ${meta.device}. Node ${meta.node}. ${meta.date}. Milliseconds per step, medians.`,
     '',
-    '| scenario | proxies | pairs | GPU device ms | bounds | axis | sort | sweep | pairs | empty dispatches ms | GPU wall ms | JS tree ms | JS moved | JS/GPU wall | check |',
-    '| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- |',
+    '| scenario | proxies | pairs | GPU device ms | bounds | axis | sort | sweep | pairs | empty dispatches ms | GPU wall ms | GPU wall, no validation | JS tree ms | JS moved | JS/GPU wall, no validation | check |',
+    '| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- |',
   ];
   for (const r of rows) {
     const g = r.gpu;
     const st = g?.stagesMs ?? {};
     lines.push(
-      `| ${r.scenario} | ${r.proxies} | ${g?.pairs ?? '–'} | ${fmt(g?.deviceMs)} | ${fmt(st.bounds)} | ${fmt(st.axis)} | ${fmt(st.sort)} | ${fmt(st.sweep)} | ${fmt(st.pairs)} | ${fmt(g?.overheadMs)} (${g?.dispatches ?? '–'}) | ${fmt(g?.wallMs)} | ${fmt(r.js?.ms)} | ${r.js ? `${(100 * r.js.movedFraction).toFixed(0)}%` : '–'} | ${r.js && g ? fmt(r.js.ms / g.wallMs) : '–'} | ${g?.checked === null || g === null ? '–' : g.checked ? 'ok' : 'MISMATCH'} |`,
+      `| ${r.scenario} | ${r.proxies} | ${g?.pairs ?? '–'} | ${fmt(g?.deviceMs)} | ${fmt(st.bounds)} | ${fmt(st.axis)} | ${fmt(st.sort)} | ${fmt(st.sweep)} | ${fmt(st.pairs)} | ${fmt(g?.overheadMs)} (${g?.dispatches ?? '–'}) | ${fmt(g?.wallMs)} | ${fmt(r.unvalidated?.wallMs)} | ${fmt(r.js?.ms)} | ${r.js ? `${(100 * r.js.movedFraction).toFixed(0)}%` : '–'} | ${r.js && r.unvalidated ? fmt(r.js.ms / r.unvalidated.wallMs) : '–'} | ${g?.checked === null || g === null ? '–' : g.checked ? 'ok' : 'MISMATCH'} |`,
     );
   }
   lines.push(
@@ -511,6 +514,8 @@ function markdown(rows: Row[], meta: Record<string, unknown>): string {
     'is dispatch overhead); GPU wall: GpuBroadPhase.update() from call to resolved promise (encode, submit,',
     `wait, 64-byte read-back; an empty submit round trip is ${fmt(rows.find((r) => r.gpu)?.gpu?.roundTripMs)} ms). JS tree: b2BroadPhase MoveProxy for`,
     'every body + UpdatePairs; "moved" is the share of proxies that left their fat AABB and were re-queried.',
+    'GPU wall, no validation: the same on a second device created with skipValidation (Dawn\'s skip_validation',
+    'toggle): Dawn\'s validation of each recorded command is most of the host time on the H100.',
     'check: the GPU pair count equals a CPU sweep over the same AABBs.',
   );
   return lines.join('\n') + '\n';
@@ -553,6 +558,7 @@ async function main(): Promise<number> {
       if (!finished) console.error('device lost', info);
     },
   });
+  const unvalidatedCtx = await requestGpu({ dawnOptions: ['disable-dawn-features=timestamp_quantization'], skipValidation: true });
   const a = ctx.adapterInfo;
   const deviceName = `${a.vendor} ${a.architecture} ${a.device} ${a.description}`.replace(/\s+/g, ' ').trim() + (a.software ? ' (software)' : '');
   console.error(`adapter: ${deviceName}; timestamps: ${ctx.timestamps}`);
@@ -561,13 +567,14 @@ async function main(): Promise<number> {
     for (const name of scenarios) {
       const scenario = makeScenario(name, size);
       const gpu = await runGpu(ctx, scenario, steps, values['no-check'] !== true);
+      const unvalidated = await runGpu(unvalidatedCtx, makeScenario(name, size), steps, false);
       const js = values['no-js'] || size > jsMax ? null : runJs(makeScenario(name, size), jsBudget);
-      const row: Row = { scenario: name, proxies: scenario.n, gpu, js };
+      const row: Row = { scenario: name, proxies: scenario.n, gpu, unvalidated, js };
       rows.push(row);
       console.error(
         `${name.padEnd(9)} ${String(scenario.n).padStart(8)}  pairs ${String(gpu.pairs).padStart(8)}  gpu ${fmt(gpu.deviceMs)} ms (${Object.entries(gpu.stagesMs)
           .map(([k, v]) => `${k} ${fmt(v)}`)
-          .join(', ')}; empty ${fmt(gpu.overheadMs)})  wall ${fmt(gpu.wallMs)} ms  js ${fmt(js?.ms)} ms  check ${gpu.checked}`,
+          .join(', ')}; empty ${fmt(gpu.overheadMs)})  wall ${fmt(gpu.wallMs)} ms (no validation ${fmt(unvalidated.wallMs)})  js ${fmt(js?.ms)} ms  check ${gpu.checked}`,
       );
     }
   }
@@ -580,6 +587,7 @@ async function main(): Promise<number> {
   console.error(`wrote ${path.join(outDir, 'gpu-broadphase.{json,md,svg}')}`);
   finished = true;
   ctx.destroy();
+  unvalidatedCtx.destroy();
   return rows.some((r) => r.gpu?.checked === false) ? 1 : 0;
 }
 

@@ -492,7 +492,7 @@ async function runMix(ctx: GpuContext, mix: string, contacts: number, steps: num
  */
 const VARIANTS: { name: string; options: Parameters<typeof requestGpu>[0] }[] = [
   { name: 'no timestamps', options: { timestamps: false } },
-  { name: 'skip_validation', options: { dawnOptions: ['disable-dawn-features=timestamp_quantization', 'enable-dawn-features=skip_validation'] } },
+  { name: 'skip_validation', options: { dawnOptions: ['disable-dawn-features=timestamp_quantization'], skipValidation: true } },
 ];
 
 function fmt(v: number | undefined, digits = 3): string {

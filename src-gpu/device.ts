@@ -95,6 +95,15 @@ export interface GpuContextOptions {
    * stages never read workgroup memory before writing it, and the zeroing dominates on SwiftShader).
    */
   zeroInitWorkgroupMemory?: boolean;
+  /**
+   * Node: turn off Dawn's WebGPU validation (its skip_validation toggle; default false). On the
+   * H100 it cut the host time of a broad + narrow phase step from about 25 ms of recording to
+   * about 1 ms (bench/results/gpu-narrowphase.md): Dawn validated every command, and every
+   * indirect dispatch with a dispatch of its own. Invalid use is then undefined behaviour instead
+   * of an error, so turn it on only for a pipeline whose use is tested with validation on (ours is,
+   * in CI).
+   */
+  skipValidation?: boolean;
   /** Node: replaces `import('webgpu')` (tests). */
   loadDawn?: () => Promise<DawnModule>;
   /** Node: replaces the file-system probes for drivers (tests). */
@@ -300,6 +309,7 @@ export async function requestGpu(options: GpuContextOptions = {}): Promise<GpuCo
         forceSoftware: options.forceSoftware,
         dawnOptions: options.dawnOptions,
         zeroInitWorkgroupMemory: options.zeroInitWorkgroupMemory,
+        skipValidation: options.skipValidation,
         loadDawn: options.loadDawn,
         search: options.search,
       });

@@ -175,6 +175,8 @@ export interface NodeAdapterOptions {
    * SwiftShader the zeroing made the radix sort four times slower).
    */
   zeroInitWorkgroupMemory?: boolean;
+  /** Dawn's skip_validation toggle (see GpuContextOptions.skipValidation). */
+  skipValidation?: boolean;
   /** Replaces `import('webgpu')` (tests). */
   loadDawn?: () => Promise<DawnModule>;
   /** Replaces the file system probes (tests). */
@@ -205,7 +207,10 @@ export async function requestNodeAdapter(options: NodeAdapterOptions = {}): Prom
   const platform = options.platform ?? process.platform;
   const request: GPURequestAdapterOptions = {};
   if (options.powerPreference) request.powerPreference = options.powerPreference;
-  const toggles = withToggle(options.dawnOptions ?? [], options.zeroInitWorkgroupMemory ? null : 'disable_workgroup_init');
+  const toggles = withToggle(
+    withToggle(options.dawnOptions ?? [], options.zeroInitWorkgroupMemory ? null : 'disable_workgroup_init'),
+    options.skipValidation ? 'skip_validation' : null,
+  );
 
   if (!options.forceSoftware && mayHaveHardwareAdapter(search, platform)) {
     const gpu = dawn.create(toggles);

@@ -122,6 +122,39 @@ describeGpu('devices', (ctx) => {
     custom.destroy();
   });
 
+
+  it('passes skip_validation to Dawn only when asked, and the broad phase finds the same pairs with it', async () => {
+    const seen: string[][] = [];
+    const recording = async (): Promise<DawnModule> => {
+      const dawn = await loadDawn();
+      return { ...dawn, create: (toggles: string[]) => (seen.push(toggles), dawn.create(toggles)) };
+    };
+    const pairsWith = async (skipValidation: boolean) => {
+      const gpu = await requestGpu({ loadDawn: recording, forceSoftware: true, skipValidation });
+      const world = new b2World(new b2Vec2(0, -10));
+      const box = new b2PolygonShape();
+      box.SetAsBox(0.5, 0.5);
+      for (let i = 0; i < 20; ++i) {
+        const bd = new b2BodyDef();
+        bd.type = b2_dynamicBody;
+        bd.position.Set((i % 5) * 0.9, Math.floor(i / 5) * 0.9);
+        world.CreateBody(bd).CreateFixture(box, 1);
+      }
+      const mirror = new GpuWorld(gpu, world);
+      mirror.sync();
+      const broadPhase = new GpuBroadPhase(gpu);
+      await broadPhase.update(mirror);
+      const pairs = await broadPhase.readPairs();
+      gpu.destroy();
+      return pairs;
+    };
+    const validated = await pairsWith(false);
+    const skipped = await pairsWith(true);
+    expect(seen[0].join(' ')).not.toMatch(/skip_validation/);
+    expect(seen[1].join(' ')).toMatch(/enable-dawn-features=[^ ]*skip_validation/);
+    expect(validated.length).toBeGreaterThan(0);
+    expect(skipped).toEqual(validated);
+  });
   it('reports device loss through onLost and `lost`; the JavaScript world goes on', async () => {
     const losses: GpuLossInfo[] = [];
     const lossy = await requestGpu({ onLost: (info) => losses.push(info) });
