@@ -10,13 +10,14 @@ import { readFileSync } from 'node:fs';
 import path from 'node:path';
 import { CliError, EXIT_FAILURE, EXIT_USAGE } from './command';
 import type { CliCommand, CliContext } from './command';
+import { benchCommand } from './bench';
 import { runCommand } from './run';
 
 export type { CliCommand, CliContext } from './command';
 export { CliError, EXIT_FAILURE, EXIT_USAGE } from './command';
 
 /** The subcommands, in the order --help lists them. */
-export const commands: CliCommand[] = [runCommand];
+export const commands: CliCommand[] = [runCommand, benchCommand];
 
 function findCommand(name: string): CliCommand | undefined {
   return commands.find((c) => c.name === name);

@@ -137,7 +137,7 @@ describe('webphysics run', () => {
     const help = webphysics(['--help']);
     expect(help.status).toBe(0);
     expect(help.stdout).toMatch(/^usage: webphysics <command> \[arguments\]/);
-    expect(help.stdout).toMatch(/\n {2}run {2}step a b2dJson scene/);
+    expect(help.stdout).toMatch(/\n {2}run {4}step a b2dJson scene/);
     expect(webphysics([]).stdout).toBe(help.stdout);
     expect(webphysics(['help']).stdout).toBe(help.stdout);
     const runHelp = webphysics(['run', '--help']);
@@ -149,6 +149,16 @@ describe('webphysics run', () => {
     expect(webphysics(['help', 'run']).stdout).toBe(runHelp.stdout);
     const version = webphysics(['--version']);
     expect(version.stdout).toBe(`${JSON.parse(readFileSync(path.join(repoRoot, 'package.json'), 'utf8')).version}\n`);
+  });
+
+  it('bench runs the benchmark suite (npm run bench) from the checkout', () => {
+    const bench = webphysics(['bench', '--quick', '--scenes', 'bench2d', '--engines', 'webphysics,planck', '--sleep', 'off']);
+    expect(bench.status).toBe(0);
+    expect(bench.stdout).toMatch(/bench2d pyramid — sleeping off/);
+    expect(bench.stdout).toMatch(/\nWebPhysics [^\n]* ok/);
+    expect(bench.stdout).toMatch(/\nplanck [^\n]* ok/);
+    expect(webphysics(['help', 'bench']).stdout).toMatch(/^usage: webphysics bench \[options\]/);
+    expect(webphysics(['--help']).stdout).toMatch(/\n {2}bench {2}benchmark WebPhysics against peer engines/);
   });
 
   it('draws a progress bar when stdout is a terminal, and erases it before the report', async () => {
@@ -188,5 +198,8 @@ describe('the published package layout', () => {
     const missing = webphysics(['run', 'nothing.json'], bin);
     expect(missing.status).toBe(1);
     expect(missing.stderr).toMatch(/^webphysics run: cannot read scene .*nothing\.json: no such file\n$/);
+    const bench = webphysics(['bench'], bin);
+    expect(bench.status).toBe(1);
+    expect(bench.stderr).toMatch(/^webphysics bench: the benchmark suite is not part of the published package: run it from a checkout/);
   });
 });
