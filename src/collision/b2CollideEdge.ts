@@ -12,7 +12,7 @@ import {
   b2_polygonRadius,
   b2Assert,
 } from '../common/b2Settings';
-import { b2ClipSegmentToLine, b2ClipVertex, b2ContactFeature, b2Manifold } from './b2Collision';
+import { b2ClipSegment, b2ClipSegmentOffset, b2ClipVertex, b2ContactFeature, b2Manifold } from './b2Collision';
 import type { b2CircleShape } from './shapes/b2CircleShape';
 import type { b2EdgeShape } from './shapes/b2EdgeShape';
 import type { b2PolygonShape } from './shapes/b2PolygonShape';
@@ -509,14 +509,16 @@ class b2EPCollider {
     let np: number;
 
     // Clip to box side 1
-    np = b2ClipSegmentToLine(clipPoints1, ie, rf.sideNormal1, rf.sideOffset1, rf.i1);
+    b2ClipSegmentOffset[0] = rf.sideOffset1;
+    np = b2ClipSegment(clipPoints1, ie, rf.sideNormal1, rf.i1);
 
     if (np < b2_maxManifoldPoints) {
       return;
     }
 
     // Clip to negative box side 1
-    np = b2ClipSegmentToLine(clipPoints2, clipPoints1, rf.sideNormal2, rf.sideOffset2, rf.i2);
+    b2ClipSegmentOffset[0] = rf.sideOffset2;
+    np = b2ClipSegment(clipPoints2, clipPoints1, rf.sideNormal2, rf.i2);
 
     if (np < b2_maxManifoldPoints) {
       return;

@@ -5,7 +5,7 @@
 import { b2Vec2 } from '../common/b2Math';
 import type { b2Transform } from '../common/b2Math';
 import { b2_maxFloat, b2_maxManifoldPoints, b2Assert } from '../common/b2Settings';
-import { b2ClipSegmentToLine, b2ClipVertex, b2ContactFeature, b2Manifold } from './b2Collision';
+import { b2ClipSegment, b2ClipSegmentOffset, b2ClipVertex, b2ContactFeature, b2Manifold } from './b2Collision';
 import type { b2PolygonShape } from './shapes/b2PolygonShape';
 
 // The separations the two functions below compute are returned in these slots: a double returned
@@ -315,12 +315,14 @@ export function b2CollidePolygons(
   const clipPoints2 = s_clipPoints2;
 
   // Clip to box side 1
-  let np = b2ClipSegmentToLine(clipPoints1, incidentEdge, s_negTangent.Set(-tangentX, -tangentY), sideOffset1, iv1);
+  b2ClipSegmentOffset[0] = sideOffset1;
+  let np = b2ClipSegment(clipPoints1, incidentEdge, s_negTangent.Set(-tangentX, -tangentY), iv1);
 
   if (np < 2) return;
 
   // Clip to negative box side 1
-  np = b2ClipSegmentToLine(clipPoints2, clipPoints1, s_tangent.Set(tangentX, tangentY), sideOffset2, iv2);
+  b2ClipSegmentOffset[0] = sideOffset2;
+  np = b2ClipSegment(clipPoints2, clipPoints1, s_tangent.Set(tangentX, tangentY), iv2);
 
   if (np < 2) {
     return;

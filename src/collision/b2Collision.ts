@@ -522,6 +522,25 @@ export function b2ClipSegmentToLine(
   offset: number,
   vertexIndexA: number,
 ): number {
+  b2ClipSegmentOffset[0] = offset;
+  return b2ClipSegment(vOut, vIn, normal, vertexIndexA);
+}
+
+/** The offset argument of b2ClipSegment. */
+export const b2ClipSegmentOffset = new Float64Array(1);
+
+/**
+ * b2ClipSegmentToLine with its offset in b2ClipSegmentOffset[0], for the collide functions: V8
+ * boxes a double passed to a call it does not inline, which made this argument a heap allocation
+ * for every polygon contact of every step (most of the bytes a step allocated).
+ */
+export function b2ClipSegment(
+  vOut: readonly b2ClipVertex[],
+  vIn: readonly b2ClipVertex[],
+  normal: Readonly<b2Vec2>,
+  vertexIndexA: number,
+): number {
+  const offset = b2ClipSegmentOffset[0];
   const vIn0 = vIn[0];
   const vIn1 = vIn[1];
 

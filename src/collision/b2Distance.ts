@@ -694,7 +694,10 @@ export function b2Distance(output: b2DistanceOutput, cache: b2SimplexCache, inpu
   const pointA = output.pointA;
   const pointB = output.pointB;
   simplex.GetWitnessPoints(pointA, pointB);
-  output.distance = b2Vec2Distance(pointA, pointB);
+  // b2Distance(pointA, pointB) written out: as a call V8 does not inline, its result was boxed.
+  const dx = pointA.x - pointB.x;
+  const dy = pointA.y - pointB.y;
+  output.distance = Math.sqrt(dx * dx + dy * dy);
   output.iterations = iter;
 
   // Cache the simplex.

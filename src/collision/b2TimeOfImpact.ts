@@ -86,6 +86,13 @@ const s_axis = new b2Vec2();
 const s_pointA = new b2Vec2();
 const s_pointB = new b2Vec2();
 
+/**
+ * The separation function's time argument (s_separationIo[0]) and result (s_separationIo[1]). Its
+ * methods take and give them here, not as a double argument and return value: V8 boxes both for a
+ * call it does not inline, which was a heap allocation for each root-finder iteration of a step.
+ */
+const s_separationIo = new Float64Array(2);
+
 class b2SeparationFunction {
   static readonly e_points = 0;
   static readonly e_faceA = 1;
@@ -105,8 +112,8 @@ class b2SeparationFunction {
     sweepA: Readonly<b2Sweep>,
     proxyB: b2DistanceProxy,
     sweepB: Readonly<b2Sweep>,
-    t1: number,
-  ): number {
+  ): void {
+    const t1 = s_separationIo[0];
     this.m_proxyA = proxyA;
     this.m_proxyB = proxyB;
     const count = cache.count;
@@ -124,8 +131,8 @@ class b2SeparationFunction {
       const pointA = b2MulXV(xfA, this.m_proxyA.GetVertex(cache.indexA[0]), s_pointA);
       const pointB = b2MulXV(xfB, this.m_proxyB.GetVertex(cache.indexB[0]), s_pointB);
       axis.Set(pointB.x - pointA.x, pointB.y - pointA.y);
-      const s = axis.Normalize();
-      return s;
+      s_separationIo[1] = axis.Normalize();
+      return;
     } else if (cache.indexA[0] === cache.indexA[1]) {
       // Two points on B and one on A.
       this.m_type = b2SeparationFunction.e_faceB;
@@ -147,7 +154,8 @@ class b2SeparationFunction {
         axis.Set(-axis.x, -axis.y);
         s = -s;
       }
-      return s;
+      s_separationIo[1] = s;
+      return;
     } else {
       // Two points on A and one or two points on B.
       this.m_type = b2SeparationFunction.e_faceA;
@@ -169,11 +177,13 @@ class b2SeparationFunction {
         axis.Set(-axis.x, -axis.y);
         s = -s;
       }
-      return s;
+      s_separationIo[1] = s;
+      return;
     }
   }
 
-  FindMinSeparation(indices: b2SeparationIndices, t: number): number {
+  FindMinSeparation(indices: b2SeparationIndices): void {
+    const t = s_separationIo[0];
     const xfA = this.m_sweepA.GetTransform(s_xfA, t);
     const xfB = this.m_sweepB.GetTransform(s_xfB, t);
     const axis = this.m_axis;
@@ -188,7 +198,8 @@ class b2SeparationFunction {
         const pointB = b2MulXV(xfB, this.m_proxyB.GetVertex(indices.indexB), s_pointB);
 
         const separation = (pointB.x - pointA.x) * axis.x + (pointB.y - pointA.y) * axis.y;
-        return separation;
+        s_separationIo[1] = separation;
+        return;
       }
 
       case b2SeparationFunction.e_faceA: {
@@ -203,7 +214,8 @@ class b2SeparationFunction {
         const pointB = b2MulXV(xfB, this.m_proxyB.GetVertex(indices.indexB), s_pointB);
 
         const separation = (pointB.x - pointA.x) * normal.x + (pointB.y - pointA.y) * normal.y;
-        return separation;
+        s_separationIo[1] = separation;
+        return;
       }
 
       case b2SeparationFunction.e_faceB: {
@@ -218,7 +230,8 @@ class b2SeparationFunction {
         const pointA = b2MulXV(xfA, this.m_proxyA.GetVertex(indices.indexA), s_pointA);
 
         const separation = (pointA.x - pointB.x) * normal.x + (pointA.y - pointB.y) * normal.y;
-        return separation;
+        s_separationIo[1] = separation;
+        return;
       }
 
       default:
@@ -227,7 +240,8 @@ class b2SeparationFunction {
   }
 
   // The C++ also computes the support axes here; they decide nothing, so they are not computed.
-  Evaluate(indexA: number, indexB: number, t: number): number {
+  Evaluate(indexA: number, indexB: number): void {
+    const t = s_separationIo[0];
     const xfA = this.m_sweepA.GetTransform(s_xfA, t);
     const xfB = this.m_sweepB.GetTransform(s_xfB, t);
     const axis = this.m_axis;
@@ -237,8 +251,8 @@ class b2SeparationFunction {
         const pointA = b2MulXV(xfA, this.m_proxyA.GetVertex(indexA), s_pointA);
         const pointB = b2MulXV(xfB, this.m_proxyB.GetVertex(indexB), s_pointB);
         const separation = (pointB.x - pointA.x) * axis.x + (pointB.y - pointA.y) * axis.y;
-
-        return separation;
+        s_separationIo[1] = separation;
+        return;
       }
 
       case b2SeparationFunction.e_faceA: {
@@ -248,7 +262,8 @@ class b2SeparationFunction {
         const pointB = b2MulXV(xfB, this.m_proxyB.GetVertex(indexB), s_pointB);
 
         const separation = (pointB.x - pointA.x) * normal.x + (pointB.y - pointA.y) * normal.y;
-        return separation;
+        s_separationIo[1] = separation;
+        return;
       }
 
       case b2SeparationFunction.e_faceB: {
@@ -258,7 +273,8 @@ class b2SeparationFunction {
         const pointA = b2MulXV(xfA, this.m_proxyA.GetVertex(indexA), s_pointA);
 
         const separation = (pointA.x - pointB.x) * normal.x + (pointA.y - pointB.y) * normal.y;
-        return separation;
+        s_separationIo[1] = separation;
+        return;
       }
 
       default:
@@ -348,7 +364,8 @@ export function b2TimeOfImpact(output: b2TOIOutput, input: Readonly<b2TOIInput>)
     }
 
     // Initialize the separating axis.
-    fcn.Initialize(cache, proxyA, sweepA, proxyB, sweepB, t1);
+    s_separationIo[0] = t1;
+    fcn.Initialize(cache, proxyA, sweepA, proxyB, sweepB);
 
     // Compute the TOI on the separating axis. We do this by successively
     // resolving the deepest point. This loop is bounded by the number of vertices.
@@ -357,7 +374,9 @@ export function b2TimeOfImpact(output: b2TOIOutput, input: Readonly<b2TOIInput>)
     let pushBackIter = 0;
     for (;;) {
       // Find the deepest point at t2. Store the witness point indices.
-      let s2 = fcn.FindMinSeparation(indices, t2);
+      s_separationIo[0] = t2;
+      fcn.FindMinSeparation(indices);
+      let s2 = s_separationIo[1];
       const indexA = indices.indexA;
       const indexB = indices.indexB;
 
@@ -378,7 +397,9 @@ export function b2TimeOfImpact(output: b2TOIOutput, input: Readonly<b2TOIInput>)
       }
 
       // Compute the initial separation of the witness points.
-      let s1 = fcn.Evaluate(indexA, indexB, t1);
+      s_separationIo[0] = t1;
+      fcn.Evaluate(indexA, indexB);
+      let s1 = s_separationIo[1];
 
       // Check for initial overlap. This might happen if the root finder
       // runs out of iterations.
@@ -413,7 +434,9 @@ export function b2TimeOfImpact(output: b2TOIOutput, input: Readonly<b2TOIInput>)
           t = 0.5 * (a1 + a2);
         }
 
-        const s = fcn.Evaluate(indexA, indexB, t);
+        s_separationIo[0] = t;
+        fcn.Evaluate(indexA, indexB);
+        const s = s_separationIo[1];
 
         if (b2Abs(s - target) < tolerance) {
           // t2 holds a tentative value for t1

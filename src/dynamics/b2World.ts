@@ -189,6 +189,8 @@ export class b2World {
   private readonly m_toiCandidates: b2Contact[] = [];
   private m_toiCandidateCount = 0;
   private m_toiListHead: b2Contact | null = null;
+  /** ComputeContactTOI's result. */
+  private m_contactAlpha = 0.0;
   /** Set by b2Body.SetBullet and b2Fixture.SetSensor: SolveTOI's candidates may be out of date. */
   m_toiCandidatesStale = false;
 
@@ -1097,22 +1099,23 @@ export class b2World {
   }
 
   /**
-   * One contact of SolveTOI's search for the first TOI, as the C++ loop body: the contact's TOI
-   * (computed and cached, or the cached one), or 1.0 where the C++ skips the contact with
-   * `continue` (a skipped contact can never be the minimum, which must be below 1.0).
+   * One contact of SolveTOI's search for the first TOI, as the C++ loop body: false where the C++
+   * skips the contact with `continue`, else true with the contact's TOI (computed and cached, or
+   * the cached one) in m_contactAlpha, not returned: V8 boxes a double returned by a call it does
+   * not inline, an allocation per contact and search.
    */
-  private ComputeContactTOI(c: b2Contact): number {
+  private ComputeContactTOI(c: b2Contact): boolean {
     const input = this.m_toiInput;
     const output = this.m_toiOutput;
 
     // Is this contact disabled?
     if (c.IsEnabled() === false) {
-      return 1.0;
+      return false;
     }
 
     // Prevent excessive sub-stepping.
     if (c.m_toiCount > b2_maxSubSteps) {
-      return 1.0;
+      return false;
     }
 
     let alpha = 1.0;
@@ -1125,7 +1128,7 @@ export class b2World {
 
       // Is there a sensor?
       if (fA.IsSensor() || fB.IsSensor()) {
-        return 1.0;
+        return false;
       }
 
       const bA = fA.GetBody();
@@ -1140,7 +1143,7 @@ export class b2World {
 
       // Is at least one body active (awake and dynamic or kinematic)?
       if (activeA === false && activeB === false) {
-        return 1.0;
+        return false;
       }
 
       const collideA = bA.IsBullet() || typeA !== b2BodyType.b2_dynamicBody;
@@ -1148,7 +1151,7 @@ export class b2World {
 
       // Are these two non-bullet dynamic bodies?
       if (collideA === false && collideB === false) {
-        return 1.0;
+        return false;
       }
 
       // Compute the TOI for this contact.
@@ -1189,7 +1192,8 @@ export class b2World {
       c.m_flags |= b2Contact.e_toiFlag;
     }
 
-    return alpha;
+    this.m_contactAlpha = alpha;
+    return true;
   }
 
   /**
@@ -1263,11 +1267,10 @@ export class b2World {
             candidates[count++] = c;
           }
 
-          const alpha = this.ComputeContactTOI(c);
-          if (alpha < minAlpha) {
+          if (this.ComputeContactTOI(c) && this.m_contactAlpha < minAlpha) {
             // This is the minimum TOI found so far.
             minContact = c;
-            minAlpha = alpha;
+            minAlpha = this.m_contactAlpha;
           }
         }
         this.m_toiCandidateCount = count;
@@ -1277,19 +1280,17 @@ export class b2World {
         // search (AddPair puts them at the head of the list), then the candidates it kept.
         const head = this.m_toiListHead;
         for (let c = this.m_contactManager.m_contactList; c !== head && c !== null; c = c.m_next) {
-          const alpha = this.ComputeContactTOI(c);
-          if (alpha < minAlpha) {
+          if (this.ComputeContactTOI(c) && this.m_contactAlpha < minAlpha) {
             minContact = c;
-            minAlpha = alpha;
+            minAlpha = this.m_contactAlpha;
           }
         }
         const count = this.m_toiCandidateCount;
         for (let i = 0; i < count; ++i) {
           const c = candidates[i];
-          const alpha = this.ComputeContactTOI(c);
-          if (alpha < minAlpha) {
+          if (this.ComputeContactTOI(c) && this.m_contactAlpha < minAlpha) {
             minContact = c;
-            minAlpha = alpha;
+            minAlpha = this.m_contactAlpha;
           }
         }
       }
