@@ -190,3 +190,27 @@ const MF_SWAPPED: u32 = 0x200u;        // fixture A is the pair's second proxy (
 const NO_CONTACT: u32 = 0xffffffffu;
 const EVENT_BEGIN: u32 = 1u;
 const EVENT_END: u32 = 2u;
+
+// ---- The solver (part 3; src-gpu/layout.ts SV, SV_ARGS, COLOUR_CAP, CONSTRAINT_VEC4) ----
+
+// Word indices of the solver's state buffer (array<u32>, SV_STATE_WORDS words).
+const SV_SKIP: u32 = 0u;               // 1 when the collision passes overflowed: this submission solves nothing
+const SV_COUNT: u32 = 1u;              // solver contacts this step (npState[NP_SOLVER], or 0 when skipping)
+const SV_MIN_SEPARATION: u32 = 2u;     // sortable_key of this position iteration's minimum separation
+const SV_POSITION_ITERATIONS: u32 = 3u; // position iterations that ran (2.2.1's early exit stops the rest)
+const SV_POSITION_DONE: u32 = 4u;      // 1 once an iteration ended with every separation >= -3 b2_linearSlop and the joints within slop
+const SV_JOINT_ERROR: u32 = 5u;        // 1 when a joint of this position iteration is not within b2_linearSlop / b2_angularSlop
+const SV_COLOUR_START: u32 = 8u;       // COLOUR_CAP + 2 words: first entry of colour c in colourKeys, then the end
+
+// Colours of the graph colouring; colour COLOUR_CAP is the overflow set (solved in order by one invocation).
+const COLOUR_CAP: u32 = 24u;
+const UNCOLOURED: u32 = 0xffffffffu;
+
+// Indirect-dispatch triples of the solver (u32 word offsets in its indirect buffer).
+const SV_ARGS_CONTACTS: u32 = 0u;      // one invocation per solver contact
+const SV_ARGS_TILES: u32 = 3u;         // the colour sort, one workgroup per 1024 contacts
+const SV_ARGS_COLOURS: u32 = 6u;       // + 3 * colour: the velocity passes over one colour (COLOUR_CAP + 1 triples)
+const SV_ARGS_POSITION: u32 = 81u;     // + 3 * colour: the position passes (zeroed by the early exit)
+
+// vec4s per solver contact in the constraint buffer (solverCommon.wgsl lists them).
+const CONSTRAINT_VEC4: u32 = 13u;

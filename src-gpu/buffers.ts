@@ -88,6 +88,11 @@ export class MirrorTable {
   dirty: Uint8Array;
   /** Elements [0, count) are in use (the high-water mark of the slots). */
   count = 0;
+  /**
+   * Upload exactly the dirty elements, never clean ones in between: set when the GPU writes this
+   * table itself (the solver's body motion and joint state), so a clean element's shadow may be stale.
+   */
+  exactUploads = false;
   dirtyCount = 0;
   /** The record `commit` compares; fill it through these views, then commit(slot). */
   readonly scratchU32: Uint32Array;
@@ -154,6 +159,14 @@ export class MirrorTable {
     return true;
   }
 
+  /** Uploads element `slot` at the next flush even if it equals the shadow. */
+  markDirty(slot: number): void {
+    if (this.dirty[slot] === 0) {
+      this.dirty[slot] = 1;
+      this.dirtyCount++;
+    }
+  }
+
   /** Sets element `slot` to the words a, b, c, d (as many as the element has) and commits it. */
   commitWords(slot: number, a: number, b = 0, c = 0, d = 0): boolean {
     const s = this.scratchU32;
@@ -190,7 +203,8 @@ export class MirrorTable {
         stats.writes++;
       }
     };
-    if (this.dirtyCount * 2 > n) {
+    const gap = this.exactUploads ? 0 : MERGE_GAP;
+    if (this.dirtyCount * 2 > n && !this.exactUploads) {
       for (let i = 0; i < n; ++i) elements += dirty[i];
       write(0, n);
     } else {
@@ -201,7 +215,7 @@ export class MirrorTable {
         elements++;
         if (start < 0) {
           start = i;
-        } else if (i - end > MERGE_GAP) {
+        } else if (i - end > gap) {
           write(start, end);
           start = i;
         }

@@ -1,7 +1,8 @@
 /*
  * webphysics/gpu: the WebGPU backend (part 1: devices, the world mirrored on the GPU, and a
- * sweep-and-prune broad phase). The engine never imports this module; it reads the engine's
- * world through its public fields.
+ * sweep-and-prune broad phase; part 2: the narrow phase; part 3, in progress: the graph-coloured
+ * solver and GpuStepper). The engine never imports this module; it reads the engine's world
+ * through its public fields.
  *
  *   const gpu = await requestGpu({ onLost: (info) => console.warn('GPU lost', info) });
  *   const mirror = new GpuWorld(gpu, world);
@@ -10,6 +11,11 @@
  *   mirror.sync();                // uploads what changed
  *   const { pairCount } = await broadPhase.update(mirror);
  *   const pairs = await broadPhase.readPairs();  // (proxy a, proxy b) slots; mirror.proxyAt(a)
+ *
+ * Stepping on the GPU (contacts, revolute and distance joints; no sleeping or continuous collision yet):
+ *   const stepper = new GpuStepper(gpu, world);
+ *   await stepper.step(1 / 60, 8, 3);   // broad phase, narrow phase and solver, one submission
+ *   await stepper.readBodies();         // positions and velocities back into world's bodies
  */
 
 export {
@@ -34,3 +40,8 @@ export { AABB_EXTENSION } from './bounds';
 export * as layout from './layout';
 export { GpuNarrowPhase } from './narrowPhase';
 export type { GpuNarrowPhaseOptions, NarrowPhaseUpdateOptions, NarrowPhaseResult, GpuContactRecord, GpuContactEvent } from './narrowPhase';
+export type { NarrowPhaseOutputs } from './narrowPhase';
+export { GpuSolver } from './solver';
+export type { SolverStep, SolverInputs, SolverState } from './solver';
+export { GpuStepper } from './stepper';
+export type { GpuStepperOptions, GpuStepOptions } from './stepper';

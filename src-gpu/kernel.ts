@@ -16,6 +16,9 @@ function isBufferBinding(e: BindingEntry): e is { buffer: GPUBuffer; offset?: nu
   return (e as { buffer?: unknown }).buffer !== undefined;
 }
 
+/** Pipelines per device and (shader, entry point): stages built again (a new stepper) reuse them. */
+const pipelines = new WeakMap<GPUDevice, Map<string, GPUComputePipeline>>();
+
 export class Kernel {
   readonly ctx: GpuContext;
   readonly label: string;
@@ -25,12 +28,20 @@ export class Kernel {
   constructor(ctx: GpuContext, shader: ShaderName, entryPoint: string) {
     this.ctx = ctx;
     this.label = `${shader}.${entryPoint}`;
-    const module = ctx.shaderModule(shader, SHADERS[shader]);
-    this.pipeline = ctx.device.createComputePipeline({
-      label: this.label,
-      layout: 'auto',
-      compute: { module, entryPoint, constants: { MAX_GROUPS_PER_DIMENSION: ctx.maxWorkgroupsPerDimension } },
-    });
+    let cache = pipelines.get(ctx.device);
+    if (!cache) pipelines.set(ctx.device, (cache = new Map()));
+    const key = `${this.label}:${ctx.maxWorkgroupsPerDimension}`;
+    let pipeline = cache.get(key);
+    if (!pipeline) {
+      const module = ctx.shaderModule(shader, SHADERS[shader]);
+      pipeline = ctx.device.createComputePipeline({
+        label: this.label,
+        layout: 'auto',
+        compute: { module, entryPoint, constants: { MAX_GROUPS_PER_DIMENSION: ctx.maxWorkgroupsPerDimension } },
+      });
+      cache.set(key, pipeline);
+    }
+    this.pipeline = pipeline;
   }
 
   /** The bind group (group 0) with these buffers at these bindings; cached. */

@@ -31,6 +31,12 @@
  *   jointList  u32        body slots (see jointRange)
  *   joints     vec4<u32>  (index: joint slot) body A slot, body B slot, b2JointType,
  *                         collideConnected | JOINT_LIVE
+ *   jointParams 3 x vec4<f32>  (index: joint slot; part 3) localAnchorA, localAnchorB | revolute:
+ *                         referenceAngle, lowerAngle, upperAngle, maxMotorTorque | motorSpeed,
+ *                         enableLimit, enableMotor, 0; distance: length, frequencyHz,
+ *                         dampingRatio, 0 | 0
+ *   jointState 2 x vec4<f32>  impulse (revolute x, y, z; distance: impulse), motorImpulse |
+ *                         b2LimitState as a float: the warm-start state, GPU-owned once it steps
  * Fixture buffers (index: fixture slot)
  *   fixtureShape    vec4<u32>  type | shape flags << 4 | vertexCount << 8, pool offset,
  *                              body slot, radius (f32 bits)
@@ -75,6 +81,17 @@
  *   events      vec4<u32>  (proxy A, proxy B, EVENT_BEGIN | EVENT_END, contact index, or previous
  *                          index | 0x80000000 for a contact gone with its pair), in contact order
  *   npState     u32 x NP_STATE_WORDS  (NP below), npIndirect u32 x NP_INDIRECT_WORDS (NP_ARGS)
+ *
+ * Solver (part 3, src-gpu/solver.ts; index k: position in this step's solverList). It writes the
+ * body motion tables in place (bodySweep, bodyVel, bodyXf, bodyCell) and word 3 of the manifolds.
+ *   contactBodies  vec4<u32>  body A, body B, flags (points used, manifold points and type, which
+ *                          bodies are dynamic: shaders/solverCommon.wgsl CB_*), contact index
+ *   constraints    CONSTRAINT_VEC4 x vec4<f32>  b2ContactVelocityConstraint and
+ *                          b2ContactPositionConstraint together (rows in solverCommon.wgsl)
+ *   colours        u32        colour of each solver contact, COLOUR_CAP for the overflow set
+ *   colourKeys     vec2<u32>  (colour, k) sorted by colour, k ascending within a colour
+ *   bodyMark       2 x u32    per body slot: Jones-Plassmann priorities of the round's parity
+ *   solverState    u32 x SV_STATE_WORDS (SV below), solverIndirect u32 x SV_INDIRECT_WORDS
  */
 
 /** GPUBufferUsage, without relying on the WebGPU globals being installed. */
@@ -205,6 +222,34 @@ export const MANIFOLD_WORDS = 16;
 export const NO_CONTACT = 0xffffffff;
 export const EVENT_BEGIN = 1;
 export const EVENT_END = 2;
+
+/** Word indices of the solver's state buffer (shaders/common.wgsl SV_*). */
+export const SV = {
+  SKIP: 0,
+  COUNT: 1,
+  MIN_SEPARATION: 2,
+  POSITION_ITERATIONS: 3,
+  POSITION_DONE: 4,
+  JOINT_ERROR: 5,
+  COLOUR_START: 8,
+} as const;
+export const SV_STATE_WORDS = 40;
+
+/** Colours of the graph colouring; colour COLOUR_CAP is the overflow set. */
+export const COLOUR_CAP = 24;
+export const UNCOLOURED = 0xffffffff;
+
+/** Word offsets of the solver's indirect triples (shaders/common.wgsl SV_ARGS_*). */
+export const SV_ARGS = {
+  CONTACTS: 0,
+  TILES: 3,
+  COLOURS: 6,
+  POSITION: 81,
+} as const;
+export const SV_INDIRECT_WORDS = 160;
+
+/** vec4s per solver contact in the constraint buffer (shaders/solverCommon.wgsl). */
+export const CONSTRAINT_VEC4 = 13;
 
 /** The default cell size in metres (a power of two, so cell * cellSize is exact in float32). */
 export const DEFAULT_CELL_SIZE = 32;

@@ -21,6 +21,8 @@
  * and the passes that overflowed run again (the previous set is untouched until a step succeeds).
  * Same inputs, same outputs, bit for bit, on one device: positions come from scans and stable
  * sorts, never from atomics.
+ * Passes of later stages (the solver, part 3) join the same command buffer through the update's
+ * `after` option, which receives this recording's output buffers.
  *
  * With { wait: false } an update returns once submitted: its read-back completes in the
  * background and is looked at before the next update records anything (a ring of read-back
@@ -77,6 +79,27 @@ export interface NarrowPhaseUpdateOptions {
    * false: return once submitted (see the file header).
    */
   wait?: boolean;
+  /**
+   * Records more passes after the narrow phase's, into the same command buffer (the solver, part
+   * 3). Called once per recording: again when an overflow makes the host rerun the narrow phase,
+   * so the passes must do nothing when the state buffers show an overflow (the rerun's state
+   * has none).
+   */
+  after?: (pass: PassRecorder, outputs: NarrowPhaseOutputs) => void;
+}
+
+/** The buffers a step's later passes read (the set this recording writes). */
+export interface NarrowPhaseOutputs {
+  /** The broad phase's state (STATE: its overflow word). */
+  broadState: GPUBuffer;
+  /** The narrow phase's state (NP: counts, overflow). */
+  npState: GPUBuffer;
+  solverList: GPUBuffer;
+  contactRefs: GPUBuffer;
+  /** This step's manifolds. */
+  manifolds: GPUBuffer;
+  /** Contacts the buffers hold (a bound on every per-contact list). */
+  contactCapacity: number;
 }
 
 export interface NarrowPhaseResult {
@@ -360,14 +383,14 @@ export class GpuNarrowPhase {
     if (this.busy) throw new Error('GpuNarrowPhase.update: the previous update has not finished');
     this.busy = true;
     try {
-      return options.wait === false ? await this.runDeferred(mirror, broadPhase) : await this.runWaiting(mirror, broadPhase);
+      return options.wait === false ? await this.runDeferred(mirror, broadPhase, options.after) : await this.runWaiting(mirror, broadPhase, options.after);
     } finally {
       this.busy = false;
     }
   }
 
   /** Records the whole step (broad + narrow phase) and the copies for its read-back into `rb`. */
-  private recordStep(mirror: GpuWorld, bp: GpuBroadPhase, rb: GPUBuffer): { encoder: GPUCommandEncoder; dispatches: () => number } {
+  private recordStep(mirror: GpuWorld, bp: GpuBroadPhase, rb: GPUBuffer, after: NarrowPhaseUpdateOptions['after']): { encoder: GPUCommandEncoder; dispatches: () => number } {
     const inputs = bp.beginUpdate(mirror);
     this.beginStep(mirror);
     const encoder = this.ctx.device.createCommandEncoder({ label: 'collision step' });
@@ -383,6 +406,7 @@ export class GpuNarrowPhase {
     };
     const pairs = bp.encodePasses(pass, inputs);
     this.encodePasses(pass, mirror, pairs, bp.state, this.cur);
+    after?.(pass, this.outputs(bp.state, this.cur));
     bp.encodeStateCopy(encoder, rb, 0);
     encoder.copyBufferToBuffer(this.state, 0, rb, NP_STATE_OFFSET, 4 * NP_STATE_WORDS);
     this.timer.resolveTo(encoder, rb, TIMER_OFFSET);
@@ -417,7 +441,19 @@ export class GpuNarrowPhase {
     };
   }
 
-  private async runWaiting(mirror: GpuWorld, bp: GpuBroadPhase): Promise<NarrowPhaseResult> {
+  /** The outputs of contact set `set` for passes recorded after the narrow phase. */
+  private outputs(broadState: GPUBuffer, set: number): NarrowPhaseOutputs {
+    return {
+      broadState,
+      npState: this.state,
+      solverList: this.solverListArray.buffer,
+      contactRefs: this.contactRef.buffer,
+      manifolds: this.manifoldSets[set].buffer,
+      contactCapacity: this.capacity,
+    };
+  }
+
+  private async runWaiting(mirror: GpuWorld, bp: GpuBroadPhase, after: NarrowPhaseUpdateOptions['after']): Promise<NarrowPhaseResult> {
     await this.ctx.checkErrors();
     const queue = this.ctx.device.queue;
     const rb = this.readback;
@@ -432,7 +468,7 @@ export class GpuNarrowPhase {
     let inputs;
     for (;;) {
       const t0 = performance.now();
-      const step = this.recordStep(mirror, bp, rb.buffer);
+      const step = this.recordStep(mirror, bp, rb.buffer, after);
       inputs = bp.lastUpdateInputs;
       await this.ctx.checkErrors();
       const t1 = performance.now();
@@ -473,6 +509,7 @@ export class GpuNarrowPhase {
       };
       if (pairOverflow) pass('pairs', (rec) => (pairs = bp.encodeRegrow(rec, inputs)));
       this.encodePasses(pass, mirror, pairs, bp.state, this.cur);
+      after?.(pass, this.outputs(bp.state, this.cur));
       bp.encodeStateCopy(encoder, rb.buffer, 0);
       encoder.copyBufferToBuffer(this.state, 0, rb.buffer, NP_STATE_OFFSET, 4 * NP_STATE_WORDS);
       queue.submit([encoder.finish()]);
@@ -567,13 +604,13 @@ export class GpuNarrowPhase {
     }
   }
 
-  private async runDeferred(mirror: GpuWorld, bp: GpuBroadPhase): Promise<NarrowPhaseResult> {
+  private async runDeferred(mirror: GpuWorld, bp: GpuBroadPhase, after: NarrowPhaseUpdateOptions['after']): Promise<NarrowPhaseResult> {
     await this.ctx.checkErrors();
     this.absorbSettled(bp);
     const rb = await this.ring.next();
     this.absorbSettled(bp);
     const t0 = performance.now();
-    const step = this.recordStep(mirror, bp, rb.buffer);
+    const step = this.recordStep(mirror, bp, rb.buffer, after);
     await this.ctx.checkErrors();
     const t1 = performance.now();
     this.ctx.device.queue.submit([step.encoder.finish()]);

@@ -2,7 +2,8 @@
  * The WGSL of every stage, as text bundled with the code (esbuild's text loader in the builds,
  * a small plugin in vitest.config.ts for the tests). shaders/common.wgsl is prepended to each
  * stage, since WGSL has no include, and shaders/manifold.wgsl (bindings and helpers of the collide
- * kernels) to the four narrow-phase collide stages.
+ * kernels) to the four narrow-phase collide stages; shaders/solverCommon.wgsl (the solver's
+ * parameters, constants and helpers) to the solver stages.
  */
 
 import common from '../shaders/common.wgsl';
@@ -21,6 +22,16 @@ import collideEdge from '../shaders/collideEdge.wgsl';
 import overlap from '../shaders/overlap.wgsl';
 import persist from '../shaders/persist.wgsl';
 import compact from '../shaders/compact.wgsl';
+import solverCommon from '../shaders/solverCommon.wgsl';
+import integrateVelocities from '../shaders/integrateVelocities.wgsl';
+import prepareContacts from '../shaders/prepareContacts.wgsl';
+import colour from '../shaders/colour.wgsl';
+import warmStart from '../shaders/warmStart.wgsl';
+import solveVelocity from '../shaders/solveVelocity.wgsl';
+import storeImpulses from '../shaders/storeImpulses.wgsl';
+import integratePositions from '../shaders/integratePositions.wgsl';
+import solvePosition from '../shaders/solvePosition.wgsl';
+import solveJoints from '../shaders/solveJoints.wgsl';
 
 export const SHADERS = {
   common,
@@ -38,6 +49,15 @@ export const SHADERS = {
   overlap: `${common}\n${manifold}\n${overlap}`,
   persist: `${common}\n${persist}`,
   compact: `${common}\n${compact}`,
+  integrateVelocities: `${common}\n${solverCommon}\n${integrateVelocities}`,
+  prepareContacts: `${common}\n${solverCommon}\n${prepareContacts}`,
+  colour: `${common}\n${solverCommon}\n${colour}`,
+  warmStart: `${common}\n${solverCommon}\n${warmStart}`,
+  solveVelocity: `${common}\n${solverCommon}\n${solveVelocity}`,
+  storeImpulses: `${common}\n${solverCommon}\n${storeImpulses}`,
+  integratePositions: `${common}\n${solverCommon}\n${integratePositions}`,
+  solvePosition: `${common}\n${solverCommon}\n${solvePosition}`,
+  solveJoints: `${common}\n${solverCommon}\n${solveJoints}`,
 } as const;
 
 export type ShaderName = Exclude<keyof typeof SHADERS, 'common'>;

@@ -22,7 +22,12 @@
  * - Precision. Positions are stored as an integer cell and a float32 offset in it (layout.ts), so a
  *   body at x = 5000 m keeps its position to about 1e-6 m.
  *
- * The mirror goes one way, JavaScript to GPU. Custom contact filters (b2ContactFilter subclasses)
+ * The mirror goes one way, JavaScript to GPU, until the GPU steps the world (part 3's solver):
+ * then `gpuOwnsMotion` is set and the GPU's copy of the body motion (bodyXf, bodyCell, bodySweep,
+ * bodyVel) and of the joints' warm-start state (jointState) is the authority: sync() uploads them
+ * only for bodies and joints new to the mirror (a reused slot included), and uploads exactly the
+ * changed records of those tables. Everything else (mass, forces, damping, flags, fixtures, joint
+ * parameters) is still mirrored from the world. Custom contact filters (b2ContactFilter subclasses)
  * cannot run on the GPU: `usesCustomContactFilter` says when the world has one, and the GPU pair
  * set then follows the default filter rules.
  */
@@ -31,6 +36,8 @@ import type { b2Body } from '../src/dynamics/b2Body';
 import type { b2Fixture } from '../src/dynamics/b2Fixture';
 import type { b2World } from '../src/dynamics/b2World';
 import type { b2Joint } from '../src/dynamics/joints/b2Joint';
+import type { b2RevoluteJoint } from '../src/dynamics/joints/b2RevoluteJoint';
+import type { b2DistanceJoint } from '../src/dynamics/joints/b2DistanceJoint';
 import type { b2CircleShape } from '../src/collision/shapes/b2CircleShape';
 import type { b2EdgeShape } from '../src/collision/shapes/b2EdgeShape';
 import type { b2PolygonShape } from '../src/collision/shapes/b2PolygonShape';
@@ -53,6 +60,9 @@ import {
 const e_circle = 0;
 const e_edge = 1;
 const e_polygon = 2;
+/** b2JointType values of the joints the GPU solves (parameters in jointParams). */
+const e_revoluteJoint = 1;
+const e_distanceJoint = 3;
 
 /** A fixture slot without proxies. */
 const EMPTY_SLOTS: number[] = [];
@@ -221,6 +231,10 @@ export class GpuWorld {
   readonly jointRange: MirrorTable;
   readonly jointList: MirrorTable;
   readonly joints: MirrorTable;
+  /** Per joint slot (layout.ts): anchors and the type's parameters (revolute, distance). */
+  readonly jointParams: MirrorTable;
+  /** Per joint slot: the accumulated impulses and limit state (GPU-owned once the GPU steps). */
+  readonly jointState: MirrorTable;
   // Fixture tables.
   readonly fixtureShape: MirrorTable;
   readonly fixtureMaterial: MirrorTable;
@@ -234,6 +248,10 @@ export class GpuWorld {
    * (changes whenever the slot is handed to a new proxy, so a contact key names one proxy pair).
    */
   readonly proxyKey: MirrorTable;
+
+  private ownsMotion = false;
+  /** The tables the GPU writes once it steps (gpuOwnsMotion). */
+  private readonly gpuWrittenTables: MirrorTable[];
 
   /** The world has a contact filter other than the default; the GPU applies the default rules. */
   usesCustomContactFilter = false;
@@ -278,12 +296,15 @@ export class GpuWorld {
     this.jointRange = new MirrorTable(ctx, 'jointRange', 2);
     this.jointList = new MirrorTable(ctx, 'jointList', 1);
     this.joints = new MirrorTable(ctx, 'joints', 4);
+    this.jointParams = new MirrorTable(ctx, 'jointParams', 12);
+    this.jointState = new MirrorTable(ctx, 'jointState', 8);
     this.fixtureShape = new MirrorTable(ctx, 'fixtureShape', 4);
     this.fixtureMaterial = new MirrorTable(ctx, 'fixtureMaterial', 4);
     this.shapePool = new MirrorTable(ctx, 'shapePool', 2, 256);
     this.proxyRef = new MirrorTable(ctx, 'proxyRef', 4);
     this.proxyFilter = new MirrorTable(ctx, 'proxyFilter', 2);
     this.proxyKey = new MirrorTable(ctx, 'proxyKey', 2);
+    this.gpuWrittenTables = [this.bodyXf, this.bodyCell, this.bodySweep, this.bodyVel, this.jointState];
     this.allTables = [
       this.bodyXf,
       this.bodyCell,
@@ -296,6 +317,8 @@ export class GpuWorld {
       this.jointRange,
       this.jointList,
       this.joints,
+      this.jointParams,
+      this.jointState,
       this.fixtureShape,
       this.fixtureMaterial,
       this.shapePool,
@@ -303,6 +326,20 @@ export class GpuWorld {
       this.proxyFilter,
       this.proxyKey,
     ];
+  }
+
+  /**
+   * Whether the GPU's body motion (bodyXf, bodyCell, bodySweep, bodyVel) and joint state are the
+   * authority: sync() then writes those records only for bodies and joints new to the mirror. Set
+   * once the GPU steps the world.
+   */
+  get gpuOwnsMotion(): boolean {
+    return this.ownsMotion;
+  }
+  set gpuOwnsMotion(value: boolean) {
+    if (value === this.ownsMotion) return;
+    this.ownsMotion = value;
+    for (const table of this.gpuWrittenTables) table.exactUploads = value;
   }
 
   // ---- The mapping between engine objects and GPU indices ----
@@ -350,6 +387,9 @@ export class GpuWorld {
   get fixtureSlotCount(): number {
     return this.fixtureSlots.highWater;
   }
+  get jointSlotCount(): number {
+    return this.jointSlots.highWater;
+  }
 
   /** The generation of a proxy slot: it changes whenever the slot is given to a new proxy. */
   proxyGenerationOf(slot: number): number {
@@ -384,7 +424,7 @@ export class GpuWorld {
     for (let b = world.m_bodyList; b; b = b.m_next) {
       const slot = this.bodySlots.acquire(b, gen);
       if (this.bodySlots.created) stats.bodies.created++;
-      this.packBody(slot, b);
+      this.packBody(slot, b, this.bodySlots.created);
       if (walked === this.walkSlots.length) {
         const grown = new Int32Array(2 * this.walkSlots.length);
         grown.set(this.walkSlots);
@@ -404,6 +444,7 @@ export class GpuWorld {
       const a = this.bodySlot(j.m_bodyA);
       const b = this.bodySlot(j.m_bodyB);
       this.joints.commitWords(slot, a, b, j.m_type, (j.m_collideConnected ? 1 : 0) | JOINT_LIVE);
+      this.packJoint(slot, j, this.jointSlots.created);
       if (!j.m_collideConnected) {
         edges.push(a * 67108864 + b, b * 67108864 + a);
       }
@@ -449,7 +490,35 @@ export class GpuWorld {
     return stats;
   }
 
-  private packBody(slot: number, b: b2Body): void {
+  private packBody(slot: number, b: b2Body, created: boolean): void {
+    if (!this.ownsMotion || created) this.packMotion(slot, b, created && this.ownsMotion);
+
+    const f = this.bodyForce.scratchF32;
+    f[0] = b.m_force.x;
+    f[1] = b.m_force.y;
+    f[2] = b.m_torque;
+    f[3] = 0;
+    this.bodyForce.commit(slot);
+
+    const m = this.bodyMass.scratchF32;
+    m[0] = b.m_invMass;
+    m[1] = b.m_invI;
+    m[2] = b.m_sweep.localCenter.x;
+    m[3] = b.m_sweep.localCenter.y;
+    this.bodyMass.commit(slot);
+
+    const q = this.bodyParams.scratchF32;
+    q[0] = b.m_linearDamping;
+    q[1] = b.m_angularDamping;
+    q[2] = b.m_gravityScale;
+    q[3] = 0;
+    this.bodyParams.commit(slot);
+
+    this.bodyFlags.commitWords(slot, ((b.m_flags & 0xffff) | (b.m_type << 16) | BODY_LIVE) >>> 0);
+  }
+
+  /** Packs the motion records (cell, transform, sweep, velocity); `force` uploads them even if unchanged. */
+  private packMotion(slot: number, b: b2Body, force: boolean): void {
     const S = this.cellSize;
     const p = b.m_xf.p;
     const cx = Math.round(p.x / S);
@@ -487,29 +556,54 @@ export class GpuWorld {
     v[2] = b.m_angularVelocity;
     v[3] = 0;
     this.bodyVel.commit(slot);
+    if (force) {
+      this.bodyCell.markDirty(slot);
+      this.bodyXf.markDirty(slot);
+      this.bodySweep.markDirty(slot);
+      this.bodyVel.markDirty(slot);
+    }
+  }
 
-    const f = this.bodyForce.scratchF32;
-    f[0] = b.m_force.x;
-    f[1] = b.m_force.y;
-    f[2] = b.m_torque;
-    f[3] = 0;
-    this.bodyForce.commit(slot);
-
-    const m = this.bodyMass.scratchF32;
-    m[0] = b.m_invMass;
-    m[1] = b.m_invI;
-    m[2] = sw.localCenter.x;
-    m[3] = sw.localCenter.y;
-    this.bodyMass.commit(slot);
-
-    const q = this.bodyParams.scratchF32;
-    q[0] = b.m_linearDamping;
-    q[1] = b.m_angularDamping;
-    q[2] = b.m_gravityScale;
-    q[3] = 0;
-    this.bodyParams.commit(slot);
-
-    this.bodyFlags.commitWords(slot, ((b.m_flags & 0xffff) | (b.m_type << 16) | BODY_LIVE) >>> 0);
+  /** jointParams, and jointState unless the GPU owns it (a new joint's is always uploaded). */
+  private packJoint(slot: number, j: b2Joint, created: boolean): void {
+    const p = this.jointParams.scratchF32;
+    p.fill(0);
+    const owned = this.ownsMotion && !created;
+    const s = this.jointState.scratchF32;
+    s.fill(0);
+    if (j.m_type === e_revoluteJoint) {
+      const r = j as b2RevoluteJoint;
+      p[0] = r.m_localAnchorA.x;
+      p[1] = r.m_localAnchorA.y;
+      p[2] = r.m_localAnchorB.x;
+      p[3] = r.m_localAnchorB.y;
+      p[4] = r.m_referenceAngle;
+      p[5] = r.m_lowerAngle;
+      p[6] = r.m_upperAngle;
+      p[7] = r.m_maxMotorTorque;
+      p[8] = r.m_motorSpeed;
+      p[9] = r.m_enableLimit ? 1 : 0;
+      p[10] = r.m_enableMotor ? 1 : 0;
+      s[0] = r.m_impulse.x;
+      s[1] = r.m_impulse.y;
+      s[2] = r.m_impulse.z;
+      s[3] = r.m_motorImpulse;
+      s[4] = r.m_limitState;
+    } else if (j.m_type === e_distanceJoint) {
+      const d = j as b2DistanceJoint;
+      p[0] = d.m_localAnchorA.x;
+      p[1] = d.m_localAnchorA.y;
+      p[2] = d.m_localAnchorB.x;
+      p[3] = d.m_localAnchorB.y;
+      p[4] = d.m_length;
+      p[5] = d.m_frequencyHz;
+      p[6] = d.m_dampingRatio;
+      s[0] = d.m_impulse;
+    }
+    this.jointParams.commit(slot);
+    if (owned) return;
+    this.jointState.commit(slot);
+    if (created && this.ownsMotion) this.jointState.markDirty(slot);
   }
 
   private packJointGraph(edges: number[]): void {

@@ -10,7 +10,16 @@ import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { expect, it } from 'vitest';
 import { b2ContactFeature, b2Manifold } from '../../src/collision/b2Collision';
-import { b2_polygonRadius } from '../../src/common/b2Settings';
+import {
+  b2_baumgarte,
+  b2_linearSlop,
+  b2_maxLinearCorrection,
+  b2_maxRotation,
+  b2_maxTranslation,
+  b2_polygonRadius,
+  b2_velocityThreshold,
+} from '../../src/common/b2Settings';
+import { b2Body, b2_dynamicBody, b2_staticBody } from '../../src/dynamics/b2Body';
 import * as layout from '../../src-gpu/layout';
 
 const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
@@ -37,6 +46,15 @@ const STAGES = [
   'overlap',
   'persist',
   'compact',
+  'integrateVelocities',
+  'prepareContacts',
+  'colour',
+  'warmStart',
+  'solveVelocity',
+  'storeImpulses',
+  'integratePositions',
+  'solvePosition',
+  'solveJoints',
 ];
 
 it('declares the state words, indirect offsets and flags the host uses', () => {
@@ -77,6 +95,35 @@ it('declares the narrow phase\'s state words, bins, indirect offsets and contact
   expect(m.get('F_VERTEX')).toBe(b2ContactFeature.e_vertex);
   expect(m.get('F_FACE')).toBe(b2ContactFeature.e_face);
   expect(m.get('POLYGON_RADIUS')).toBe(b2_polygonRadius);
+});
+
+it("declares the solver's state words, indirect offsets, colour cap and 2.2.1's constants as the host and the engine use them", () => {
+  const c = constants(wgsl('common'));
+  for (const [name, value] of Object.entries(layout.SV)) expect(c.get(`SV_${name}`), name).toBe(value);
+  for (const [name, value] of Object.entries(layout.SV_ARGS)) expect(c.get(`SV_ARGS_${name}`), name).toBe(value);
+  expect(c.get('COLOUR_CAP')).toBe(layout.COLOUR_CAP);
+  expect(c.get('UNCOLOURED')).toBe(layout.UNCOLOURED);
+  expect(c.get('CONSTRAINT_VEC4')).toBe(layout.CONSTRAINT_VEC4);
+  expect(layout.SV.COLOUR_START + layout.COLOUR_CAP + 2).toBeLessThanOrEqual(layout.SV_STATE_WORDS);
+  expect(layout.SV_ARGS.COLOURS + 3 * (layout.COLOUR_CAP + 1)).toBeLessThanOrEqual(layout.SV_ARGS.POSITION);
+  expect(layout.SV_ARGS.POSITION + 3 * (layout.COLOUR_CAP + 1)).toBeLessThanOrEqual(layout.SV_INDIRECT_WORDS);
+  // The colour sort's digits (radix passes of 4 bits) hold every colour and the overflow set.
+  expect(layout.COLOUR_CAP).toBeLessThan(256);
+  const s = constants(wgsl('solverCommon'));
+  const f32 = (x: number) => Math.fround(x);
+  expect(f32(s.get('LINEAR_SLOP')!)).toBe(f32(b2_linearSlop));
+  expect(f32(s.get('BAUMGARTE')!)).toBe(f32(b2_baumgarte));
+  expect(f32(s.get('MAX_LINEAR_CORRECTION')!)).toBe(f32(b2_maxLinearCorrection));
+  expect(f32(s.get('VELOCITY_THRESHOLD')!)).toBe(f32(b2_velocityThreshold));
+  expect(f32(s.get('MAX_TRANSLATION')!)).toBe(f32(b2_maxTranslation));
+  expect(f32(s.get('MAX_ROTATION')!)).toBe(f32(b2_maxRotation));
+  expect(s.get('BODY_LIVE')).toBe(layout.BODY_LIVE);
+  expect(s.get('BODY_ACTIVE')).toBe(b2Body.e_activeFlag);
+  expect(s.get('DYNAMIC_BODY')).toBe(b2_dynamicBody);
+  expect(s.get('STATIC_BODY')).toBe(b2_staticBody);
+  expect(s.get('E_CIRCLES')).toBe(b2Manifold.e_circles);
+  expect(s.get('E_FACE_A')).toBe(b2Manifold.e_faceA);
+  expect(s.get('E_FACE_B')).toBe(b2Manifold.e_faceB);
 });
 
 it('uses the tile sizes the host dispatches with', () => {

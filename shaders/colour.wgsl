@@ -1,0 +1,172 @@
+// colour.wgsl: solver stage 3, the graph colouring of the solver contacts (hashed-priority
+// Jones-Plassmann) and the colour lists.
+//
+// In:  the broad phase's state (overflow), npState (NP_SOLVER, NP_OVERFLOW), contactBodies
+//      (bodies, which are dynamic; prepareContacts.wgsl).
+// Out: `begin` (one invocation): solverState SV_SKIP, SV_COUNT, the position-iteration words, the
+//      indirect sizes of per-contact passes and of the colour sort.
+//      `mark` / `pick` (per contact, round r = round.colour, rounds 0 .. COLOUR_CAP - 1): each
+//      uncoloured contact posts its priority (a bijective hash of k: unique, the same every run)
+//      to its dynamic bodies with atomicMax; a contact whose priority is the maximum on all its
+//      dynamic bodies takes colour r. The contacts of one colour share no dynamic body; static
+//      and kinematic bodies (never written by the solver) block nothing. The last `pick`
+//      (round COLOUR_CAP) puts what is left in the overflow set (colour COLOUR_CAP) and writes
+//      colourKeys[k] = (colour, k) for the sort (radixSort.wgsl, stable: k ascending per colour).
+//      `offsets` (one workgroup): SV_COLOUR_START (first entry of each colour in the sorted
+//      keys), the indirect size of each colour's velocity and position passes (one invocation
+//      for the overflow set, which is solved in order).
+// Invariants: bodyMark holds two words per body (round parity); round r posts to parity r & 1
+//      and clears parity (r - 1) & 1 for the contacts that posted there in round r - 1, so both
+//      are zero again after the last round, and colours depend on nothing but the contacts and
+//      their order: the same bits on every run. Priorities are compared with atomicMax, whose
+//      result does not depend on the order of the atomics.
+
+@group(0) @binding(0) var<uniform> round: ColourParams;
+@group(0) @binding(1) var<storage, read> broadState: array<u32>;
+@group(0) @binding(2) var<storage, read> npState: array<u32>;
+@group(0) @binding(3) var<storage, read_write> solverState: array<u32>;
+@group(0) @binding(4) var<storage, read_write> solverIndirect: array<u32>;
+@group(0) @binding(5) var<storage, read> contactBodies: array<vec4<u32>>;
+@group(0) @binding(6) var<storage, read_write> colours: array<u32>;
+@group(0) @binding(7) var<storage, read_write> bodyMark: array<atomic<u32>>;
+@group(0) @binding(8) var<storage, read_write> colourKeys: array<vec2<u32>>;
+
+fn write_args(offset: u32, size: vec3<u32>) {
+  solverIndirect[offset] = size.x;
+  solverIndirect[offset + 1u] = size.y;
+  solverIndirect[offset + 2u] = size.z;
+}
+
+@compute @workgroup_size(1)
+fn begin() {
+  let skip = broadState[STATE_OVERFLOW] != 0u || npState[NP_OVERFLOW] != 0u;
+  let count = select(npState[NP_SOLVER], 0u, skip);
+  solverState[SV_SKIP] = select(0u, 1u, skip);
+  solverState[SV_COUNT] = count;
+  solverState[SV_POSITION_ITERATIONS] = 0u;
+  solverState[SV_POSITION_DONE] = 0u;
+  solverState[SV_JOINT_ERROR] = 0u;
+  solverState[SV_MIN_SEPARATION] = sortable_key(0.0);
+  write_args(SV_ARGS_CONTACTS, dispatch_size(count, WORKGROUP_SIZE));
+  write_args(SV_ARGS_TILES, dispatch_size(count, 1024u));
+}
+
+// lowbias32 (C. Wellons): every step is a bijection of u32, so distinct contacts get distinct
+// priorities.
+fn priority(k: u32) -> u32 {
+  var x = k;
+  x = x ^ (x >> 16u);
+  x = x * 0x7feb352du;
+  x = x ^ (x >> 15u);
+  x = x * 0x846ca68bu;
+  x = x ^ (x >> 16u);
+  return x;
+}
+
+fn contact_index(wid: vec3<u32>, nwg: vec3<u32>, lid: u32) -> u32 {
+  let k = group_index(wid, nwg) * WORKGROUP_SIZE + lid;
+  if (k >= solverState[SV_COUNT]) {
+    return NO_CONTACT;
+  }
+  return k;
+}
+
+@compute @workgroup_size(256)
+fn mark(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: vec3<u32>,
+        @builtin(local_invocation_index) lid: u32) {
+  let k = contact_index(wid, nwg, lid);
+  if (k == NO_CONTACT) {
+    return;
+  }
+  if (round.colour == 0u) {
+    colours[k] = UNCOLOURED;
+  } else if (colours[k] != UNCOLOURED) {
+    return;
+  }
+  let cb = contactBodies[k];
+  let parity = round.colour & 1u;
+  let p = priority(k);
+  if ((cb.z & CB_DYNAMIC_A) != 0u) {
+    atomicMax(&bodyMark[2u * cb.x + parity], p);
+  }
+  if ((cb.z & CB_DYNAMIC_B) != 0u) {
+    atomicMax(&bodyMark[2u * cb.y + parity], p);
+  }
+}
+
+@compute @workgroup_size(256)
+fn pick(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: vec3<u32>,
+        @builtin(local_invocation_index) lid: u32) {
+  let k = contact_index(wid, nwg, lid);
+  if (k == NO_CONTACT) {
+    return;
+  }
+  let r = round.colour;
+  let cb = contactBodies[k];
+  let dynA = (cb.z & CB_DYNAMIC_A) != 0u;
+  let dynB = (cb.z & CB_DYNAMIC_B) != 0u;
+  var colour = colours[k];
+  // Clear what this contact posted in the previous round (the other parity).
+  if (r > 0u && (colour == UNCOLOURED || colour == r - 1u)) {
+    let previous = (r - 1u) & 1u;
+    if (dynA) {
+      atomicStore(&bodyMark[2u * cb.x + previous], 0u);
+    }
+    if (dynB) {
+      atomicStore(&bodyMark[2u * cb.y + previous], 0u);
+    }
+  }
+  if (colour != UNCOLOURED) {
+    if (r == COLOUR_CAP) {
+      colourKeys[k] = vec2<u32>(colour, k);
+    }
+    return;
+  }
+  if (r == COLOUR_CAP) {
+    colours[k] = COLOUR_CAP;
+    colourKeys[k] = vec2<u32>(COLOUR_CAP, k);
+    return;
+  }
+  let parity = r & 1u;
+  let p = priority(k);
+  let winsA = !dynA || atomicLoad(&bodyMark[2u * cb.x + parity]) == p;
+  let winsB = !dynB || atomicLoad(&bodyMark[2u * cb.y + parity]) == p;
+  if (winsA && winsB) {
+    colours[k] = r;
+  }
+}
+
+// Entries of colourKeys[0, count) with a colour below c (lower bound in the sorted keys).
+fn colour_start(c: u32, count: u32) -> u32 {
+  var lo = 0u;
+  var hi = count;
+  while (lo < hi) {
+    let mid = (lo + hi) / 2u;
+    if (colourKeys[mid].x < c) {
+      lo = mid + 1u;
+    } else {
+      hi = mid;
+    }
+  }
+  return lo;
+}
+
+@compute @workgroup_size(32)
+fn offsets(@builtin(local_invocation_index) lid: u32) {
+  if (lid > COLOUR_CAP + 1u) {
+    return;
+  }
+  let count = solverState[SV_COUNT];
+  let start = colour_start(lid, count);
+  solverState[SV_COLOUR_START + lid] = start;
+  if (lid > COLOUR_CAP) {
+    return;
+  }
+  let end = colour_start(lid + 1u, count);
+  var size = dispatch_size(end - start, WORKGROUP_SIZE);
+  if (lid == COLOUR_CAP) {
+    size = vec3<u32>(select(0u, 1u, end > start), 1u, 1u);
+  }
+  write_args(SV_ARGS_COLOURS + 3u * lid, size);
+  write_args(SV_ARGS_POSITION + 3u * lid, size);
+}

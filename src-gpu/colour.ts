@@ -1,0 +1,106 @@
+/*
+ * Solver stage 3, graph colouring (shaders/colour.wgsl + a two-pass radix sort): hashed-priority
+ * Jones-Plassmann over the solver contacts, then the contacts of each colour as one list.
+ *
+ * In:  the broad phase's and narrow phase's state (overflow flags, NP_SOLVER), contactBodies
+ *      (prepareContacts.ts: bodies, which are dynamic).
+ * Out: colours[k] in [0, COLOUR_CAP) or COLOUR_CAP (the overflow set); colourKeys: (colour, k)
+ *      sorted by colour, k ascending within one; solverState[SV.COLOUR_START + c] (COLOUR_CAP + 2
+ *      words); the indirect sizes of each colour's velocity and position passes (SV_ARGS.COLOURS,
+ *      SV_ARGS.POSITION: a 1-invocation pass for the overflow set, which is solved in order).
+ *      `encodeBegin` also sets SV.SKIP / SV.COUNT (nothing is solved when collision overflowed:
+ *      the host reruns it, and the solver with it) and the per-contact indirect sizes.
+ * Rounds: COLOUR_CAP rounds of two dispatches (post priorities with atomicMax, then pick the
+ *      local maxima), whatever the contact count: no read-back decides when to stop. A round
+ *      with nothing left to colour costs two empty-ish dispatches.
+ */
+
+import type { GpuContext } from './device';
+import { GpuArray } from './buffers';
+import { Kernel } from './kernel';
+import type { Recorder, Uniform } from './kernel';
+import { COLOUR_CAP, SV, SV_ARGS } from './layout';
+import { RadixSort, digitPasses } from './radixSort';
+import type { SortPass } from './radixSort';
+
+export interface ColourInputs {
+  broadState: GPUBuffer;
+  npState: GPUBuffer;
+  solverState: GPUBuffer;
+  solverIndirect: GPUBuffer;
+  contactBodies: GPUBuffer;
+  /** One uniform per round / colour (ColourParams), COLOUR_CAP + 1 of them. */
+  rounds: Uniform[];
+}
+
+export class ColourStage {
+  private readonly beginKernel: Kernel;
+  private readonly mark: Kernel;
+  private readonly pick: Kernel;
+  private readonly offsets: Kernel;
+  private readonly sort: RadixSort;
+  private readonly sortPasses: SortPass[] = digitPasses(Math.ceil(Math.log2(COLOUR_CAP + 1)), 0);
+  /** Colour per solver contact. */
+  readonly colours: GpuArray;
+  /** (colour, k) per solver contact; sorted by colour after encode(). */
+  readonly keys: GpuArray;
+  private readonly keysTmp: GpuArray;
+  /** Two words per body slot (round parity), zero between steps. */
+  private readonly bodyMark: GpuArray;
+
+  constructor(ctx: GpuContext) {
+    this.beginKernel = new Kernel(ctx, 'colour', 'begin');
+    this.mark = new Kernel(ctx, 'colour', 'mark');
+    this.pick = new Kernel(ctx, 'colour', 'pick');
+    this.offsets = new Kernel(ctx, 'colour', 'offsets');
+    this.sort = new RadixSort(ctx);
+    this.colours = new GpuArray(ctx, 'colours', 4, 64);
+    this.keys = new GpuArray(ctx, 'colour keys', 8, 64);
+    this.keysTmp = new GpuArray(ctx, 'colour keys tmp', 8, 64);
+    this.bodyMark = new GpuArray(ctx, 'colour body marks', 8, 64);
+  }
+
+  /** Makes room for `contacts` solver contacts and `bodies` body slots. */
+  reserve(contacts: number, bodies: number): void {
+    this.colours.ensure(contacts);
+    this.keys.ensure(contacts);
+    this.keysTmp.ensure(contacts);
+    this.sort.reserve(contacts);
+    // A new buffer is zero: the marks' invariant holds without copying.
+    this.bodyMark.ensure(bodies);
+  }
+
+  encodeBegin(rec: Recorder, io: ColourInputs): void {
+    rec.dispatch(this.beginKernel, this.beginKernel.bind({ 1: io.broadState, 2: io.npState, 3: io.solverState, 4: io.solverIndirect }), 1);
+  }
+
+  encode(rec: Recorder, io: ColourInputs): void {
+    const args = SV_ARGS.CONTACTS * 4;
+    for (let round = 0; round <= COLOUR_CAP; ++round) {
+      const u = io.rounds[round].buffer;
+      if (round < COLOUR_CAP) {
+        const group = this.mark.bind({ 0: u, 3: io.solverState, 5: io.contactBodies, 6: this.colours.buffer, 7: this.bodyMark.buffer });
+        rec.dispatchIndirect(this.mark, group, io.solverIndirect, args);
+      }
+      const group = this.pick.bind({
+        0: u,
+        3: io.solverState,
+        5: io.contactBodies,
+        6: this.colours.buffer,
+        7: this.bodyMark.buffer,
+        8: this.keys.buffer,
+      });
+      rec.dispatchIndirect(this.pick, group, io.solverIndirect, args);
+    }
+    const sorted = this.sort.encode(rec, this.keys.buffer, this.keysTmp.buffer, this.sortPasses, io.solverState, SV.COUNT, {
+      indirect: io.solverIndirect,
+      offset: SV_ARGS.TILES * 4,
+    });
+    if (sorted !== this.keys.buffer) throw new Error('colour sort: an even number of passes is expected');
+    rec.dispatch(this.offsets, this.offsets.bind({ 3: io.solverState, 4: io.solverIndirect, 8: this.keys.buffer }), 1);
+  }
+
+  destroy(): void {
+    for (const a of [this.colours, this.keys, this.keysTmp, this.bodyMark]) a.destroy();
+  }
+}

@@ -1,0 +1,37 @@
+/*
+ * Solver stage 1, integrate velocities (shaders/integrateVelocities.wgsl): b2Island::Solve's first
+ * loop for every body slot.
+ *
+ * In:  the solver's parameters (h, gravity), solverState[SV.SKIP], the mirror's bodyFlags,
+ *      bodyForce, bodyMass, bodyParams, bodySweep, bodyVel.
+ * Out: bodySweep c0 = c, a0 = a (non-static bodies); bodyVel of dynamic bodies with gravity x
+ *      gravity scale, forces and damping applied.
+ */
+
+import type { GpuContext } from './device';
+import { Kernel } from './kernel';
+import type { Recorder } from './kernel';
+import { WORKGROUP_SIZE } from './layout';
+import type { GpuWorld } from './world';
+
+export class IntegrateVelocitiesStage {
+  private readonly kernel: Kernel;
+
+  constructor(ctx: GpuContext) {
+    this.kernel = new Kernel(ctx, 'integrateVelocities', 'main');
+  }
+
+  encode(rec: Recorder, params: GPUBuffer, solverState: GPUBuffer, mirror: GpuWorld): void {
+    const group = this.kernel.bind({
+      0: params,
+      1: solverState,
+      2: mirror.bodyFlags.buffer,
+      3: mirror.bodyForce.buffer,
+      4: mirror.bodyMass.buffer,
+      5: mirror.bodyParams.buffer,
+      6: mirror.bodySweep.buffer,
+      7: mirror.bodyVel.buffer,
+    });
+    rec.dispatch(this.kernel, group, Math.ceil(mirror.bodySlotCount / WORKGROUP_SIZE));
+  }
+}

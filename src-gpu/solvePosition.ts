@@ -1,0 +1,48 @@
+/*
+ * Solver stage 9, position iterations (shaders/solvePosition.wgsl): b2ContactSolver::
+ * SolvePositionConstraints, per iteration one pass per colour (the overflow set last, in one
+ * invocation), then the joints (solveJoints.ts), then `check`: 2.2.1's early exit (minimum
+ * separation >= -3 b2_linearSlop and every joint within its slop) zeroes
+ * the position passes' indirect sizes, so later iterations dispatch no workgroups. No read-back.
+ *
+ * In:  the colour lists (colour.ts; SV_ARGS.POSITION sizes), contactBodies, constraints,
+ *      bodySweep (after integratePositions.ts).
+ * Out: bodySweep c, a of the dynamic bodies; SV.POSITION_ITERATIONS (iterations that ran),
+ *      SV.POSITION_DONE.
+ */
+
+import type { GpuContext } from './device';
+import { Kernel } from './kernel';
+import type { Recorder } from './kernel';
+import { COLOUR_CAP, SV_ARGS } from './layout';
+import type { ColourPassInputs } from './warmStart';
+
+export class SolvePositionStage {
+  private readonly kernel: Kernel;
+  private readonly check: Kernel;
+
+  constructor(ctx: GpuContext) {
+    this.kernel = new Kernel(ctx, 'solvePosition', 'main');
+    this.check = new Kernel(ctx, 'solvePosition', 'check');
+  }
+
+  /** `joints` records the joints' iteration, which runs after the contacts' (b2Island::Solve). */
+  encode(rec: Recorder, io: ColourPassInputs, bodySweep: GPUBuffer, iterations: number, joints: (rec: Recorder) => void): void {
+    const check = this.check.bind({ 1: io.solverState, 6: io.solverIndirect });
+    for (let it = 0; it < iterations; ++it) {
+      for (let c = 0; c <= COLOUR_CAP; ++c) {
+        const group = this.kernel.bind({
+          0: io.colours[c].buffer,
+          1: io.solverState,
+          2: io.colourKeys,
+          3: io.contactBodies,
+          4: io.constraints,
+          5: bodySweep,
+        });
+        rec.dispatchIndirect(this.kernel, group, io.solverIndirect, (SV_ARGS.POSITION + 3 * c) * 4);
+      }
+      joints(rec);
+      rec.dispatch(this.check, check, 1);
+    }
+  }
+}

@@ -1,0 +1,307 @@
+/*
+ * The GPU solver (part 3): b2Island::Solve for the contacts of a step, in float32, as stages
+ * recorded after the narrow phase in the same command buffer.
+ *
+ *   begin               solver state: skip when collision overflowed, the contact count  colour.ts
+ *   integrate velocities  c0 = c; gravity, forces, damping                       integrateVelocities.ts
+ *   prepare             solver contacts: masses, world manifold, K, restitution bias    prepareContacts.ts
+ *   colour              Jones-Plassmann colouring, colour lists (+ overflow set)         colour.ts
+ *   joints: prepare     revolute and distance joints: InitVelocityConstraints          solveJoints.ts
+ *   warm start          per colour, impulses x dtRatio; then the joints' (one invocation)  warmStart.ts
+ *   velocity            iterations: joints (one invocation), then colours: friction, then
+ *                       normal (block solver)                                            solveVelocity.ts
+ *   store impulses      into the manifolds' word 3 for the next step                     storeImpulses.ts
+ *   integrate positions with b2_maxTranslation / b2_maxRotation                          integratePositions.ts
+ *   position            iterations: colours, then joints; early exit as zeroed indirect
+ *                       sizes                                                            solvePosition.ts
+ *   synchronize         bodyXf from the sweep, cells                                     integratePositions.ts
+ *
+ * In:  the narrow phase's outputs of the step being recorded (solverList, contactRefs, manifolds,
+ *      npState) and the broad phase's state (overflow), the mirror's body and fixture tables.
+ * Out: bodySweep, bodyVel, bodyXf, bodyCell written in place (the GPU copy is then the authority:
+ *      GpuWorld.gpuOwnsMotion), impulses in the manifolds and in the mirror's jointState.
+ * Inputs set per step by configure(): dt, dtRatio, warm starting, gravity, iterations. Contacts
+ * and bodies in the colour's passes are solved in parallel: a colour's contacts share no dynamic
+ * body. Results are the same bits on every run on one device (no float atomics; the colouring
+ * depends only on the contacts; the overflow set is solved in contact order).
+ * Joints are solved by one invocation in joint-slot order (not coloured yet), as 2.2.1 solves an
+ * island's joints: all joints, then all contacts, each velocity iteration.
+ * Not yet: joint types other than revolute and distance, islands and sleeping (every dynamic body
+ * is simulated as awake), bullets / continuous collision, PreSolve / PostSolve.
+ */
+
+import type { GpuContext } from './device';
+import { GpuArray } from './buffers';
+import { Uniform } from './kernel';
+import type { Recorder } from './kernel';
+import type { PassRecorder } from './broadPhase';
+import { ColourStage } from './colour';
+import type { ColourInputs } from './colour';
+import { IntegrateVelocitiesStage } from './integrateVelocities';
+import { IntegratePositionsStage } from './integratePositions';
+import { PrepareContactsStage } from './prepareContacts';
+import type { PrepareInputs } from './prepareContacts';
+import { WarmStartStage } from './warmStart';
+import type { ColourPassInputs } from './warmStart';
+import { SolveVelocityStage } from './solveVelocity';
+import { StoreImpulsesStage } from './storeImpulses';
+import { SolvePositionStage } from './solvePosition';
+import { SolveJointsStage } from './solveJoints';
+import { COLOUR_CAP, CONSTRAINT_VEC4, SV, SV_INDIRECT_WORDS, SV_STATE_WORDS, USAGE } from './layout';
+import type { GpuWorld } from './world';
+
+/** The time step, as b2TimeStep carries it. */
+export interface SolverStep {
+  dt: number;
+  /** dt x the previous step's 1 / dt (0 on a world's first step): scales the warm start. */
+  dtRatio: number;
+  velocityIterations: number;
+  positionIterations: number;
+  warmStarting: boolean;
+  gravity: { x: number; y: number };
+}
+
+/** What the solver reads of the collision step being recorded. */
+export interface SolverInputs {
+  broadState: GPUBuffer;
+  npState: GPUBuffer;
+  solverList: GPUBuffer;
+  contactRefs: GPUBuffer;
+  /** This step's manifolds (the set the narrow phase writes in this submission). */
+  manifolds: GPUBuffer;
+  /** Contacts the narrow phase's buffers hold (a bound on the solver contacts). */
+  contactCapacity: number;
+}
+
+export interface SolverState {
+  skipped: boolean;
+  contacts: number;
+  positionIterations: number;
+  positionSolved: boolean;
+  /** First entry of each colour in the sorted list (COLOUR_CAP + 2 words, the last is the end). */
+  colourStart: number[];
+}
+
+export class GpuSolver {
+  readonly ctx: GpuContext;
+  /** Solver state words (layout.ts SV). */
+  readonly state: GPUBuffer;
+  /** Indirect sizes (layout.ts SV_ARGS). */
+  readonly indirect: GPUBuffer;
+  private readonly params: Uniform;
+  /** ColourParams per colour / round: colour c, serial for the overflow set. */
+  private readonly colourParams: Uniform[] = [];
+  private readonly contactBodiesArray: GpuArray;
+  private readonly constraintArray: GpuArray;
+  private readonly integrateVelocities: IntegrateVelocitiesStage;
+  private readonly prepare: PrepareContactsStage;
+  readonly colouring: ColourStage;
+  private readonly warmStart: WarmStartStage;
+  private readonly solveVelocity: SolveVelocityStage;
+  private readonly storeImpulses: StoreImpulsesStage;
+  private readonly integratePositions: IntegratePositionsStage;
+  private readonly solvePosition: SolvePositionStage;
+  private readonly joints: SolveJointsStage;
+  private readonly step: SolverStep = { dt: 0, dtRatio: 0, velocityIterations: 8, positionIterations: 3, warmStarting: true, gravity: { x: 0, y: 0 } };
+  // The step being recorded: filled in place by encode() so that recording allocates nothing.
+  private mirror: GpuWorld | null = null;
+  private readonly colourIo: ColourInputs;
+  private readonly passIo: ColourPassInputs;
+  private readonly prepareIo: PrepareInputs;
+
+  constructor(ctx: GpuContext) {
+    this.ctx = ctx;
+    this.state = ctx.createBuffer('solver state', 4 * SV_STATE_WORDS, USAGE.STORAGE | USAGE.COPY_SRC | USAGE.COPY_DST);
+    this.indirect = ctx.createBuffer('solver indirect', 4 * SV_INDIRECT_WORDS, USAGE.STORAGE | USAGE.INDIRECT | USAGE.COPY_DST);
+    this.params = new Uniform(ctx, 'solver params', 8);
+    for (let c = 0; c <= COLOUR_CAP; ++c) {
+      const u = new Uniform(ctx, `solver colour ${c}`, 4);
+      u.u32[0] = c;
+      u.u32[1] = c === COLOUR_CAP ? 1 : 0;
+      u.upload();
+      this.colourParams.push(u);
+    }
+    this.contactBodiesArray = new GpuArray(ctx, 'solver contact bodies', 16, 64);
+    this.constraintArray = new GpuArray(ctx, 'solver constraints', 16 * CONSTRAINT_VEC4, 64);
+    this.integrateVelocities = new IntegrateVelocitiesStage(ctx);
+    this.prepare = new PrepareContactsStage(ctx);
+    this.colouring = new ColourStage(ctx);
+    this.warmStart = new WarmStartStage(ctx);
+    this.solveVelocity = new SolveVelocityStage(ctx);
+    this.storeImpulses = new StoreImpulsesStage(ctx);
+    this.integratePositions = new IntegratePositionsStage(ctx);
+    this.solvePosition = new SolvePositionStage(ctx);
+    this.joints = new SolveJointsStage(ctx);
+    const placeholder = this.state;
+    this.colourIo = {
+      broadState: placeholder,
+      npState: placeholder,
+      solverState: this.state,
+      solverIndirect: this.indirect,
+      contactBodies: this.contactBodiesArray.buffer,
+      rounds: this.colourParams,
+    };
+    this.passIo = {
+      solverState: this.state,
+      solverIndirect: this.indirect,
+      colourKeys: this.colouring.keys.buffer,
+      contactBodies: this.contactBodiesArray.buffer,
+      constraints: this.constraintArray.buffer,
+      colours: this.colourParams,
+    };
+    this.prepareIo = {
+      params: this.params.buffer,
+      solverState: this.state,
+      solverIndirect: this.indirect,
+      solverList: placeholder,
+      contactRefs: placeholder,
+      manifolds: placeholder,
+      contactBodies: this.contactBodiesArray.buffer,
+      constraints: this.constraintArray.buffer,
+    };
+  }
+
+  /** Solver contact records per solver contact k (body A, body B, flags, contact index). */
+  get contactBodies(): GPUBuffer {
+    return this.contactBodiesArray.buffer;
+  }
+
+  /** Sets the time step of the steps recorded from now on (uploaded when it changed). */
+  configure(step: SolverStep, mirror: GpuWorld): void {
+    const own = this.step;
+    own.dt = step.dt;
+    own.dtRatio = step.dtRatio;
+    own.velocityIterations = step.velocityIterations;
+    own.positionIterations = step.positionIterations;
+    own.warmStarting = step.warmStarting;
+    own.gravity.x = step.gravity.x;
+    own.gravity.y = step.gravity.y;
+    const u = this.params;
+    u.f32[0] = step.dt;
+    u.f32[1] = step.dtRatio;
+    u.f32[2] = step.gravity.x;
+    u.f32[3] = step.gravity.y;
+    u.f32[4] = mirror.cellSize;
+    u.u32[5] = step.warmStarting ? 1 : 0;
+    u.u32[6] = mirror.bodySlotCount;
+    u.u32[7] = mirror.jointSlotCount;
+    u.upload();
+  }
+
+  /** Records the solver's passes for the collision step whose outputs are `io`. */
+  encode(pass: PassRecorder, mirror: GpuWorld, io: SolverInputs): void {
+    const contacts = Math.max(1, io.contactCapacity);
+    this.contactBodiesArray.ensure(contacts);
+    this.constraintArray.ensure(contacts);
+    this.colouring.reserve(contacts, Math.max(1, mirror.bodySlotCount));
+    this.mirror = mirror;
+    const c = this.colourIo;
+    c.broadState = io.broadState;
+    c.npState = io.npState;
+    c.contactBodies = this.contactBodiesArray.buffer;
+    const v = this.passIo;
+    v.colourKeys = this.colouring.keys.buffer;
+    v.contactBodies = this.contactBodiesArray.buffer;
+    v.constraints = this.constraintArray.buffer;
+    const p = this.prepareIo;
+    p.solverList = io.solverList;
+    p.contactRefs = io.contactRefs;
+    p.manifolds = io.manifolds;
+    p.contactBodies = this.contactBodiesArray.buffer;
+    p.constraints = this.constraintArray.buffer;
+    pass('solve: integrate velocities', this.encodeIntegrateVelocities);
+    pass('solve: prepare', this.encodePrepare);
+    pass('solve: colour', this.encodeColour);
+    pass('solve: velocity', this.encodeVelocity);
+    pass('solve: position', this.encodePosition);
+    this.mirror = null;
+  }
+
+  private readonly encodeIntegrateVelocities = (rec: Recorder): void => {
+    this.colouring.encodeBegin(rec, this.colourIo);
+    this.integrateVelocities.encode(rec, this.params.buffer, this.state, this.mirror!);
+  };
+
+  private readonly encodePrepare = (rec: Recorder): void => {
+    this.prepare.encode(rec, this.prepareIo, this.mirror!);
+    this.joints.encodePrepare(rec, this.params.buffer, this.mirror!);
+  };
+
+  private readonly encodeJointVelocity = (rec: Recorder): void => this.joints.encodeVelocity(rec, this.params.buffer, this.state, this.mirror!);
+
+  private readonly encodeJointPosition = (rec: Recorder): void => this.joints.encodePosition(rec, this.params.buffer, this.state, this.mirror!);
+
+  private readonly encodeColour = (rec: Recorder): void => this.colouring.encode(rec, this.colourIo);
+
+  private readonly encodeVelocity = (rec: Recorder): void => {
+    const mirror = this.mirror!;
+    if (this.step.warmStarting) this.warmStart.encode(rec, this.passIo, mirror.bodyVel.buffer);
+    // b2Island::Solve: the contacts' warm start, then the joints' (InitVelocityConstraints).
+    this.joints.encodeWarmStart(rec, this.params.buffer, this.state, mirror);
+    this.solveVelocity.encode(rec, this.passIo, mirror.bodyVel.buffer, this.step.velocityIterations, this.encodeJointVelocity);
+    this.storeImpulses.encode(rec, this.state, this.indirect, this.contactBodiesArray.buffer, this.constraintArray.buffer, this.prepareIo.manifolds);
+    this.joints.encodeStore(rec, this.params.buffer, this.state, mirror);
+    this.integratePositions.encodeIntegrate(rec, this.params.buffer, this.state, mirror);
+  };
+
+  private readonly encodePosition = (rec: Recorder): void => {
+    const mirror = this.mirror!;
+    this.solvePosition.encode(rec, this.passIo, mirror.bodySweep.buffer, this.step.positionIterations, this.encodeJointPosition);
+    this.integratePositions.encodeSynchronize(rec, this.params.buffer, this.state, mirror);
+  };
+
+  // ---- Read-back for tests and tools (not part of a step) ----
+
+  private async readBuffer(buffer: GPUBuffer, bytes: number): Promise<ArrayBuffer> {
+    this.ctx.assertAlive();
+    const size = Math.max(4, Math.ceil(bytes / 4) * 4);
+    const staging = this.ctx.createBuffer('solver debug read', size, USAGE.MAP_READ | USAGE.COPY_DST);
+    const encoder = this.ctx.device.createCommandEncoder({ label: 'solver debug read' });
+    encoder.copyBufferToBuffer(buffer, 0, staging, 0, size);
+    this.ctx.device.queue.submit([encoder.finish()]);
+    await staging.mapAsync(1);
+    const data = staging.getMappedRange().slice(0, bytes);
+    staging.unmap();
+    staging.destroy();
+    return data;
+  }
+
+  /** The solver state of the last step. */
+  async readState(): Promise<SolverState> {
+    const w = new Uint32Array(await this.readBuffer(this.state, 4 * SV_STATE_WORDS));
+    return {
+      skipped: w[SV.SKIP] !== 0,
+      contacts: w[SV.COUNT],
+      positionIterations: w[SV.POSITION_ITERATIONS],
+      positionSolved: w[SV.POSITION_DONE] !== 0,
+      colourStart: Array.from(w.subarray(SV.COLOUR_START, SV.COLOUR_START + COLOUR_CAP + 2)),
+    };
+  }
+
+  /**
+   * The last step's colouring: per solver contact k its colour (COLOUR_CAP: overflow set), its
+   * bodies and whether they are dynamic, and the sorted colour list.
+   */
+  async readColouring(): Promise<{ colours: Uint32Array; bodies: Uint32Array; keys: Uint32Array; state: SolverState }> {
+    const state = await this.readState();
+    const n = state.contacts;
+    if (n === 0) return { colours: new Uint32Array(0), bodies: new Uint32Array(0), keys: new Uint32Array(0), state };
+    return {
+      colours: new Uint32Array(await this.readBuffer(this.colouring.colours.buffer, 4 * n)),
+      bodies: new Uint32Array(await this.readBuffer(this.contactBodiesArray.buffer, 16 * n)),
+      keys: new Uint32Array(await this.readBuffer(this.colouring.keys.buffer, 8 * n)),
+      state,
+    };
+  }
+
+  destroy(): void {
+    this.state.destroy();
+    this.indirect.destroy();
+    this.params.destroy();
+    for (const u of this.colourParams) u.destroy();
+    this.contactBodiesArray.destroy();
+    this.constraintArray.destroy();
+    this.colouring.destroy();
+    this.joints.destroy();
+  }
+}

@@ -1,0 +1,186 @@
+/*
+ * Stepping a b2World on the GPU: the broad phase, the narrow phase and the solver of a step in
+ * one command buffer and one submission (two when collision overflows and the host reruns it,
+ * the solver with it), as b2World::Step orders them (Collide, then Solve; no TOI yet).
+ *
+ * In:  a b2World built with the normal API; step(dt, velocityIterations, positionIterations).
+ * Out: the bodies' motion on the GPU (GpuWorld's bodyXf, bodyCell, bodySweep, bodyVel), contacts
+ *      and impulses in the narrow phase's buffers; readBodies() copies the motion back into the
+ *      world's b2Body objects with one map.
+ * Authority: from the first step the GPU's copy of the body motion is the one that counts
+ * (GpuWorld.gpuOwnsMotion): the world's bodies keep their old positions and velocities until
+ * readBodies(), and setting them in JavaScript (SetTransform, SetLinearVelocity) is not seen by the
+ * GPU, except for bodies created after that. Everything else still flows from the world at each
+ * step: bodies and fixtures created or destroyed, masses, forces (cleared after each step when the
+ * world auto-clears them, as b2World::Step does), damping, gravity, materials.
+ * Handing over a running world: the constructor takes the world's contacts and their impulses as
+ * the previous step's (GpuNarrowPhase.seedFromWorld) and its 1 / dt of the last step, so the first
+ * GPU step warm-starts as the engine's next step would.
+ * Joints: revolute and distance joints are solved; a world with another joint type is refused
+ * (step() throws, naming the type) rather than stepped without it.
+ * Not yet (docs/GPU.md, "The solver"): the other joint types, sleeping, continuous collision
+ * (bullets), contact listeners; readBodies() does not write joint impulses back.
+ */
+
+import type { b2World } from '../src/dynamics/b2World';
+import type { GpuContext } from './device';
+import { GpuBroadPhase } from './broadPhase';
+import type { GpuBroadPhaseOptions, PassRecorder } from './broadPhase';
+import { GpuNarrowPhase } from './narrowPhase';
+import type { GpuNarrowPhaseOptions, NarrowPhaseOutputs, NarrowPhaseResult } from './narrowPhase';
+import { GpuSolver } from './solver';
+import type { SolverStep } from './solver';
+import { GpuWorld } from './world';
+import type { GpuWorldOptions } from './world';
+import { MAP_READ, USAGE } from './layout';
+
+export interface GpuStepperOptions {
+  world?: GpuWorldOptions;
+  broadPhase?: GpuBroadPhaseOptions;
+  narrowPhase?: GpuNarrowPhaseOptions;
+}
+
+export interface GpuStepOptions {
+  /** false: return once submitted (the narrow phase's { wait: false }); default true. */
+  wait?: boolean;
+}
+
+/** b2JointType values the GPU solves. */
+const e_revoluteJoint = 1;
+const e_distanceJoint = 3;
+/** b2World::e_clearForces. */
+const e_clearForces = 0x0004;
+/** Bytes per body slot in readBodies()'s staging buffer: xf 16, cell 8, sweep 32, velocity 16. */
+const BODY_READ_BYTES = 72;
+
+export class GpuStepper {
+  readonly ctx: GpuContext;
+  readonly world: b2World;
+  readonly mirror: GpuWorld;
+  readonly broadPhase: GpuBroadPhase;
+  readonly narrowPhase: GpuNarrowPhase;
+  readonly solver: GpuSolver;
+  /** Steps taken on the GPU. */
+  steps = 0;
+  private invDt0: number;
+  private staging: GPUBuffer | null = null;
+  private stagingBodies = 0;
+  private readonly solverStep: SolverStep = { dt: 0, dtRatio: 0, velocityIterations: 0, positionIterations: 0, warmStarting: true, gravity: { x: 0, y: 0 } };
+  private readonly encodeSolver = (pass: PassRecorder, outputs: NarrowPhaseOutputs): void => this.solver.encode(pass, this.mirror, outputs);
+
+  constructor(ctx: GpuContext, world: b2World, options: GpuStepperOptions = {}) {
+    this.ctx = ctx;
+    this.world = world;
+    this.mirror = new GpuWorld(ctx, world, options.world);
+    this.broadPhase = new GpuBroadPhase(ctx, options.broadPhase);
+    this.narrowPhase = new GpuNarrowPhase(ctx, options.narrowPhase);
+    this.solver = new GpuSolver(ctx);
+    this.mirror.sync();
+    this.narrowPhase.seedFromWorld(this.mirror);
+    this.invDt0 = world.m_inv_dt0;
+  }
+
+  /**
+   * One b2World::Step on the GPU. dt = 0 runs collision only (as the engine does). Resolves with the
+   * collision step's counts; with { wait: false } once submitted.
+   */
+  async step(dt: number, velocityIterations: number, positionIterations: number, options: GpuStepOptions = {}): Promise<NarrowPhaseResult> {
+    const world = this.world;
+    for (let j = world.m_jointList; j; j = j.m_next) {
+      if (j.m_type !== e_revoluteJoint && j.m_type !== e_distanceJoint) {
+        throw new Error(`GpuStepper: joints of type ${j.m_type} (b2JointType) are not solved on the GPU yet; only revolute and distance joints are`);
+      }
+    }
+    this.mirror.sync();
+    this.mirror.gpuOwnsMotion = true;
+    // The forces are on the GPU now; b2World::Step clears them after the step.
+    if ((world.m_flags & e_clearForces) !== 0) world.ClearForces();
+    const solve = dt > 0;
+    if (solve) {
+      const s = this.solverStep;
+      s.dt = dt;
+      s.dtRatio = this.invDt0 * dt;
+      s.velocityIterations = velocityIterations;
+      s.positionIterations = positionIterations;
+      s.warmStarting = world.m_warmStarting;
+      s.gravity = world.m_gravity;
+      this.solver.configure(s, this.mirror);
+    }
+    const result = await this.narrowPhase.update(this.mirror, this.broadPhase, { wait: options.wait, after: solve ? this.encodeSolver : undefined });
+    if (solve) {
+      this.invDt0 = 1 / dt;
+      world.m_inv_dt0 = this.invDt0;
+    }
+    this.steps++;
+    return result;
+  }
+
+  /**
+   * Copies the GPU's body motion into the world's bodies (m_xf, m_sweep, velocities) with one map,
+   * after every step submitted so far. Returns the number of bodies written.
+   */
+  async readBodies(): Promise<number> {
+    const ctx = this.ctx;
+    ctx.assertAlive();
+    const mirror = this.mirror;
+    const n = mirror.bodySlotCount;
+    if (n === 0) return 0;
+    if (this.staging === null || this.stagingBodies < n) {
+      this.staging?.destroy();
+      this.stagingBodies = Math.max(n, 2 * this.stagingBodies, 64);
+      this.staging = ctx.createBuffer('stepper body read-back', BODY_READ_BYTES * this.stagingBodies, USAGE.MAP_READ | USAGE.COPY_DST);
+    }
+    const staging = this.staging;
+    const encoder = ctx.device.createCommandEncoder({ label: 'stepper body read-back' });
+    encoder.copyBufferToBuffer(mirror.bodyXf.buffer, 0, staging, 0, 16 * n);
+    encoder.copyBufferToBuffer(mirror.bodyCell.buffer, 0, staging, 16 * n, 8 * n);
+    encoder.copyBufferToBuffer(mirror.bodySweep.buffer, 0, staging, 24 * n, 32 * n);
+    encoder.copyBufferToBuffer(mirror.bodyVel.buffer, 0, staging, 56 * n, 16 * n);
+    ctx.device.queue.submit([encoder.finish()]);
+    try {
+      await Promise.race([staging.mapAsync(MAP_READ, 0, BODY_READ_BYTES * n), ctx.lostRejection]);
+    } catch {
+      ctx.assertAlive();
+      throw new Error('reading the bodies back from the GPU failed');
+    }
+    const bytes = staging.getMappedRange(0, BODY_READ_BYTES * n);
+    const xf = new Float32Array(bytes, 0, 4 * n);
+    const cell = new Int32Array(bytes, 16 * n, 2 * n);
+    const sweep = new Float32Array(bytes, 24 * n, 8 * n);
+    const vel = new Float32Array(bytes, 56 * n, 4 * n);
+    const S = mirror.cellSize;
+    let written = 0;
+    for (let slot = 0; slot < n; ++slot) {
+      const b = mirror.bodyAt(slot);
+      if (b === null) continue;
+      const ox = cell[2 * slot] * S;
+      const oy = cell[2 * slot + 1] * S;
+      b.m_xf.p.x = ox + xf[4 * slot];
+      b.m_xf.p.y = oy + xf[4 * slot + 1];
+      b.m_xf.q.c = xf[4 * slot + 2];
+      b.m_xf.q.s = xf[4 * slot + 3];
+      const s = 8 * slot;
+      b.m_sweep.c0.x = ox + sweep[s];
+      b.m_sweep.c0.y = oy + sweep[s + 1];
+      b.m_sweep.a0 = sweep[s + 2];
+      b.m_sweep.alpha0 = sweep[s + 3];
+      b.m_sweep.c.x = ox + sweep[s + 4];
+      b.m_sweep.c.y = oy + sweep[s + 5];
+      b.m_sweep.a = sweep[s + 6];
+      b.m_linearVelocity.x = vel[4 * slot];
+      b.m_linearVelocity.y = vel[4 * slot + 1];
+      b.m_angularVelocity = vel[4 * slot + 2];
+      written++;
+    }
+    staging.unmap();
+    return written;
+  }
+
+  destroy(): void {
+    this.staging?.destroy();
+    this.solver.destroy();
+    this.narrowPhase.destroy();
+    this.broadPhase.destroy();
+    this.mirror.destroy();
+  }
+}

@@ -1,0 +1,38 @@
+/*
+ * Solver stage 4, warm start (shaders/warmStart.wgsl): b2ContactSolver::WarmStart, one pass per
+ * colour (the overflow set last, in one invocation).
+ *
+ * In:  the colour lists (colour.ts: colourKeys, SV.COLOUR_START, SV_ARGS.COLOURS), contactBodies,
+ *      constraints (impulses already scaled by dtRatio), bodyVel.
+ * Out: bodyVel of the dynamic bodies.
+ */
+
+import type { GpuContext } from './device';
+import { Kernel } from './kernel';
+import type { Recorder, Uniform } from './kernel';
+import { COLOUR_CAP, SV_ARGS } from './layout';
+
+export interface ColourPassInputs {
+  solverState: GPUBuffer;
+  solverIndirect: GPUBuffer;
+  colourKeys: GPUBuffer;
+  contactBodies: GPUBuffer;
+  constraints: GPUBuffer;
+  /** One uniform per colour (ColourParams), COLOUR_CAP + 1 of them. */
+  colours: Uniform[];
+}
+
+export class WarmStartStage {
+  private readonly kernel: Kernel;
+
+  constructor(ctx: GpuContext) {
+    this.kernel = new Kernel(ctx, 'warmStart', 'main');
+  }
+
+  encode(rec: Recorder, io: ColourPassInputs, bodyVel: GPUBuffer): void {
+    for (let c = 0; c <= COLOUR_CAP; ++c) {
+      const group = this.kernel.bind({ 0: io.colours[c].buffer, 1: io.solverState, 2: io.colourKeys, 3: io.contactBodies, 4: io.constraints, 5: bodyVel });
+      rec.dispatchIndirect(this.kernel, group, io.solverIndirect, (SV_ARGS.COLOURS + 3 * c) * 4);
+    }
+  }
+}
