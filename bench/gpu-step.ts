@@ -1,0 +1,521 @@
+/*
+ * The GPU backend's full step (GpuStepper: broad phase + narrow phase + solver) against the
+ * JavaScript engine stepping the same world, 10^3 to 10^6 bodies.
+ *
+ * Built into one file by `node scripts/build-gpu.mjs` (dist/bench-gpu-step.mjs, `webgpu` left
+ * external), so it runs where only Node and .device/node_modules exist:
+ *
+ *   node dist/bench-gpu-step.mjs [--sizes 1e3,1e4,1e5,1e6] [--scenes pyramids,rain] [--steps 10]
+ *        [--js-max 1e5] [--js-budget 3] [--quick] [--out DIR]
+ *
+ * On a lent H100 (kind nvidia-h100-x1; `.device` from `bash ../shared/gpu/prepare.sh`): carry
+ * `.device` and `dist/bench-gpu-step.mjs`, run
+ *   bash .device/run.sh node --max-old-space-size=16000 dist/bench-gpu-step.mjs
+ *
+ * Scenes, built with the engine's API (n dynamic bodies plus one static ground box, density 1,
+ * friction 0.6, gravity -10):
+ *   pyramids  pyramids of 20 rows (210 boxes of 0.5 m half-size) side by side, 22 m apart, built at
+ *             rest on the ground; the last one is cut short so that there are exactly n boxes;
+ *   rain      circles (radius 0.25-0.5 m) and boxes (half-size 0.25-0.45 m, random angles) on a
+ *             1.5 m grid jittered by up to 0.1 m (no overlaps), four times wider than high, from
+ *             1 m above the ground, falling with random initial velocities (down to -4 m/s, +-1 m/s
+ *             sideways).
+ * Both engines: 1/60 s, 8 velocity / 3 position iterations, sleeping off (the GPU solver has no
+ * sleeping yet), continuous physics off in the engine (the GPU has no TOI yet).
+ * GPU: a device with Dawn's validation off (requestGpu skipValidation) and timestamp queries when
+ * the adapter has them. Each world gets a GpuStepper; after WARMUP awaited steps, `--steps` awaited
+ * steps give the wall time of step() (mirror sync, recording, submit, wait for the 192-byte
+ * read-back), its host split, the device time (timestamp span of the step's passes, and per part:
+ * broad phase, narrow phase, solver) and the dispatches recorded; then `--steps` more steps not
+ * awaited ({ wait: false }, up to four in flight) give the wall time per step of a stream of steps.
+ * JS: the same world built again, WARMUP steps, then world.Step timed per step, `--steps` steps or
+ * until `--js-budget` seconds have passed, for sizes up to `--js-max`. Times are medians.
+ * JS/GPU is the throughput ratio (JS ms / GPU ms: above 1 the GPU steps faster). The crossover per
+ * scene is the smallest measured size where the awaited GPU step beats the engine, and the size
+ * where the ratio crosses 1 interpolated in log-log between the measured sizes around it.
+ * A size that fails on the GPU (a buffer over the device's limits, out of memory) is reported with
+ * its message and the run goes on; the exit code is then 1.
+ * Output: gpu-step.json, .md and .svg in $OUT, or --out, or bench/results; the table on stdout.
+ */
+
+import { mkdirSync, writeFileSync } from 'node:fs';
+import path from 'node:path';
+import { parseArgs } from 'node:util';
+import { b2CircleShape } from '../src/collision/shapes/b2CircleShape';
+import { b2PolygonShape } from '../src/collision/shapes/b2PolygonShape';
+import type { b2Shape } from '../src/collision/shapes/b2Shape';
+import { b2Vec2 } from '../src/common/b2Math';
+import { b2BodyDef, b2_dynamicBody } from '../src/dynamics/b2Body';
+import { b2FixtureDef } from '../src/dynamics/b2Fixture';
+import { b2World } from '../src/dynamics/b2World';
+import { requestGpu } from '../src-gpu/device';
+import type { GpuContext } from '../src-gpu/device';
+import { GpuStepper } from '../src-gpu/stepper';
+
+const DT = 1 / 60;
+const VELOCITY_ITERATIONS = 8;
+const POSITION_ITERATIONS = 3;
+/** Steps before timing: the first creates every contact, the next ones grow the GPU buffers. */
+const WARMUP = 3;
+const SCENES = ['pyramids', 'rain'];
+const PYRAMID_ROWS = 20;
+const PYRAMID_PITCH = PYRAMID_ROWS + 2;
+const RAIN_SPACING = 1.5;
+const BROAD_PASSES = new Set(['bounds', 'axis', 'sort', 'sweep', 'pairs']);
+
+function rng(seed: number): () => number {
+  let a = seed >>> 0;
+  return () => {
+    a = (a + 0x6d2b79f5) >>> 0;
+    let t = a;
+    t = Math.imul(t ^ (t >>> 15), t | 1);
+    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
+    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
+  };
+}
+
+function box(hx: number, hy: number, centre?: b2Vec2): b2PolygonShape {
+  const s = new b2PolygonShape();
+  if (centre) s.SetAsBox(hx, hy, centre, 0);
+  else s.SetAsBox(hx, hy);
+  return s;
+}
+
+function circle(r: number): b2CircleShape {
+  const s = new b2CircleShape();
+  s.m_radius = r;
+  return s;
+}
+
+/** A world for both engines: gravity, sleeping and continuous physics off, a ground box of half-width `halfWidth` with its top at y = 0. */
+function emptyWorld(halfWidth: number): b2World {
+  const world = new b2World(new b2Vec2(0, -10));
+  world.SetAllowSleeping(false);
+  world.SetContinuousPhysics(false);
+  const ground = world.CreateBody(new b2BodyDef());
+  const fd = new b2FixtureDef();
+  fd.shape = box(halfWidth, 1, new b2Vec2(0, -1));
+  fd.friction = 0.6;
+  ground.CreateFixture(fd);
+  return world;
+}
+
+/** n boxes in pyramids of PYRAMID_ROWS rows, bottom row first (bench/scenes.mjs's layout). */
+function pyramids(n: number): b2World {
+  const perPyramid = (PYRAMID_ROWS * (PYRAMID_ROWS + 1)) / 2;
+  const count = Math.ceil(n / perPyramid);
+  const world = emptyWorld((count * PYRAMID_PITCH) / 2 + 5);
+  const bd = new b2BodyDef();
+  bd.type = b2_dynamicBody;
+  const fd = new b2FixtureDef();
+  fd.shape = box(0.5, 0.5);
+  fd.density = 1;
+  fd.friction = 0.6;
+  const h = 0.5;
+  let made = 0;
+  for (let k = 0; k < count; ++k) {
+    const centre = (k - (count - 1) / 2) * PYRAMID_PITCH;
+    for (let i = 0; i < PYRAMID_ROWS; ++i) {
+      for (let j = i; j < PYRAMID_ROWS && made < n; ++j, ++made) {
+        bd.position.Set(centre + (i + 1) * h + 2 * (j - i) * h - h * PYRAMID_ROWS, (2 * i + 1) * h);
+        world.CreateBody(bd).CreateFixture(fd);
+      }
+    }
+  }
+  return world;
+}
+
+/** n circles and boxes on a jittered grid, falling. */
+function rain(n: number): b2World {
+  const r = rng(n * 13 + 5);
+  const rows = Math.max(1, Math.round(Math.sqrt(n / 4)));
+  const cols = Math.ceil(n / rows);
+  const world = emptyWorld((cols * RAIN_SPACING) / 2 + 5);
+  const shapes: b2Shape[] = [circle(0.25), circle(0.375), circle(0.5), box(0.25, 0.25), box(0.45, 0.3), box(0.35, 0.45)];
+  const bd = new b2BodyDef();
+  bd.type = b2_dynamicBody;
+  const fd = new b2FixtureDef();
+  fd.density = 1;
+  fd.friction = 0.6;
+  let made = 0;
+  for (let row = 0; row < rows; ++row) {
+    for (let col = 0; col < cols && made < n; ++col, ++made) {
+      bd.position.Set((col - (cols - 1) / 2) * RAIN_SPACING + 0.2 * (r() - 0.5), 1 + row * RAIN_SPACING + 0.2 * (r() - 0.5));
+      bd.angle = 2 * Math.PI * r();
+      bd.linearVelocity.Set(2 * r() - 1, -4 * r());
+      fd.shape = shapes[Math.floor(r() * shapes.length)];
+      world.CreateBody(bd).CreateFixture(fd);
+    }
+  }
+  return world;
+}
+
+function buildWorld(scene: string, n: number): b2World {
+  if (scene === 'pyramids') return pyramids(n);
+  if (scene === 'rain') return rain(n);
+  throw new Error(`unknown scene ${scene} (${SCENES.join(', ')})`);
+}
+
+function median(values: number[]): number {
+  if (values.length === 0) return NaN;
+  const v = values.slice().sort((a, b) => a - b);
+  return v[Math.floor(v.length / 2)];
+}
+
+function message(err: unknown): string {
+  return err instanceof Error ? `${err.name}: ${err.message}` : String(err);
+}
+
+interface GpuRow {
+  /** new GpuStepper(): mirror the world, upload it. */
+  setupMs: number;
+  wallMs: number;
+  /** Wall time per step over `steps` steps not awaited (up to four in flight). */
+  deferredMs: number;
+  deviceMs: number;
+  /** Device time per part of the step: broad phase, narrow phase, solver. */
+  partsMs: { broad: number; narrow: number; solve: number };
+  /** Host split of an awaited step: mirror sync and other work before recording, recording, the submit call, the wait. */
+  hostMs: { sync: number; record: number; submit: number; wait: number };
+  dispatches: number;
+  contacts: number;
+  touching: number;
+  /** Steps not awaited whose buffers overflowed (their lists truncated). */
+  truncatedSteps: number;
+}
+
+async function runGpu(ctx: GpuContext, world: b2World, steps: number): Promise<GpuRow> {
+  const t0 = performance.now();
+  const stepper = new GpuStepper(ctx, world);
+  try {
+    const setupMs = performance.now() - t0;
+    for (let i = 0; i < WARMUP; ++i) await stepper.step(DT, VELOCITY_ITERATIONS, POSITION_ITERATIONS);
+    const wall: number[] = [];
+    const device: number[] = [];
+    const parts = { broad: [] as number[], narrow: [] as number[], solve: [] as number[] };
+    const host = { sync: [] as number[], record: [] as number[], submit: [] as number[], wait: [] as number[] };
+    let last = null;
+    for (let i = 0; i < steps; ++i) {
+      const w0 = performance.now();
+      last = await stepper.step(DT, VELOCITY_ITERATIONS, POSITION_ITERATIONS);
+      const w = performance.now() - w0;
+      wall.push(w);
+      const h = last.hostMs;
+      host.sync.push(w - h.encode - h.submit - h.wait);
+      host.record.push(h.encode);
+      host.submit.push(h.submit);
+      host.wait.push(h.wait);
+      if (last.gpuTime) {
+        device.push(last.gpuTime.total);
+        const sum = { broad: 0, narrow: 0, solve: 0 };
+        for (const [name, ms] of Object.entries(last.gpuTime)) {
+          if (name === 'total') continue;
+          sum[name.startsWith('solve') ? 'solve' : BROAD_PASSES.has(name) ? 'broad' : 'narrow'] += ms;
+        }
+        parts.broad.push(sum.broad);
+        parts.narrow.push(sum.narrow);
+        parts.solve.push(sum.solve);
+      }
+    }
+    const d0 = performance.now();
+    for (let i = 0; i < steps; ++i) await stepper.step(DT, VELOCITY_ITERATIONS, POSITION_ITERATIONS, { wait: false });
+    await stepper.narrowPhase.settle(stepper.broadPhase);
+    const deferredMs = (performance.now() - d0) / steps;
+    return {
+      setupMs,
+      wallMs: median(wall),
+      deferredMs,
+      deviceMs: median(device),
+      partsMs: { broad: median(parts.broad), narrow: median(parts.narrow), solve: median(parts.solve) },
+      hostMs: { sync: median(host.sync), record: median(host.record), submit: median(host.submit), wait: median(host.wait) },
+      dispatches: last?.dispatches ?? 0,
+      contacts: last?.contactCount ?? 0,
+      touching: last?.solverCount ?? 0,
+      truncatedSteps: stepper.narrowPhase.truncatedSteps,
+    };
+  } finally {
+    // After a failure, steps may still be in flight: let their read-backs end before destroying.
+    await stepper.narrowPhase.settle(stepper.broadPhase).catch(() => undefined);
+    stepper.destroy();
+  }
+}
+
+interface JsRow {
+  ms: number;
+  steps: number;
+  contacts: number;
+}
+
+function runJs(world: b2World, steps: number, budgetSeconds: number): JsRow {
+  for (let i = 0; i < WARMUP; ++i) world.Step(DT, VELOCITY_ITERATIONS, POSITION_ITERATIONS);
+  const times: number[] = [];
+  const start = performance.now();
+  while (times.length < steps && (times.length === 0 || performance.now() - start < budgetSeconds * 1000)) {
+    const s0 = performance.now();
+    world.Step(DT, VELOCITY_ITERATIONS, POSITION_ITERATIONS);
+    times.push(performance.now() - s0);
+  }
+  return { ms: median(times), steps: times.length, contacts: world.GetContactCount() };
+}
+
+interface Row {
+  scene: string;
+  /** Dynamic bodies (plus one static ground). */
+  bodies: number;
+  buildMs: number;
+  gpu: GpuRow | null;
+  gpuError: string | null;
+  js: JsRow | null;
+  jsError: string | null;
+}
+
+interface Crossover {
+  scene: string;
+  /** Smallest measured size where the awaited GPU step beats the engine, or null. */
+  measured: number | null;
+  /** Where JS/GPU crosses 1, interpolated in log-log between two measured sizes, or null. */
+  interpolated: number | null;
+  text: string;
+}
+
+function fmt(v: number | undefined, digits = 3): string {
+  if (v === undefined || !Number.isFinite(v)) return '–';
+  return v >= 100 ? v.toFixed(0) : v >= 10 ? v.toFixed(1) : v.toPrecision(digits);
+}
+
+function sizeText(n: number): string {
+  return n.toExponential(2).replace(/\.?0+e/, 'e').replace('e+', 'e');
+}
+
+function crossover(scene: string, rows: Row[]): Crossover {
+  const pts = rows
+    .filter((r) => r.scene === scene && r.gpu && r.js && Number.isFinite(r.gpu.wallMs) && Number.isFinite(r.js.ms))
+    .map((r) => ({ n: r.bodies, ratio: r.js!.ms / r.gpu!.wallMs }))
+    .sort((a, b) => a.n - b.n);
+  if (pts.length === 0) return { scene, measured: null, interpolated: null, text: 'no size measured on both' };
+  const first = pts.findIndex((p) => p.ratio > 1);
+  if (first < 0) {
+    const top = pts[pts.length - 1];
+    return { scene, measured: null, interpolated: null, text: `not reached up to ${sizeText(top.n)} bodies (JS/GPU ${fmt(top.ratio)} there)` };
+  }
+  const measured = pts[first].n;
+  if (first === 0) return { scene, measured, interpolated: null, text: `GPU faster at every measured size (from ${sizeText(measured)} bodies)` };
+  const a = pts[first - 1];
+  const b = pts[first];
+  const t = -Math.log(a.ratio) / (Math.log(b.ratio) - Math.log(a.ratio));
+  const interpolated = Math.exp(Math.log(a.n) + t * (Math.log(b.n) - Math.log(a.n)));
+  return {
+    scene,
+    measured,
+    interpolated,
+    text: `GPU faster from ${sizeText(measured)} bodies (measured); JS/GPU = 1 at about ${sizeText(interpolated)} bodies (interpolated in log-log between ${sizeText(a.n)} and ${sizeText(b.n)})`,
+  };
+}
+
+function markdown(rows: Row[], crossovers: Crossover[], meta: Record<string, unknown>): string {
+  const lines = [
+    '# Full step on the GPU (broad phase + narrow phase + solver) vs the JavaScript engine',
+    '',
+    `Device: ${meta.device}; timestamps: ${meta.timestamps}; Dawn validation off. Node ${meta.node}. ${meta.date}.`,
+    `1/60 s, ${VELOCITY_ITERATIONS} velocity / ${POSITION_ITERATIONS} position iterations, sleeping off (the GPU has no sleeping yet),`,
+    `continuous physics off in the engine (the GPU has no TOI yet). ${WARMUP} warm-up steps, then medians of ${meta.steps} steps`,
+    `(JS: at most ${meta.steps} steps or ${meta.jsBudget} s). Milliseconds per step.`,
+    '',
+    '| scene | bodies | contacts (touching) | dispatches | GPU wall | GPU not awaited | GPU device | device: broad / narrow / solve | JS | JS/GPU wall | JS/GPU not awaited |',
+    '| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |',
+  ];
+  for (const r of rows) {
+    const g = r.gpu;
+    const gpuCells = g
+      ? `${g.contacts} (${g.touching}) | ${g.dispatches} | ${fmt(g.wallMs)} | ${fmt(g.deferredMs)} | ${fmt(g.deviceMs)} | ${fmt(g.partsMs.broad)} / ${fmt(g.partsMs.narrow)} / ${fmt(g.partsMs.solve)}`
+      : `failed: ${r.gpuError ?? '–'} | | | | | `;
+    const js = r.js ? `${fmt(r.js.ms)}${r.js.steps < (meta.steps as number) ? ` (${r.js.steps} steps)` : ''}` : r.jsError ? `failed: ${r.jsError}` : '–';
+    const ratio = (gpuMs: number | undefined) => (r.js && gpuMs ? fmt(r.js.ms / gpuMs) : '–');
+    lines.push(`| ${r.scene} | ${r.bodies} | ${gpuCells} | ${js} | ${ratio(g?.wallMs)} | ${ratio(g?.deferredMs)} |`);
+  }
+  lines.push('', 'Crossover (awaited GPU step faster than the engine):', '');
+  for (const c of crossovers) lines.push(`- ${c.scene}: ${c.text}`);
+  lines.push('', '## Host time of an awaited GPU step (ms)', '', '| scene | bodies | setup (new GpuStepper) | mirror sync and other | record | submit call | wait | not-awaited steps truncated |', '| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |');
+  for (const r of rows) {
+    const g = r.gpu;
+    if (g) lines.push(`| ${r.scene} | ${r.bodies} | ${fmt(g.setupMs)} | ${fmt(g.hostMs.sync)} | ${fmt(g.hostMs.record)} | ${fmt(g.hostMs.submit)} | ${fmt(g.hostMs.wait)} | ${g.truncatedSteps} |`);
+  }
+  lines.push(
+    '',
+    'bodies: dynamic bodies, plus one static ground. contacts: the GPU\'s contacts (broad-phase pairs) and, in',
+    'parentheses, the touching ones the solver takes. GPU wall: GpuStepper.step() from call to resolved promise',
+    '(mirror sync, recording, submit, wait for the read-back). GPU not awaited: steps submitted with { wait: false }',
+    '(up to four in flight), total wall time / steps. GPU device: timestamp span of the step\'s passes; broad /',
+    'narrow / solve: sums of their passes. JS: b2World.Step. JS/GPU: throughput ratio (above 1: the GPU is faster).',
+    'Host table: setup is new GpuStepper() (the first row\'s includes compiling the pipelines); "mirror sync and',
+    'other" is the wall time of step() outside the narrow phase\'s recording, submit and wait, mostly GpuWorld.sync().',
+  );
+  return lines.join('\n') + '\n';
+}
+
+function svgChart(rows: Row[]): string {
+  const W = 760;
+  const H = 460;
+  const m = { l: 70, r: 210, t: 30, b: 50 };
+  const series: [string, (r: Row) => number | undefined, string][] = [
+    ['GPU wall', (r) => r.gpu?.wallMs, ''],
+    ['GPU not awaited', (r) => r.gpu?.deferredMs, '6 3'],
+    ['GPU device', (r) => r.gpu?.deviceMs, '1 3'],
+    ['JS engine', (r) => r.js?.ms, '10 3 2 3'],
+  ];
+  const ok = (v: number | undefined): v is number => v !== undefined && v > 0 && Number.isFinite(v);
+  const xs = rows.map((r) => r.bodies);
+  const ys = rows.flatMap((r) => series.map(([, get]) => get(r)).filter(ok));
+  if (ys.length === 0) ys.push(1);
+  const x0 = Math.log10(Math.min(...xs)) - 0.1;
+  const x1 = Math.log10(Math.max(...xs)) + 0.1;
+  const y0 = Math.floor(Math.log10(Math.min(...ys)));
+  const y1 = Math.ceil(Math.log10(Math.max(...ys)));
+  const px = (v: number) => m.l + ((Math.log10(v) - x0) / (x1 - x0 || 1)) * (W - m.l - m.r);
+  const py = (v: number) => H - m.b - ((Math.log10(v) - y0) / (y1 - y0 || 1)) * (H - m.t - m.b);
+  const colors: Record<string, string> = { pyramids: '#1f77b4', rain: '#d62728' };
+  const out: string[] = [
+    `<svg xmlns="http://www.w3.org/2000/svg" width="${W}" height="${H}" font-family="sans-serif" font-size="12">`,
+    `<rect width="${W}" height="${H}" fill="white"/>`,
+    `<text x="${m.l}" y="18" font-size="14">Full step (broad + narrow phase + solver): GPU vs the JavaScript engine</text>`,
+  ];
+  for (let e = y0; e <= y1; ++e) {
+    const y = py(10 ** e);
+    out.push(`<line x1="${m.l}" x2="${W - m.r}" y1="${y}" y2="${y}" stroke="#ddd"/><text x="${m.l - 8}" y="${y + 4}" text-anchor="end">${10 ** e >= 1 ? 10 ** e : (10 ** e).toPrecision(1)} ms</text>`);
+  }
+  for (const v of [...new Set(xs)]) {
+    const x = px(v);
+    out.push(`<line x1="${x}" x2="${x}" y1="${m.t}" y2="${H - m.b}" stroke="#eee"/><text x="${x}" y="${H - m.b + 18}" text-anchor="middle">${sizeText(v)}</text>`);
+  }
+  out.push(`<text x="${(m.l + W - m.r) / 2}" y="${H - 12}" text-anchor="middle">bodies</text>`);
+  let legend = 0;
+  for (const scene of [...new Set(rows.map((r) => r.scene))]) {
+    for (const [label, get, dash] of series) {
+      const pts = rows
+        .filter((r) => r.scene === scene)
+        .map((r) => [r.bodies, get(r)] as const)
+        .filter((p): p is readonly [number, number] => ok(p[1]));
+      if (pts.length === 0) continue;
+      const color = colors[scene] ?? '#555';
+      const dashAttr = dash ? `stroke-dasharray="${dash}"` : '';
+      out.push(`<polyline fill="none" stroke="${color}" stroke-width="2" ${dashAttr} points="${pts.map(([x, y]) => `${px(x).toFixed(1)},${py(y).toFixed(1)}`).join(' ')}"/>`);
+      for (const [x, y] of pts) out.push(`<circle cx="${px(x).toFixed(1)}" cy="${py(y).toFixed(1)}" r="2.5" fill="${color}"/>`);
+      const ly = m.t + 16 * legend++;
+      out.push(
+        `<line x1="${W - m.r + 12}" x2="${W - m.r + 40}" y1="${ly}" y2="${ly}" stroke="${color}" stroke-width="2" ${dashAttr}/><text x="${W - m.r + 46}" y="${ly + 4}">${scene}, ${label}</text>`,
+      );
+    }
+  }
+  out.push('</svg>');
+  return out.join('\n');
+}
+
+async function main(): Promise<number> {
+  const { values } = parseArgs({
+    args: process.argv.slice(2),
+    options: {
+      sizes: { type: 'string' },
+      scenes: { type: 'string' },
+      steps: { type: 'string' },
+      'js-max': { type: 'string' },
+      'js-budget': { type: 'string' },
+      quick: { type: 'boolean' },
+      out: { type: 'string' },
+      help: { type: 'boolean', short: 'h' },
+    },
+  });
+  if (values.help) {
+    process.stdout.write(
+      'node dist/bench-gpu-step.mjs [--sizes 1e3,1e4,1e5,1e6] [--scenes pyramids,rain] [--steps 10] [--js-max 1e5] [--js-budget 3] [--quick] [--out DIR]\n',
+    );
+    return 0;
+  }
+  const quick = values.quick === true;
+  const sizes = (values.sizes ?? (quick ? '1e3,1e4' : '1e3,1e4,1e5,1e6')).split(',').map(Number);
+  const scenes = (values.scenes ?? SCENES.join(',')).split(',');
+  const steps = Math.max(1, Number(values.steps ?? (quick ? 3 : 10)));
+  const jsMax = Number(values['js-max'] ?? 1e5);
+  const jsBudget = Number(values['js-budget'] ?? (quick ? 1 : 3));
+  const outDir = values.out ?? process.env.OUT ?? path.resolve('bench/results');
+  for (const scene of scenes) if (!SCENES.includes(scene)) throw new Error(`unknown scene ${scene} (${SCENES.join(', ')})`);
+
+  let finished = false;
+  const ctx = await requestGpu({
+    dawnOptions: ['disable-dawn-features=timestamp_quantization'],
+    skipValidation: true,
+    onLost: (info) => {
+      if (!finished) console.error('device lost', info);
+    },
+  });
+  const a = ctx.adapterInfo;
+  const deviceName = `${a.vendor} ${a.architecture} ${a.device} ${a.description}`.replace(/\s+/g, ' ').trim() + (a.software ? ' (software)' : '');
+  console.error(`adapter: ${deviceName}; timestamps: ${ctx.timestamps}`);
+  const rows: Row[] = [];
+  const started = performance.now();
+  for (const n of sizes) {
+    for (const scene of scenes) {
+      const row: Row = { scene, bodies: n, buildMs: 0, gpu: null, gpuError: null, js: null, jsError: null };
+      try {
+        const b0 = performance.now();
+        const world = buildWorld(scene, n);
+        row.buildMs = performance.now() - b0;
+        row.gpu = await runGpu(ctx, world, steps);
+      } catch (err) {
+        row.gpuError = message(err);
+      }
+      if (n <= jsMax) {
+        try {
+          row.js = runJs(buildWorld(scene, n), steps, jsBudget);
+        } catch (err) {
+          row.jsError = message(err);
+        }
+      }
+      rows.push(row);
+      const g = row.gpu;
+      console.error(
+        `${scene.padEnd(8)} ${String(n).padStart(8)}  ` +
+          (g
+            ? `contacts ${g.contacts} (${g.touching} touching), ${g.dispatches} dispatches; gpu wall ${fmt(g.wallMs)} ms, not awaited ${fmt(g.deferredMs)} ms, device ${fmt(g.deviceMs)} ms`
+            : `gpu failed: ${row.gpuError}`) +
+          `; js ${row.js ? `${fmt(row.js.ms)} ms` : (row.jsError ?? '–')} [build ${fmt(row.buildMs)} ms; ${((performance.now() - started) / 1000).toFixed(0)} s]`,
+      );
+    }
+  }
+  const crossovers = scenes.map((s) => crossover(s, rows));
+  const meta = {
+    device: deviceName,
+    adapter: a,
+    timestamps: ctx.timestamps,
+    skipValidation: true,
+    node: process.version,
+    date: new Date().toISOString(),
+    dt: DT,
+    velocityIterations: VELOCITY_ITERATIONS,
+    positionIterations: POSITION_ITERATIONS,
+    warmup: WARMUP,
+    steps,
+    jsBudget,
+    jsMax,
+    sleeping: false,
+    continuousPhysics: false,
+    limits: { maxStorageBufferBindingSize: ctx.limits.maxStorageBufferBindingSize, maxBufferSize: ctx.limits.maxBufferSize },
+  };
+  mkdirSync(outDir, { recursive: true });
+  const md = markdown(rows, crossovers, meta);
+  writeFileSync(path.join(outDir, 'gpu-step.json'), JSON.stringify({ meta, rows, crossovers }, null, 2) + '\n');
+  writeFileSync(path.join(outDir, 'gpu-step.md'), md);
+  writeFileSync(path.join(outDir, 'gpu-step.svg'), svgChart(rows) + '\n');
+  process.stdout.write(md);
+  console.error(`wrote ${path.join(outDir, 'gpu-step.{json,md,svg}')}`);
+  finished = true;
+  ctx.destroy();
+  return rows.some((r) => r.gpuError !== null || r.jsError !== null) ? 1 : 0;
+}
+
+main().then(
+  (code) => process.exit(code),
+  (err) => {
+    console.error(err);
+    process.exit(1);
+  },
+);
