@@ -43,6 +43,7 @@ import { requestGpu } from '../src-gpu/device';
 import type { GpuContext } from '../src-gpu/device';
 import { USAGE } from '../src-gpu/layout';
 import { GpuWorld } from '../src-gpu/world';
+import { fmt, median, rng } from './gpu-support';
 
 const DT = 1 / 60;
 
@@ -56,17 +57,6 @@ interface Scenario {
   vy: Float64Array;
   shape: b2Shape[];
   dynamic: Uint8Array;
-}
-
-function rng(seed: number): () => number {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
 }
 
 function makeScenario(name: string, n: number): Scenario {
@@ -213,12 +203,6 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups) 
 }`;
 
 const EMPTY_WGSL = `@compute @workgroup_size(1) fn main() {}`;
-
-function median(values: number[]): number {
-  if (values.length === 0) return NaN;
-  const v = values.slice().sort((a, b) => a - b);
-  return v[Math.floor(v.length / 2)];
-}
 
 /** Pairs of live AABBs (float32, read back from the GPU) that overlap, by a CPU sweep along x. */
 function cpuPairCount(aabbs: Float32Array, dynamic: (slot: number) => boolean): number {
@@ -484,11 +468,6 @@ interface Row {
   /** The same update on a second device with Dawn's validation off (GpuContextOptions.skipValidation). */
   unvalidated: GpuRow | null;
   js: JsRow | null;
-}
-
-function fmt(v: number | undefined, digits = 3): string {
-  if (v === undefined || !Number.isFinite(v)) return '–';
-  return v >= 100 ? v.toFixed(0) : v >= 10 ? v.toFixed(1) : v.toPrecision(digits);
 }
 
 function markdown(rows: Row[], meta: Record<string, unknown>): string {

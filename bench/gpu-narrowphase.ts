@@ -50,19 +50,9 @@ import { BIN, BIN_NAMES, USAGE } from '../src-gpu/layout';
 import { GpuNarrowPhase } from '../src-gpu/narrowPhase';
 import type { NarrowPhaseResult } from '../src-gpu/narrowPhase';
 import { GpuWorld } from '../src-gpu/world';
+import { box, circle, fmt, median, rng } from './gpu-support';
 
 const DT = 1 / 60;
-
-function rng(seed: number): () => number {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
 
 interface Body {
   x: number;
@@ -76,23 +66,11 @@ interface Body {
   sensor: boolean;
 }
 
-function box(hx: number, hy: number): b2PolygonShape {
-  const s = new b2PolygonShape();
-  s.SetAsBox(hx, hy);
-  return s;
-}
-
 function hexagon(r: number): b2PolygonShape {
   const s = new b2PolygonShape();
   const v: b2Vec2[] = [];
   for (let i = 0; i < 6; ++i) v.push(new b2Vec2(r * Math.cos((i * Math.PI) / 3), r * Math.sin((i * Math.PI) / 3)));
   s.Set(v, 6);
-  return s;
-}
-
-function circle(r: number): b2CircleShape {
-  const s = new b2CircleShape();
-  s.m_radius = r;
   return s;
 }
 
@@ -230,12 +208,6 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups) 
 }`;
 
 const EMPTY_WGSL = `@compute @workgroup_size(1) fn main() {}`;
-
-function median(values: number[]): number {
-  if (values.length === 0) return NaN;
-  const v = values.slice().sort((a, b) => a - b);
-  return v[Math.floor(v.length / 2)];
-}
 
 interface Row {
   mix: string;
@@ -494,11 +466,6 @@ const VARIANTS: { name: string; options: Parameters<typeof requestGpu>[0] }[] = 
   { name: 'no timestamps', options: { timestamps: false } },
   { name: 'skip_validation', options: { dawnOptions: ['disable-dawn-features=timestamp_quantization'], skipValidation: true } },
 ];
-
-function fmt(v: number | undefined, digits = 3): string {
-  if (v === undefined || !Number.isFinite(v)) return '–';
-  return v >= 100 ? v.toFixed(0) : v >= 10 ? v.toFixed(1) : v.toPrecision(digits);
-}
 
 function markdown(rows: Row[], meta: Record<string, unknown>): string {
   const bins = BIN_NAMES.map((n) => n);

@@ -41,8 +41,6 @@
 import { mkdirSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { parseArgs } from 'node:util';
-import { b2CircleShape } from '../src/collision/shapes/b2CircleShape';
-import { b2PolygonShape } from '../src/collision/shapes/b2PolygonShape';
 import type { b2Shape } from '../src/collision/shapes/b2Shape';
 import { b2Vec2 } from '../src/common/b2Math';
 import { b2BodyDef, b2_dynamicBody } from '../src/dynamics/b2Body';
@@ -51,6 +49,7 @@ import { b2World } from '../src/dynamics/b2World';
 import { requestGpu } from '../src-gpu/device';
 import type { GpuContext } from '../src-gpu/device';
 import { GpuStepper } from '../src-gpu/stepper';
+import { box, circle, fmt, median, rng } from './gpu-support';
 
 const DT = 1 / 60;
 const VELOCITY_ITERATIONS = 8;
@@ -62,30 +61,6 @@ const PYRAMID_ROWS = 20;
 const PYRAMID_PITCH = PYRAMID_ROWS + 2;
 const RAIN_SPACING = 1.5;
 const BROAD_PASSES = new Set(['bounds', 'axis', 'sort', 'sweep', 'pairs']);
-
-function rng(seed: number): () => number {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
-
-function box(hx: number, hy: number, centre?: b2Vec2): b2PolygonShape {
-  const s = new b2PolygonShape();
-  if (centre) s.SetAsBox(hx, hy, centre, 0);
-  else s.SetAsBox(hx, hy);
-  return s;
-}
-
-function circle(r: number): b2CircleShape {
-  const s = new b2CircleShape();
-  s.m_radius = r;
-  return s;
-}
 
 /** A world for both engines: gravity, sleeping and continuous physics off, a ground box of half-width `halfWidth` with its top at y = 0. */
 function emptyWorld(halfWidth: number): b2World {
@@ -154,12 +129,6 @@ function buildWorld(scene: string, n: number): b2World {
   if (scene === 'pyramids') return pyramids(n);
   if (scene === 'rain') return rain(n);
   throw new Error(`unknown scene ${scene} (${SCENES.join(', ')})`);
-}
-
-function median(values: number[]): number {
-  if (values.length === 0) return NaN;
-  const v = values.slice().sort((a, b) => a - b);
-  return v[Math.floor(v.length / 2)];
 }
 
 function message(err: unknown): string {
@@ -276,11 +245,6 @@ interface Crossover {
   /** Where JS/GPU crosses 1, interpolated in log-log between two measured sizes, or null. */
   interpolated: number | null;
   text: string;
-}
-
-function fmt(v: number | undefined, digits = 3): string {
-  if (v === undefined || !Number.isFinite(v)) return '–';
-  return v >= 100 ? v.toFixed(0) : v >= 10 ? v.toFixed(1) : v.toPrecision(digits);
 }
 
 function sizeText(n: number): string {
