@@ -43,7 +43,7 @@ import { requestGpu } from '../src-gpu/device';
 import type { GpuContext } from '../src-gpu/device';
 import { USAGE } from '../src-gpu/layout';
 import { GpuWorld } from '../src-gpu/world';
-import { fmt, median, rng } from './gpu-support';
+import { fmt, logLogChart, median, rng } from './gpu-support';
 
 const DT = 1 / 60;
 
@@ -406,59 +406,20 @@ function runJs(s: Scenario, budgetSeconds: number): JsRow {
 }
 
 function svgChart(rows: Row[]): string {
-  const W = 760;
-  const H = 460;
-  const m = { l: 70, r: 200, t: 30, b: 50 };
-  const xs = rows.map((r) => r.proxies);
-  const ys = rows.flatMap((r) => [r.gpu?.deviceMs, r.gpu?.wallMs, r.unvalidated?.wallMs, r.js?.ms].filter((v): v is number => v !== undefined && v > 0));
-  const x0 = Math.log10(Math.min(...xs)) - 0.1;
-  const x1 = Math.log10(Math.max(...xs)) + 0.1;
-  const y0 = Math.floor(Math.log10(Math.min(...ys)));
-  const y1 = Math.ceil(Math.log10(Math.max(...ys)));
-  const px = (v: number) => m.l + ((Math.log10(v) - x0) / (x1 - x0)) * (W - m.l - m.r);
-  const py = (v: number) => H - m.b - ((Math.log10(v) - y0) / (y1 - y0 || 1)) * (H - m.t - m.b);
-  const colors: Record<string, string> = { uniform: '#1f77b4', clustered: '#d62728', huge: '#2ca02c' };
-  const out: string[] = [
-    `<svg xmlns="http://www.w3.org/2000/svg" width="${W}" height="${H}" font-family="sans-serif" font-size="12">`,
-    `<rect width="${W}" height="${H}" fill="white"/>`,
-    `<text x="${m.l}" y="18" font-size="14">Broad phase per step: GPU sweep-and-prune vs the JavaScript dynamic tree</text>`,
-  ];
-  for (let e = y0; e <= y1; ++e) {
-    const y = py(10 ** e);
-    out.push(`<line x1="${m.l}" x2="${W - m.r}" y1="${y}" y2="${y}" stroke="#ddd"/><text x="${m.l - 8}" y="${y + 4}" text-anchor="end">${10 ** e >= 1 ? 10 ** e : (10 ** e).toPrecision(1)} ms</text>`);
-  }
-  for (const v of [...new Set(xs)]) {
-    const x = px(v);
-    out.push(`<line x1="${x}" x2="${x}" y1="${m.t}" y2="${H - m.b}" stroke="#eee"/><text x="${x}" y="${H - m.b + 18}" text-anchor="middle">${v.toExponential(0).replace('e+', 'e')}</text>`);
-  }
-  out.push(`<text x="${(m.l + W - m.r) / 2}" y="${H - 12}" text-anchor="middle">proxies</text>`);
-  const series: [string, (r: Row) => number | undefined, string][] = [
-    ['GPU device', (r) => r.gpu?.deviceMs, ''],
-    ['GPU wall', (r) => r.gpu?.wallMs, '6 3'],
-    ['GPU wall, no validation', (r) => r.unvalidated?.wallMs, '1 2'],
-    ['JS tree', (r) => r.js?.ms, '2 3'],
-  ];
-  let legend = 0;
-  for (const scenario of [...new Set(rows.map((r) => r.scenario))]) {
-    for (const [label, get, dash] of series) {
-      const pts = rows
-        .filter((r) => r.scenario === scenario)
-        .map((r) => [r.proxies, get(r)] as const)
-        .filter(([, v]) => v !== undefined && v > 0 && Number.isFinite(v)) as [number, number][];
-      if (pts.length === 0) continue;
-      const color = colors[scenario] ?? '#555';
-      out.push(
-        `<polyline fill="none" stroke="${color}" stroke-width="2" ${dash ? `stroke-dasharray="${dash}"` : ''} points="${pts.map(([x, y]) => `${px(x).toFixed(1)},${py(y).toFixed(1)}`).join(' ')}"/>`,
-      );
-      for (const [x, y] of pts) out.push(`<circle cx="${px(x).toFixed(1)}" cy="${py(y).toFixed(1)}" r="2.5" fill="${color}"/>`);
-      const ly = m.t + 16 * legend++;
-      out.push(
-        `<line x1="${W - m.r + 12}" x2="${W - m.r + 40}" y1="${ly}" y2="${ly}" stroke="${color}" stroke-width="2" ${dash ? `stroke-dasharray="${dash}"` : ''}/><text x="${W - m.r + 46}" y="${ly + 4}">${scenario}, ${label}</text>`,
-      );
-    }
-  }
-  out.push('</svg>');
-  return out.join('\n');
+  return logLogChart(rows, {
+    title: 'Broad phase per step: GPU sweep-and-prune vs the JavaScript dynamic tree',
+    xLabel: 'proxies',
+    x: (r) => r.proxies,
+    xText: (v) => v.toExponential(0).replace('e+', 'e'),
+    group: (r) => r.scenario,
+    colours: { uniform: '#1f77b4', clustered: '#d62728', huge: '#2ca02c' },
+    series: [
+      { label: 'GPU device', value: (r) => r.gpu?.deviceMs, dash: '' },
+      { label: 'GPU wall', value: (r) => r.gpu?.wallMs, dash: '6 3' },
+      { label: 'GPU wall, no validation', value: (r) => r.unvalidated?.wallMs, dash: '1 2' },
+      { label: 'JS tree', value: (r) => r.js?.ms, dash: '2 3' },
+    ],
+  });
 }
 
 interface Row {

@@ -49,7 +49,7 @@ import { b2World } from '../src/dynamics/b2World';
 import { requestGpu } from '../src-gpu/device';
 import type { GpuContext } from '../src-gpu/device';
 import { GpuStepper } from '../src-gpu/stepper';
-import { box, circle, fmt, median, rng } from './gpu-support';
+import { box, circle, fmt, logLogChart, median, rng } from './gpu-support';
 
 const DT = 1 / 60;
 const VELOCITY_ITERATIONS = 8;
@@ -318,60 +318,20 @@ function markdown(rows: Row[], crossovers: Crossover[], meta: Record<string, unk
 }
 
 function svgChart(rows: Row[]): string {
-  const W = 760;
-  const H = 460;
-  const m = { l: 70, r: 210, t: 30, b: 50 };
-  const series: [string, (r: Row) => number | undefined, string][] = [
-    ['GPU wall', (r) => r.gpu?.wallMs, ''],
-    ['GPU not awaited', (r) => r.gpu?.deferredMs, '6 3'],
-    ['GPU device', (r) => r.gpu?.deviceMs, '1 3'],
-    ['JS engine', (r) => r.js?.ms, '10 3 2 3'],
-  ];
-  const ok = (v: number | undefined): v is number => v !== undefined && v > 0 && Number.isFinite(v);
-  const xs = rows.map((r) => r.bodies);
-  const ys = rows.flatMap((r) => series.map(([, get]) => get(r)).filter(ok));
-  if (ys.length === 0) ys.push(1);
-  const x0 = Math.log10(Math.min(...xs)) - 0.1;
-  const x1 = Math.log10(Math.max(...xs)) + 0.1;
-  const y0 = Math.floor(Math.log10(Math.min(...ys)));
-  const y1 = Math.ceil(Math.log10(Math.max(...ys)));
-  const px = (v: number) => m.l + ((Math.log10(v) - x0) / (x1 - x0 || 1)) * (W - m.l - m.r);
-  const py = (v: number) => H - m.b - ((Math.log10(v) - y0) / (y1 - y0 || 1)) * (H - m.t - m.b);
-  const colors: Record<string, string> = { pyramids: '#1f77b4', rain: '#d62728' };
-  const out: string[] = [
-    `<svg xmlns="http://www.w3.org/2000/svg" width="${W}" height="${H}" font-family="sans-serif" font-size="12">`,
-    `<rect width="${W}" height="${H}" fill="white"/>`,
-    `<text x="${m.l}" y="18" font-size="14">Full step (broad + narrow phase + solver): GPU vs the JavaScript engine</text>`,
-  ];
-  for (let e = y0; e <= y1; ++e) {
-    const y = py(10 ** e);
-    out.push(`<line x1="${m.l}" x2="${W - m.r}" y1="${y}" y2="${y}" stroke="#ddd"/><text x="${m.l - 8}" y="${y + 4}" text-anchor="end">${10 ** e >= 1 ? 10 ** e : (10 ** e).toPrecision(1)} ms</text>`);
-  }
-  for (const v of [...new Set(xs)]) {
-    const x = px(v);
-    out.push(`<line x1="${x}" x2="${x}" y1="${m.t}" y2="${H - m.b}" stroke="#eee"/><text x="${x}" y="${H - m.b + 18}" text-anchor="middle">${sizeText(v)}</text>`);
-  }
-  out.push(`<text x="${(m.l + W - m.r) / 2}" y="${H - 12}" text-anchor="middle">bodies</text>`);
-  let legend = 0;
-  for (const scene of [...new Set(rows.map((r) => r.scene))]) {
-    for (const [label, get, dash] of series) {
-      const pts = rows
-        .filter((r) => r.scene === scene)
-        .map((r) => [r.bodies, get(r)] as const)
-        .filter((p): p is readonly [number, number] => ok(p[1]));
-      if (pts.length === 0) continue;
-      const color = colors[scene] ?? '#555';
-      const dashAttr = dash ? `stroke-dasharray="${dash}"` : '';
-      out.push(`<polyline fill="none" stroke="${color}" stroke-width="2" ${dashAttr} points="${pts.map(([x, y]) => `${px(x).toFixed(1)},${py(y).toFixed(1)}`).join(' ')}"/>`);
-      for (const [x, y] of pts) out.push(`<circle cx="${px(x).toFixed(1)}" cy="${py(y).toFixed(1)}" r="2.5" fill="${color}"/>`);
-      const ly = m.t + 16 * legend++;
-      out.push(
-        `<line x1="${W - m.r + 12}" x2="${W - m.r + 40}" y1="${ly}" y2="${ly}" stroke="${color}" stroke-width="2" ${dashAttr}/><text x="${W - m.r + 46}" y="${ly + 4}">${scene}, ${label}</text>`,
-      );
-    }
-  }
-  out.push('</svg>');
-  return out.join('\n');
+  return logLogChart(rows, {
+    title: 'Full step (broad + narrow phase + solver): GPU vs the JavaScript engine',
+    xLabel: 'bodies',
+    x: (r) => r.bodies,
+    xText: sizeText,
+    group: (r) => r.scene,
+    colours: { pyramids: '#1f77b4', rain: '#d62728' },
+    series: [
+      { label: 'GPU wall', value: (r) => r.gpu?.wallMs, dash: '' },
+      { label: 'GPU not awaited', value: (r) => r.gpu?.deferredMs, dash: '6 3' },
+      { label: 'GPU device', value: (r) => r.gpu?.deviceMs, dash: '1 3' },
+      { label: 'JS engine', value: (r) => r.js?.ms, dash: '10 3 2 3' },
+    ],
+  });
 }
 
 async function main(): Promise<number> {

@@ -42,3 +42,73 @@ export function circle(r: number): b2CircleShape {
   s.m_radius = r;
   return s;
 }
+
+/** One line per (group, series) of a log-log chart: its label, value and dash pattern. */
+export interface ChartSeries<R> {
+  label: string;
+  value: (row: R) => number | undefined;
+  dash: string;
+}
+
+export interface LogLogChart<R> {
+  title: string;
+  /** The x axis: its label, each row's value, and the tick text of a value. */
+  xLabel: string;
+  x: (row: R) => number;
+  xText: (x: number) => string;
+  /** Rows of one group share a colour (colours[group], grey when missing). */
+  group: (row: R) => string;
+  colours: Record<string, string>;
+  series: ChartSeries<R>[];
+}
+
+/** A log-log SVG line chart in milliseconds, with a legend on the right (no chart library). */
+export function logLogChart<R>(rows: R[], chart: LogLogChart<R>): string {
+  const W = 760;
+  const H = 460;
+  const m = { l: 70, r: 210, t: 30, b: 50 };
+  const ok = (v: number | undefined): v is number => v !== undefined && v > 0 && Number.isFinite(v);
+  const xs = rows.map(chart.x);
+  const ys = rows.flatMap((r) => chart.series.map((s) => s.value(r)).filter(ok));
+  if (ys.length === 0) ys.push(1);
+  const x0 = Math.log10(Math.min(...xs)) - 0.1;
+  const x1 = Math.log10(Math.max(...xs)) + 0.1;
+  const y0 = Math.floor(Math.log10(Math.min(...ys)));
+  const y1 = Math.ceil(Math.log10(Math.max(...ys)));
+  const px = (v: number) => m.l + ((Math.log10(v) - x0) / (x1 - x0 || 1)) * (W - m.l - m.r);
+  const py = (v: number) => H - m.b - ((Math.log10(v) - y0) / (y1 - y0 || 1)) * (H - m.t - m.b);
+  const out: string[] = [
+    `<svg xmlns="http://www.w3.org/2000/svg" width="${W}" height="${H}" font-family="sans-serif" font-size="12">`,
+    `<rect width="${W}" height="${H}" fill="white"/>`,
+    `<text x="${m.l}" y="18" font-size="14">${chart.title}</text>`,
+  ];
+  for (let e = y0; e <= y1; ++e) {
+    const y = py(10 ** e);
+    out.push(`<line x1="${m.l}" x2="${W - m.r}" y1="${y}" y2="${y}" stroke="#ddd"/><text x="${m.l - 8}" y="${y + 4}" text-anchor="end">${10 ** e >= 1 ? 10 ** e : (10 ** e).toPrecision(1)} ms</text>`);
+  }
+  for (const v of [...new Set(xs)]) {
+    const x = px(v);
+    out.push(`<line x1="${x}" x2="${x}" y1="${m.t}" y2="${H - m.b}" stroke="#eee"/><text x="${x}" y="${H - m.b + 18}" text-anchor="middle">${chart.xText(v)}</text>`);
+  }
+  out.push(`<text x="${(m.l + W - m.r) / 2}" y="${H - 12}" text-anchor="middle">${chart.xLabel}</text>`);
+  let legend = 0;
+  for (const group of [...new Set(rows.map(chart.group))]) {
+    for (const s of chart.series) {
+      const pts = rows
+        .filter((r) => chart.group(r) === group)
+        .map((r) => [chart.x(r), s.value(r)] as const)
+        .filter((p): p is readonly [number, number] => ok(p[1]));
+      if (pts.length === 0) continue;
+      const colour = chart.colours[group] ?? '#555';
+      const dash = s.dash ? `stroke-dasharray="${s.dash}"` : '';
+      out.push(`<polyline fill="none" stroke="${colour}" stroke-width="2" ${dash} points="${pts.map(([x, y]) => `${px(x).toFixed(1)},${py(y).toFixed(1)}`).join(' ')}"/>`);
+      for (const [x, y] of pts) out.push(`<circle cx="${px(x).toFixed(1)}" cy="${py(y).toFixed(1)}" r="2.5" fill="${colour}"/>`);
+      const ly = m.t + 16 * legend++;
+      out.push(
+        `<line x1="${W - m.r + 12}" x2="${W - m.r + 40}" y1="${ly}" y2="${ly}" stroke="${colour}" stroke-width="2" ${dash}/><text x="${W - m.r + 46}" y="${ly + 4}">${group}, ${s.label}</text>`,
+      );
+    }
+  }
+  out.push('</svg>');
+  return out.join('\n');
+}
