@@ -159,6 +159,39 @@ export class MirrorTable {
     return true;
   }
 
+  /**
+   * commit() for a two-float element, without the scratch record: the float32 values are compared
+   * with Object.is (so -0 and 0 differ, as they do bit by bit; NaN payloads are not told apart).
+   */
+  commitF2(slot: number, x: number, y: number): void {
+    if (slot >= this.count) this.setCount(slot + 1);
+    const f = this.f32;
+    const base = 2 * slot;
+    const fx = Math.fround(x);
+    const fy = Math.fround(y);
+    if (Object.is(f[base], fx) && Object.is(f[base + 1], fy)) return;
+    f[base] = fx;
+    f[base + 1] = fy;
+    this.markDirty(slot);
+  }
+
+  /** commitF2 for a four-float element. */
+  commitF4(slot: number, a: number, b: number, c: number, d: number): void {
+    if (slot >= this.count) this.setCount(slot + 1);
+    const f = this.f32;
+    const base = 4 * slot;
+    const fa = Math.fround(a);
+    const fb = Math.fround(b);
+    const fc = Math.fround(c);
+    const fd = Math.fround(d);
+    if (Object.is(f[base], fa) && Object.is(f[base + 1], fb) && Object.is(f[base + 2], fc) && Object.is(f[base + 3], fd)) return;
+    f[base] = fa;
+    f[base + 1] = fb;
+    f[base + 2] = fc;
+    f[base + 3] = fd;
+    this.markDirty(slot);
+  }
+
   /** Uploads element `slot` at the next flush even if it equals the shadow. */
   markDirty(slot: number): void {
     if (this.dirty[slot] === 0) {

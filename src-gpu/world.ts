@@ -15,7 +15,10 @@
  * - Incremental uploads. Every record is packed and compared with a CPU shadow copy of the GPU
  *   buffer (MirrorTable, src-gpu/buffers.ts); only records that changed are uploaded, merged into
  *   contiguous ranges. The comparison costs one pass over the packed data; it needs no hooks in the
- *   engine and cannot miss a change (a shape edited in place, a filter set directly).
+ *   engine and cannot miss a change (a filter or friction set directly, a force). One exception:
+ *   a shape's vertices are packed when its fixture is new and not compared afterwards (reading
+ *   every shape each step was half of a sync's time, and Box2D itself does not expect a fixture's
+ *   shape to change): after editing a shape in place, call invalidateShape(fixture).
  * - Growth. Tables double their capacity when slots run out; the shape pool (variable-length
  *   shape data) reuses freed ranges of the same size and is compacted when more than half of it is
  *   holes.
@@ -80,8 +83,16 @@ class SlotAllocator<T> {
   /** Whether the last acquire() created the slot. */
   created = false;
 
-  /** The item's slot (a new one, lowest free first, when it has none); marks it seen. */
-  acquire(item: T, generation: number): number {
+  /**
+   * The item's slot (a new one, lowest free first, when it has none); marks it seen. `hint`, the
+   * slot the item had at the same place of the previous walk, skips the map lookup when it holds.
+   */
+  acquire(item: T, generation: number, hint = -1): number {
+    if (hint >= 0 && hint < this.highWater && this.items[hint] === item) {
+      this.created = false;
+      this.mark(hint, generation);
+      return hint;
+    }
     let slot = this.slotOf.get(item);
     this.created = slot === undefined;
     if (slot === undefined) {
@@ -269,9 +280,17 @@ export class GpuWorld {
   private readonly fixtureProxies: number[][] = [];
   /** Body slots in body-list order (sync's walk). */
   private walkSlots = new Int32Array(64);
+  private walkCount = 0;
+  /** The fixture slots in walk order, as hints for the next sync. */
+  private fixtureWalk = new Int32Array(64);
+  private fixtureWalkCount = 0;
   private readonly pool = new PoolAllocator();
   private fixturePoolOffset: number[] = [];
   private fixturePoolSize: number[] = [];
+  /** Per fixture slot: the shape record's type | ghost flags << 4 | count << 8, and the radius. */
+  private fixtureShapeWord: number[] = [];
+  private fixtureRadius: number[] = [];
+  private readonly staleShapes = new Set<b2Fixture>();
   private generation = 0;
   private jointCount: Int32Array = new Int32Array(64);
   private readonly allTables: MirrorTable[];
@@ -419,22 +438,7 @@ export class GpuWorld {
     };
     this.usesCustomContactFilter = isCustomContactFilter(world.m_contactManager.m_contactFilter);
 
-    // 1. Bodies (their slots kept in walk order for step 3).
-    let walked = 0;
-    for (let b = world.m_bodyList; b; b = b.m_next) {
-      const slot = this.bodySlots.acquire(b, gen);
-      if (this.bodySlots.created) stats.bodies.created++;
-      this.packBody(slot, b, this.bodySlots.created);
-      if (walked === this.walkSlots.length) {
-        const grown = new Int32Array(2 * this.walkSlots.length);
-        grown.set(this.walkSlots);
-        this.walkSlots = grown;
-      }
-      this.walkSlots[walked++] = slot;
-    }
-    stats.bodies.released = this.bodySlots.sweep(gen, (slot) => {
-      this.bodyFlags.commitWords(slot, 0);
-    });
+    this.syncBodies(world, gen, stats);
 
     // 2. Joints, and the per-body lists of joints that turn collision off.
     const edges: number[] = [];
@@ -454,31 +458,7 @@ export class GpuWorld {
     });
     this.packJointGraph(edges);
 
-    // 3. Fixtures and their proxies.
-    if (this.pool.fragmented) this.compactPool();
-    let index = 0;
-    for (let b = world.m_bodyList; b; b = b.m_next) {
-      const bodySlot = this.walkSlots[index++];
-      const jointed = this.jointCount[bodySlot] > 0;
-      for (let f = b.m_fixtureList; f; f = f.m_next) {
-        const slot = this.fixtureSlots.acquire(f, gen);
-        if (this.fixtureSlots.created) stats.fixtures.created++;
-        this.packFixture(slot, f, bodySlot);
-        this.packProxies(f, slot, bodySlot, b.m_type, jointed, gen, stats);
-      }
-    }
-    stats.fixtures.released = this.fixtureSlots.sweep(gen, (slot) => {
-      this.fixtureShape.commitWords(slot, 0, 0, 0, 0);
-      if (this.fixturePoolSize[slot] > 0) this.pool.free(this.fixturePoolOffset[slot], this.fixturePoolSize[slot]);
-      this.fixturePoolSize[slot] = 0;
-      this.fixtureProxies[slot] = EMPTY_SLOTS;
-    });
-    stats.proxies.released = this.proxySlots.sweep(gen, (slot) => {
-      this.proxyFixture[slot] = null;
-      this.proxyRef.commitWords(slot, 0, 0, 0, 0);
-      this.proxyFilter.commitWords(slot, 0, 0);
-      this.proxyKey.commitWords(slot, 0, this.proxyGeneration[slot]);
-    });
+    this.syncFixtures(world, gen, stats);
 
     stats.bodies.live = this.bodySlots.live;
     stats.fixtures.live = this.fixtureSlots.live;
@@ -490,29 +470,70 @@ export class GpuWorld {
     return stats;
   }
 
+  /** Step 1 of sync: bodies, their slots kept in walk order for syncFixtures and as the next sync's hints. */
+  private syncBodies(world: b2World, gen: number, stats: SyncStats): void {
+    let walked = 0;
+    for (let b = world.m_bodyList; b; b = b.m_next) {
+      const slot = this.bodySlots.acquire(b, gen, walked < this.walkCount ? this.walkSlots[walked] : -1);
+      if (this.bodySlots.created) stats.bodies.created++;
+      this.packBody(slot, b, this.bodySlots.created);
+      if (walked === this.walkSlots.length) {
+        const grown = new Int32Array(2 * this.walkSlots.length);
+        grown.set(this.walkSlots);
+        this.walkSlots = grown;
+      }
+      this.walkSlots[walked++] = slot;
+    }
+    this.walkCount = walked;
+    stats.bodies.released = this.bodySlots.sweep(gen, (slot) => {
+      this.bodyFlags.commitWords(slot, 0);
+    });
+  }
+
+  /** Step 3 of sync: fixtures and their proxies. (Each walk is a method of its own so that V8 optimises it apart.) */
+  private syncFixtures(world: b2World, gen: number, stats: SyncStats): void {
+    if (this.pool.fragmented) this.compactPool();
+    let index = 0;
+    let fixtureWalked = 0;
+    for (let b = world.m_bodyList; b; b = b.m_next) {
+      const bodySlot = this.walkSlots[index++];
+      const jointed = this.jointCount[bodySlot] > 0;
+      for (let f = b.m_fixtureList; f; f = f.m_next) {
+        const hint = fixtureWalked < this.fixtureWalkCount ? this.fixtureWalk[fixtureWalked] : -1;
+        const slot = this.fixtureSlots.acquire(f, gen, hint);
+        if (fixtureWalked === this.fixtureWalk.length) {
+          const grown = new Int32Array(2 * this.fixtureWalk.length);
+          grown.set(this.fixtureWalk);
+          this.fixtureWalk = grown;
+        }
+        this.fixtureWalk[fixtureWalked++] = slot;
+        if (this.fixtureSlots.created) stats.fixtures.created++;
+        this.packFixture(slot, f, bodySlot, this.fixtureSlots.created);
+        this.packProxies(f, slot, bodySlot, b.m_type, jointed, gen, stats);
+      }
+    }
+    this.fixtureWalkCount = fixtureWalked;
+    stats.fixtures.released = this.fixtureSlots.sweep(gen, (slot, fixture) => {
+      this.staleShapes.delete(fixture);
+      this.fixtureShape.commitWords(slot, 0, 0, 0, 0);
+      if (this.fixturePoolSize[slot] > 0) this.pool.free(this.fixturePoolOffset[slot], this.fixturePoolSize[slot]);
+      this.fixturePoolSize[slot] = 0;
+      this.fixtureProxies[slot] = EMPTY_SLOTS;
+    });
+    stats.proxies.released = this.proxySlots.sweep(gen, (slot) => {
+      this.proxyFixture[slot] = null;
+      this.proxyRef.commitWords(slot, 0, 0, 0, 0);
+      this.proxyFilter.commitWords(slot, 0, 0);
+      this.proxyKey.commitWords(slot, 0, this.proxyGeneration[slot]);
+    });
+  }
+
   private packBody(slot: number, b: b2Body, created: boolean): void {
     if (!this.ownsMotion || created) this.packMotion(slot, b, created && this.ownsMotion);
 
-    const f = this.bodyForce.scratchF32;
-    f[0] = b.m_force.x;
-    f[1] = b.m_force.y;
-    f[2] = b.m_torque;
-    f[3] = 0;
-    this.bodyForce.commit(slot);
-
-    const m = this.bodyMass.scratchF32;
-    m[0] = b.m_invMass;
-    m[1] = b.m_invI;
-    m[2] = b.m_sweep.localCenter.x;
-    m[3] = b.m_sweep.localCenter.y;
-    this.bodyMass.commit(slot);
-
-    const q = this.bodyParams.scratchF32;
-    q[0] = b.m_linearDamping;
-    q[1] = b.m_angularDamping;
-    q[2] = b.m_gravityScale;
-    q[3] = 0;
-    this.bodyParams.commit(slot);
+    this.bodyForce.commitF4(slot, b.m_force.x, b.m_force.y, b.m_torque, 0);
+    this.bodyMass.commitF4(slot, b.m_invMass, b.m_invI, b.m_sweep.localCenter.x, b.m_sweep.localCenter.y);
+    this.bodyParams.commitF4(slot, b.m_linearDamping, b.m_angularDamping, b.m_gravityScale, 0);
 
     this.bodyFlags.commitWords(slot, ((b.m_flags & 0xffff) | (b.m_type << 16) | BODY_LIVE) >>> 0);
   }
@@ -626,9 +647,27 @@ export class GpuWorld {
     this.pool.reset();
     this.fixturePoolSize = [];
     this.fixturePoolOffset = [];
+    this.fixtureShapeWord = [];
+    this.fixtureRadius = [];
   }
 
-  private packFixture(slot: number, f: b2Fixture, bodySlot: number): void {
+  private packFixture(slot: number, f: b2Fixture, bodySlot: number, created: boolean): void {
+    if (created || this.fixturePoolSize[slot] === undefined || (this.staleShapes.size > 0 && this.staleShapes.delete(f))) {
+      this.packShape(slot, f);
+    }
+    const sensor = f.m_isSensor ? SHAPE_SENSOR << 4 : 0;
+    const rec = this.fixtureShape.scratchU32;
+    rec[0] = (this.fixtureShapeWord[slot] | sensor) >>> 0;
+    rec[1] = this.fixturePoolOffset[slot];
+    rec[2] = bodySlot;
+    this.fixtureShape.scratchF32[3] = this.fixtureRadius[slot];
+    this.fixtureShape.commit(slot);
+
+    this.fixtureMaterial.commitF4(slot, f.m_friction, f.m_restitution, f.m_density, 0);
+  }
+
+  /** The shape's data into the pool; its record's type, ghost flags and count into fixtureShapeWord. */
+  private packShape(slot: number, f: b2Fixture): void {
     const shape = f.m_shape;
     const size = shapeSize(f);
     if (this.fixturePoolSize[slot] !== size) {
@@ -639,27 +678,21 @@ export class GpuWorld {
     const offset = this.fixturePoolOffset[slot];
     const pool = this.shapePool;
     if (offset + size > pool.capacity) pool.reserve(offset + size);
-    const pv = pool.scratchF32;
-    const put = (i: number, x: number, y: number) => {
-      pv[0] = x;
-      pv[1] = y;
-      pool.commit(offset + i);
-    };
     let count = 0;
-    let flags = f.m_isSensor ? SHAPE_SENSOR : 0;
+    let flags = 0;
     switch (shape.m_type) {
       case e_circle: {
         const c = shape as b2CircleShape;
-        put(0, c.m_p.x, c.m_p.y);
+        pool.commitF2(offset, c.m_p.x, c.m_p.y);
         count = 1;
         break;
       }
       case e_edge: {
         const e = shape as b2EdgeShape;
-        put(0, e.m_vertex1.x, e.m_vertex1.y);
-        put(1, e.m_vertex2.x, e.m_vertex2.y);
-        put(2, e.m_vertex0.x, e.m_vertex0.y);
-        put(3, e.m_vertex3.x, e.m_vertex3.y);
+        pool.commitF2(offset, e.m_vertex1.x, e.m_vertex1.y);
+        pool.commitF2(offset + 1, e.m_vertex2.x, e.m_vertex2.y);
+        pool.commitF2(offset + 2, e.m_vertex0.x, e.m_vertex0.y);
+        pool.commitF2(offset + 3, e.m_vertex3.x, e.m_vertex3.y);
         count = 2;
         if (e.m_hasVertex0) flags |= SHAPE_HAS_VERTEX0;
         if (e.m_hasVertex3) flags |= SHAPE_HAS_VERTEX3;
@@ -668,34 +701,32 @@ export class GpuWorld {
       case e_polygon: {
         const p = shape as b2PolygonShape;
         count = p.m_vertexCount;
-        for (let i = 0; i < count; ++i) put(i, p.m_vertices[i].x, p.m_vertices[i].y);
-        for (let i = 0; i < count; ++i) put(count + i, p.m_normals[i].x, p.m_normals[i].y);
-        put(2 * count, p.m_centroid.x, p.m_centroid.y);
+        for (let i = 0; i < count; ++i) pool.commitF2(offset + i, p.m_vertices[i].x, p.m_vertices[i].y);
+        for (let i = 0; i < count; ++i) pool.commitF2(offset + count + i, p.m_normals[i].x, p.m_normals[i].y);
+        pool.commitF2(offset + 2 * count, p.m_centroid.x, p.m_centroid.y);
         break;
       }
       default: {
         const c = shape as b2ChainShape;
         count = c.m_count;
-        for (let i = 0; i < count; ++i) put(i, c.m_vertices[i].x, c.m_vertices[i].y);
-        put(count, c.m_prevVertex.x, c.m_prevVertex.y);
-        put(count + 1, c.m_nextVertex.x, c.m_nextVertex.y);
+        for (let i = 0; i < count; ++i) pool.commitF2(offset + i, c.m_vertices[i].x, c.m_vertices[i].y);
+        pool.commitF2(offset + count, c.m_prevVertex.x, c.m_prevVertex.y);
+        pool.commitF2(offset + count + 1, c.m_nextVertex.x, c.m_nextVertex.y);
         if (c.m_hasPrevVertex) flags |= SHAPE_HAS_VERTEX0;
         if (c.m_hasNextVertex) flags |= SHAPE_HAS_VERTEX3;
       }
     }
-    const rec = this.fixtureShape.scratchU32;
-    rec[0] = (shape.m_type | (flags << 4) | (count << 8)) >>> 0;
-    rec[1] = offset;
-    rec[2] = bodySlot;
-    this.fixtureShape.scratchF32[3] = shape.m_radius;
-    this.fixtureShape.commit(slot);
+    this.fixtureShapeWord[slot] = shape.m_type | (flags << 4) | (count << 8);
+    this.fixtureRadius[slot] = shape.m_radius;
+  }
 
-    const m = this.fixtureMaterial.scratchF32;
-    m[0] = f.m_friction;
-    m[1] = f.m_restitution;
-    m[2] = f.m_density;
-    m[3] = 0;
-    this.fixtureMaterial.commit(slot);
+  /**
+   * Uploads `fixture`'s shape again at the next sync. The mirror packs a shape when its fixture is
+   * created and does not compare shapes afterwards (reading every vertex of every shape each step
+   * was half of a sync's time): call this after editing a fixture's shape in place.
+   */
+  invalidateShape(fixture: b2Fixture): void {
+    this.staleShapes.add(fixture);
   }
 
   private packProxies(

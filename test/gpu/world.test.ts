@@ -167,6 +167,30 @@ describeGpu('GpuWorld: the world mirrored on the GPU', (ctx) => {
     mirror.destroy();
   });
 
+  it('packs a shape when its fixture is created, and again only after invalidateShape()', () => {
+    const world = new b2World(new b2Vec2(0, 0));
+    const body = box(world, 0, 0);
+    const fixture = body.GetFixtureList()!;
+    const mirror = new GpuWorld(ctx, world);
+    mirror.sync();
+    const slot = mirror.fixtureSlot(fixture);
+    const offset = mirror.fixtureShape.u32[4 * slot + 1];
+    const x0 = () => mirror.shapePool.f32[2 * offset];
+    expect(x0()).toBe(-0.5);
+
+    (fixture.m_shape as b2PolygonShape).SetAsBox(0.75, 0.25);
+    const unseen = mirror.sync();
+    expect(unseen.upload.elements).toBe(0);
+    expect(x0()).toBe(-0.5);
+
+    mirror.invalidateShape(fixture);
+    const seen = mirror.sync();
+    expect(x0()).toBe(-0.75);
+    // the vertices and normals that changed (four vertices; the normals of a box stay), nothing else
+    expect(seen.upload.elements).toBe(4);
+    mirror.destroy();
+  });
+
   it('holds on the GPU what the engine holds: transforms, cells, shapes, filters, joints', async () => {
     const world = new b2World(new b2Vec2(0, -10));
     const a = box(world, 1.5, 2.25);
