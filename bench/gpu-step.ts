@@ -144,6 +144,8 @@ interface GpuRow {
   deviceMs: number;
   /** Device time per part of the step: broad phase, narrow phase, solver. */
   partsMs: { broad: number; narrow: number; solve: number };
+  /** Device time per timed pass (median over the awaited steps), by pass name. */
+  passesMs: Record<string, number>;
   /** Host split of an awaited step: mirror sync and other work before recording, recording, the submit call, the wait. */
   hostMs: { sync: number; record: number; submit: number; wait: number };
   dispatches: number;
@@ -162,6 +164,7 @@ async function runGpu(ctx: GpuContext, world: b2World, steps: number): Promise<G
     const wall: number[] = [];
     const device: number[] = [];
     const parts = { broad: [] as number[], narrow: [] as number[], solve: [] as number[] };
+    const passes: Record<string, number[]> = {};
     const host = { sync: [] as number[], record: [] as number[], submit: [] as number[], wait: [] as number[] };
     let last = null;
     for (let i = 0; i < steps; ++i) {
@@ -179,6 +182,7 @@ async function runGpu(ctx: GpuContext, world: b2World, steps: number): Promise<G
         const sum = { broad: 0, narrow: 0, solve: 0 };
         for (const [name, ms] of Object.entries(last.gpuTime)) {
           if (name === 'total') continue;
+          (passes[name] ??= []).push(ms);
           sum[name.startsWith('solve') ? 'solve' : BROAD_PASSES.has(name) ? 'broad' : 'narrow'] += ms;
         }
         parts.broad.push(sum.broad);
@@ -196,6 +200,7 @@ async function runGpu(ctx: GpuContext, world: b2World, steps: number): Promise<G
       deferredMs,
       deviceMs: median(device),
       partsMs: { broad: median(parts.broad), narrow: median(parts.narrow), solve: median(parts.solve) },
+      passesMs: Object.fromEntries(Object.entries(passes).map(([name, ms]) => [name, median(ms)])),
       hostMs: { sync: median(host.sync), record: median(host.record), submit: median(host.submit), wait: median(host.wait) },
       dispatches: last?.dispatches ?? 0,
       contacts: last?.contactCount ?? 0,
@@ -303,6 +308,14 @@ function markdown(rows: Row[], crossovers: Crossover[], meta: Record<string, unk
   for (const r of rows) {
     const g = r.gpu;
     if (g) lines.push(`| ${r.scene} | ${r.bodies} | ${fmt(g.setupMs)} | ${fmt(g.hostMs.sync)} | ${fmt(g.hostMs.record)} | ${fmt(g.hostMs.submit)} | ${fmt(g.hostMs.wait)} | ${g.truncatedSteps} |`);
+  }
+  const solverPasses = [...new Set(rows.flatMap((r) => Object.keys(r.gpu?.passesMs ?? {}).filter((name) => name.startsWith('solve'))))];
+  if (solverPasses.length > 0) {
+    lines.push('', '## Solver device time per pass (ms)', '', `| scene | bodies | ${solverPasses.join(' | ')} |`, `| --- | ---: |${' ---: |'.repeat(solverPasses.length)}`);
+    for (const r of rows) {
+      const g = r.gpu;
+      if (g) lines.push(`| ${r.scene} | ${r.bodies} | ${solverPasses.map((name) => fmt(g.passesMs[name])).join(' | ')} |`);
+    }
   }
   lines.push(
     '',
