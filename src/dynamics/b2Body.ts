@@ -279,6 +279,7 @@ export class b2Body {
     // to be created at the beginning of the next time step.
     this.m_world.m_flags |= b2World.e_newFixture;
 
+    this.m_world.m_changeListener?.StructureChanged();
     return fixture;
   }
 
@@ -352,6 +353,7 @@ export class b2Body {
 
     // Reset the mass data.
     this.ResetMassData();
+    this.m_world.m_changeListener?.StructureChanged();
   }
 
   /**
@@ -387,6 +389,7 @@ export class b2Body {
     }
 
     this.m_world.m_contactManager.FindNewContacts();
+    this.NotifyChanged(true);
   }
 
   /** Get the body transform for the body's origin (the body's own object: treat it as read-only). */
@@ -430,6 +433,7 @@ export class b2Body {
     }
 
     this.m_linearVelocity.Assign(v);
+    this.NotifyChanged(true);
   }
 
   /** Get the linear velocity of the center of mass (a copy, written to `out` when given). */
@@ -453,6 +457,7 @@ export class b2Body {
     }
 
     this.m_angularVelocity = w;
+    this.NotifyChanged(true);
   }
 
   /** Get the angular velocity in radians/second. */
@@ -487,6 +492,7 @@ export class b2Body {
     const rx = point.x - this.m_sweep.c.x;
     const ry = point.y - this.m_sweep.c.y;
     this.m_torque += rx * fy - ry * fx;
+    this.NotifyChanged(false);
   }
 
   /**
@@ -506,6 +512,7 @@ export class b2Body {
 
     this.m_force.x += force.x;
     this.m_force.y += force.y;
+    this.NotifyChanged(false);
   }
 
   /**
@@ -526,6 +533,7 @@ export class b2Body {
     }
 
     this.m_torque += torque;
+    this.NotifyChanged(false);
   }
 
   /**
@@ -554,6 +562,7 @@ export class b2Body {
     const rx = point.x - this.m_sweep.c.x;
     const ry = point.y - this.m_sweep.c.y;
     this.m_angularVelocity += this.m_invI * (rx * iy - ry * ix);
+    this.NotifyChanged(true);
   }
 
   /**
@@ -571,6 +580,7 @@ export class b2Body {
       this.SetAwake(true);
     }
     this.m_angularVelocity += this.m_invI * impulse;
+    this.NotifyChanged(true);
   }
 
   /**
@@ -674,6 +684,7 @@ export class b2Body {
       this.m_sweep.c0.Assign(this.m_xf.p);
       this.m_sweep.c.Assign(this.m_xf.p);
       this.m_sweep.a0 = this.m_sweep.a;
+      this.NotifyChanged(true);
       return;
     }
 
@@ -739,6 +750,7 @@ export class b2Body {
     const dy = this.m_sweep.c.y - oldCenter.y;
     this.m_linearVelocity.x += -w * dy;
     this.m_linearVelocity.y += w * dx;
+    this.NotifyChanged(true);
   }
 
   /**
@@ -831,6 +843,7 @@ export class b2Body {
     checkBody(this, 'b2Body.SetLinearDamping', false);
     b2CheckNonNegative('b2Body.SetLinearDamping', 'linearDamping', linearDamping);
     this.m_linearDamping = linearDamping;
+    this.NotifyChanged(false);
   }
 
   /** Get the angular damping of the body. */
@@ -843,6 +856,7 @@ export class b2Body {
     checkBody(this, 'b2Body.SetAngularDamping', false);
     b2CheckNonNegative('b2Body.SetAngularDamping', 'angularDamping', angularDamping);
     this.m_angularDamping = angularDamping;
+    this.NotifyChanged(false);
   }
 
   /** Get the gravity scale of the body. */
@@ -855,6 +869,7 @@ export class b2Body {
     checkBody(this, 'b2Body.SetGravityScale', false);
     b2CheckFinite('b2Body.SetGravityScale', 'scale', scale);
     this.m_gravityScale = scale;
+    this.NotifyChanged(false);
   }
 
   /**
@@ -902,6 +917,7 @@ export class b2Body {
     for (let f = this.m_fixtureList; f; f = f.m_next) {
       f.Refilter();
     }
+    this.m_world.m_changeListener?.StructureChanged();
   }
 
   /** Get the type of this body. */
@@ -918,6 +934,7 @@ export class b2Body {
       this.m_flags &= ~b2Body.e_bulletFlag;
     }
     this.m_world.m_toiCandidatesStale = true;
+    this.NotifyChanged(false);
   }
 
   /** Is this body treated like a bullet for continuous collision detection? */
@@ -937,6 +954,7 @@ export class b2Body {
       this.m_flags &= ~b2Body.e_autoSleepFlag;
       this.SetAwake(true);
     }
+    this.NotifyChanged(false);
   }
 
   /** Is this body allowed to sleep */
@@ -954,6 +972,7 @@ export class b2Body {
       if ((this.m_flags & b2Body.e_awakeFlag) === 0) {
         this.m_flags |= b2Body.e_awakeFlag;
         this.m_sleepTime = 0.0;
+        this.NotifyChanged(false);
       }
     } else {
       this.m_flags &= ~b2Body.e_awakeFlag;
@@ -962,6 +981,7 @@ export class b2Body {
       this.m_angularVelocity = 0.0;
       this.m_force.SetZero();
       this.m_torque = 0.0;
+      this.NotifyChanged(false);
     }
   }
 
@@ -1023,6 +1043,7 @@ export class b2Body {
       }
       this.m_contactList = null;
     }
+    this.m_world.m_changeListener?.StructureChanged();
   }
 
   /** Get the active state of the body. */
@@ -1043,6 +1064,7 @@ export class b2Body {
     }
 
     this.ResetMassData();
+    this.NotifyChanged(true);
   }
 
   /** Does this body have fixed rotation? */
@@ -1119,6 +1141,12 @@ export class b2Body {
   }
 
   /** Recompute the broad-phase proxies for the motion from (c0, a0) to the current transform. */
+  /** Not in the C++: tells the world's change listener (b2ChangeListener) that this body changed. */
+  private NotifyChanged(motion: boolean): void {
+    const listener = this.m_world.m_changeListener;
+    if (listener !== null) listener.BodyChanged(this, motion);
+  }
+
   SynchronizeFixtures(): void {
     const xf1 = s_xf1;
     xf1.q.Set(this.m_sweep.a0);

@@ -196,6 +196,7 @@ export class b2Fixture {
       this.m_body.SetAwake(true);
       this.m_isSensor = sensor;
       this.m_body.m_world.m_toiCandidatesStale = true;
+      this.NotifyChanged();
     }
   }
 
@@ -248,6 +249,13 @@ export class b2Fixture {
     for (let i = 0; i < this.m_proxyCount; ++i) {
       broadPhase.TouchProxy(this.m_proxies[i].proxyId);
     }
+    this.NotifyChanged();
+  }
+
+  /** Not in the C++: tells the world's change listener (b2ChangeListener) that this fixture changed. */
+  private NotifyChanged(): void {
+    const listener = this.m_body.m_world.m_changeListener;
+    if (listener !== null) listener.FixtureChanged(this);
   }
 
   /**
@@ -315,6 +323,7 @@ export class b2Fixture {
     checkFixture(this, 'b2Fixture.SetDensity');
     b2CheckNonNegative('b2Fixture.SetDensity', 'density', density);
     this.m_density = density;
+    this.NotifyChanged();
   }
 
   /** Get the density of this fixture. */
@@ -335,6 +344,7 @@ export class b2Fixture {
     checkFixture(this, 'b2Fixture.SetFriction');
     b2CheckNonNegative('b2Fixture.SetFriction', 'friction', friction);
     this.m_friction = friction;
+    this.NotifyChanged();
   }
 
   /** Get the coefficient of restitution. */
@@ -350,6 +360,7 @@ export class b2Fixture {
     checkFixture(this, 'b2Fixture.SetRestitution');
     b2CheckNonNegative('b2Fixture.SetRestitution', 'restitution', restitution);
     this.m_restitution = restitution;
+    this.NotifyChanged();
   }
 
   /**

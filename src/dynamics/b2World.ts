@@ -35,6 +35,7 @@ import type { b2Fixture, b2FixtureProxy } from './b2Fixture';
 import { b2Island } from './b2Island';
 import { b2Profile, b2TimeStep } from './b2TimeStep';
 import type {
+  b2ChangeListener,
   b2ContactFilter,
   b2ContactListener,
   b2DestructionListener,
@@ -157,6 +158,8 @@ export class b2World {
 
   m_destructionListener: b2DestructionListener | null = null;
   m_debugDraw: b2Draw | null = null;
+  /** Not in the C++: see SetChangeListener. */
+  m_changeListener: b2ChangeListener | null = null;
 
   /** This is used to compute the time step ratio to support a variable time step. */
   m_inv_dt0 = 0.0;
@@ -253,6 +256,14 @@ export class b2World {
   }
 
   /**
+   * Not in the C++: register a listener told when the API changes bodies, fixtures and the
+   * world's structure (b2ChangeListener). The WebGPU backend's mirror uses it; one per world.
+   */
+  SetChangeListener(listener: b2ChangeListener | null): void {
+    this.m_changeListener = listener;
+  }
+
+  /**
    * Create a rigid body given a definition. No reference to the definition is retained.
    * @warning This function is locked during callbacks.
    */
@@ -273,6 +284,7 @@ export class b2World {
     this.m_bodyList = b;
     ++this.m_bodyCount;
 
+    this.m_changeListener?.StructureChanged();
     return b;
   }
 
@@ -363,6 +375,7 @@ export class b2World {
     b.m_destroyed = true;
     b.m_prev = null;
     b.m_next = null;
+    this.m_changeListener?.StructureChanged();
   }
 
   /**
@@ -413,6 +426,7 @@ export class b2World {
 
     // Note: creating a joint doesn't wake the bodies.
 
+    this.m_changeListener?.StructureChanged();
     return j;
   }
 
@@ -498,6 +512,7 @@ export class b2World {
     if (collideConnected === false) {
       this.FlagContactsForFiltering(bodyA, bodyB);
     }
+    this.m_changeListener?.StructureChanged();
   }
 
   /**

@@ -7,6 +7,7 @@ import type { b2Manifold } from '../collision/b2Collision';
 import type { b2Vec2 } from '../common/b2Math';
 import { b2_maxManifoldPoints } from '../common/b2Settings';
 import type { b2Contact } from './contacts/b2Contact';
+import type { b2Body } from './b2Body';
 import type { b2Fixture } from './b2Fixture';
 import type { b2Joint } from './joints/b2Joint';
 
@@ -115,6 +116,27 @@ export class b2ContactListener {
    * Note: this is only called for contacts that are touching, solid, and awake.
    */
   PostSolve(contact: b2Contact, impulse: b2ContactImpulse): void {}
+}
+
+/**
+ * Not in Box2D 2.2.1: told when the API changes the world's objects, so that a copy of the world
+ * kept elsewhere (the WebGPU backend's mirror) can update only what changed instead of comparing
+ * every object each step. Register with b2World.SetChangeListener. Only the API is observed:
+ * writing m_ fields directly is not reported, and joints report nothing (a mirror reads them all).
+ */
+export class b2ChangeListener {
+  /**
+   * A body's state was set through the API. `motion`: its transform, velocities or centre of mass
+   * (SetTransform, SetLinearVelocity, impulses, SetMassData...), not only its forces, damping,
+   * flags or awake state.
+   */
+  BodyChanged(body: b2Body, motion: boolean): void {}
+
+  /** A fixture's sensor flag, filter or material was set. */
+  FixtureChanged(fixture: b2Fixture): void {}
+
+  /** A body, fixture or joint was created or destroyed, a body's type or active state was set. */
+  StructureChanged(): void {}
 }
 
 /** Callback class for AABB queries. See b2World.QueryAABB. */
