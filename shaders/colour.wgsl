@@ -1,25 +1,30 @@
-// colour.wgsl: solver stage 3, the graph colouring of the solver contacts (hashed-priority
-// Jones-Plassmann) and the colour lists.
+// colour.wgsl: solver stage 3, the graph colouring of the solver's items, joints and contacts
+// together (hashed-priority Jones-Plassmann), and the colour lists.
 //
-// In:  the broad phase's state (overflow), npState (NP_SOLVER, NP_OVERFLOW), contactBodies
-//      (bodies, which are dynamic; prepareContacts.wgsl).
-// Out: `begin` (one invocation): solverState SV_SKIP, SV_COUNT, the position-iteration words, the
-//      indirect sizes of per-contact passes and of the colour sort.
-//      `mark` / `pick` (per contact, round r = round.colour, rounds 0 .. COLOUR_CAP - 1): each
-//      uncoloured contact posts its priority (a bijective hash of k: unique, the same every run)
-//      to its dynamic bodies with atomicMax; a contact whose priority is the maximum on all its
-//      dynamic bodies takes colour r. The contacts of one colour share no dynamic body; static
+// Items: joint slots 0 .. SV_JOINTS - 1 (jointBodies, solveJoints.wgsl: up to four bodies, a
+// gear's four), then solver contacts k as items SV_JOINTS + k (contactBodies, prepareContacts.wgsl).
+// In:  params (joint slots), the broad phase's state (overflow), npState (NP_SOLVER, NP_OVERFLOW),
+//      contactBodies and jointBodies (bodies, which are dynamic).
+// Out: `begin` (one invocation): solverState SV_SKIP, SV_COUNT, SV_JOINTS, SV_ITEMS, the
+//      position-iteration words, the indirect sizes of per-contact and per-item passes and of the
+//      colour sort.
+//      `mark` / `pick` (per item, round r = round.colour, rounds 0 .. COLOUR_CAP - 1): each
+//      uncoloured item posts its priority (a bijective hash of the item: unique, the same every
+//      run) to its dynamic bodies with atomicMax; an item whose priority is the maximum on all its
+//      dynamic bodies takes colour r. The items of one colour share no dynamic body; static
 //      and kinematic bodies (never written by the solver) block nothing. The last `pick`
 //      (round COLOUR_CAP) puts what is left in the overflow set (colour COLOUR_CAP) and writes
-//      colourKeys[k] = (colour, k) for the sort (radixSort.wgsl, stable: k ascending per colour).
+//      colourKeys[i] = (colour, i) for the sort (radixSort.wgsl, stable: items ascending per
+//      colour, so each colour lists its joints, then its contacts).
 //      `offsets` (one workgroup): SV_COLOUR_START (first entry of each colour in the sorted
-//      keys), the indirect size of each colour's velocity and position passes (one invocation
-//      for the overflow set, which is solved in order).
+//      keys), the indirect size of each colour's warm-start, velocity and position passes (one
+//      invocation for the overflow set, which is solved in order).
 // Invariants: bodyMark holds two words per body (round parity); round r posts to parity r & 1
-//      and clears parity (r - 1) & 1 for the contacts that posted there in round r - 1, so both
-//      are zero again after the last round, and colours depend on nothing but the contacts and
+//      and clears parity (r - 1) & 1 for the items that posted there in round r - 1, so both
+//      are zero again after the last round, and colours depend on nothing but the items and
 //      their order: the same bits on every run. Priorities are compared with atomicMax, whose
-//      result does not depend on the order of the atomics.
+//      result does not depend on the order of the atomics. A joint that is not solved this step
+//      (dead slot, inactive body) has no dynamic body and takes colour 0; its passes return.
 
 @group(0) @binding(0) var<uniform> round: ColourParams;
 @group(0) @binding(1) var<storage, read> broadState: array<u32>;
@@ -30,6 +35,8 @@
 @group(0) @binding(6) var<storage, read_write> colours: array<u32>;
 @group(0) @binding(7) var<storage, read_write> bodyMark: array<atomic<u32>>;
 @group(0) @binding(8) var<storage, read_write> colourKeys: array<vec2<u32>>;
+@group(0) @binding(9) var<uniform> params: SolverParams;
+@group(0) @binding(10) var<storage, read> jointBodies: array<vec4<u32>>;
 
 fn write_args(offset: u32, size: vec3<u32>) {
   solverIndirect[offset] = size.x;
@@ -41,17 +48,21 @@ fn write_args(offset: u32, size: vec3<u32>) {
 fn begin() {
   let skip = broadState[STATE_OVERFLOW] != 0u || npState[NP_OVERFLOW] != 0u;
   let count = select(npState[NP_SOLVER], 0u, skip);
+  let items = select(params.jointSlots + count, 0u, skip);
   solverState[SV_SKIP] = select(0u, 1u, skip);
   solverState[SV_COUNT] = count;
+  solverState[SV_JOINTS] = params.jointSlots;
+  solverState[SV_ITEMS] = items;
   solverState[SV_POSITION_ITERATIONS] = 0u;
   solverState[SV_POSITION_DONE] = 0u;
   solverState[SV_JOINT_ERROR] = 0u;
   solverState[SV_MIN_SEPARATION] = sortable_key(0.0);
   write_args(SV_ARGS_CONTACTS, dispatch_size(count, WORKGROUP_SIZE));
-  write_args(SV_ARGS_TILES, dispatch_size(count, 1024u));
+  write_args(SV_ARGS_ITEMS, dispatch_size(items, WORKGROUP_SIZE));
+  write_args(SV_ARGS_TILES, dispatch_size(items, 1024u));
 }
 
-// lowbias32 (C. Wellons): every step is a bijection of u32, so distinct contacts get distinct
+// lowbias32 (C. Wellons): every step is a bijection of u32, so distinct items get distinct
 // priorities.
 fn priority(k: u32) -> u32 {
   var x = k;
@@ -63,76 +74,98 @@ fn priority(k: u32) -> u32 {
   return x;
 }
 
-fn contact_index(wid: vec3<u32>, nwg: vec3<u32>, lid: u32) -> u32 {
-  let k = group_index(wid, nwg) * WORKGROUP_SIZE + lid;
-  if (k >= solverState[SV_COUNT]) {
+fn item_index(wid: vec3<u32>, nwg: vec3<u32>, lid: u32) -> u32 {
+  let i = group_index(wid, nwg) * WORKGROUP_SIZE + lid;
+  if (i >= solverState[SV_ITEMS]) {
     return NO_CONTACT;
   }
-  return k;
+  return i;
+}
+
+// The item's bodies (up to four) and a mask of those that are dynamic (bit n: body n).
+struct ItemBodies {
+  list: vec4<u32>,
+  dynamic: u32,
+}
+
+fn item_bodies(i: u32) -> ItemBodies {
+  let joints = solverState[SV_JOINTS];
+  if (i < joints) {
+    return ItemBodies(jointBodies[2u * i], jointBodies[2u * i + 1u].y);
+  }
+  let cb = contactBodies[i - joints];
+  var dynamic = 0u;
+  if ((cb.z & CB_DYNAMIC_A) != 0u) {
+    dynamic = 1u;
+  }
+  if ((cb.z & CB_DYNAMIC_B) != 0u) {
+    dynamic = dynamic | 2u;
+  }
+  return ItemBodies(vec4<u32>(cb.x, cb.y, 0u, 0u), dynamic);
 }
 
 @compute @workgroup_size(256)
 fn mark(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: vec3<u32>,
         @builtin(local_invocation_index) lid: u32) {
-  let k = contact_index(wid, nwg, lid);
-  if (k == NO_CONTACT) {
+  let i = item_index(wid, nwg, lid);
+  if (i == NO_CONTACT) {
     return;
   }
   if (round.colour == 0u) {
-    colours[k] = UNCOLOURED;
-  } else if (colours[k] != UNCOLOURED) {
+    colours[i] = UNCOLOURED;
+  } else if (colours[i] != UNCOLOURED) {
     return;
   }
-  let cb = contactBodies[k];
+  let bodies = item_bodies(i);
   let parity = round.colour & 1u;
-  let p = priority(k);
-  if ((cb.z & CB_DYNAMIC_A) != 0u) {
-    atomicMax(&bodyMark[2u * cb.x + parity], p);
-  }
-  if ((cb.z & CB_DYNAMIC_B) != 0u) {
-    atomicMax(&bodyMark[2u * cb.y + parity], p);
+  let p = priority(i);
+  for (var n = 0u; n < 4u; n = n + 1u) {
+    if ((bodies.dynamic & (1u << n)) != 0u) {
+      atomicMax(&bodyMark[2u * bodies.list[n] + parity], p);
+    }
   }
 }
 
 @compute @workgroup_size(256)
 fn pick(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: vec3<u32>,
         @builtin(local_invocation_index) lid: u32) {
-  let k = contact_index(wid, nwg, lid);
-  if (k == NO_CONTACT) {
+  let i = item_index(wid, nwg, lid);
+  if (i == NO_CONTACT) {
     return;
   }
   let r = round.colour;
-  let cb = contactBodies[k];
-  let dynA = (cb.z & CB_DYNAMIC_A) != 0u;
-  let dynB = (cb.z & CB_DYNAMIC_B) != 0u;
-  var colour = colours[k];
-  // Clear what this contact posted in the previous round (the other parity).
+  let bodies = item_bodies(i);
+  var colour = colours[i];
+  // Clear what this item posted in the previous round (the other parity).
   if (r > 0u && (colour == UNCOLOURED || colour == r - 1u)) {
     let previous = (r - 1u) & 1u;
-    if (dynA) {
-      atomicStore(&bodyMark[2u * cb.x + previous], 0u);
-    }
-    if (dynB) {
-      atomicStore(&bodyMark[2u * cb.y + previous], 0u);
+    for (var n = 0u; n < 4u; n = n + 1u) {
+      if ((bodies.dynamic & (1u << n)) != 0u) {
+        atomicStore(&bodyMark[2u * bodies.list[n] + previous], 0u);
+      }
     }
   }
   if (colour != UNCOLOURED) {
     if (r == COLOUR_CAP) {
-      colourKeys[k] = vec2<u32>(colour, k);
+      colourKeys[i] = vec2<u32>(colour, i);
     }
     return;
   }
   if (r == COLOUR_CAP) {
-    colours[k] = COLOUR_CAP;
-    colourKeys[k] = vec2<u32>(COLOUR_CAP, k);
+    colours[i] = COLOUR_CAP;
+    colourKeys[i] = vec2<u32>(COLOUR_CAP, i);
     return;
   }
   let parity = r & 1u;
-  let p = priority(k);
-  let winsA = !dynA || atomicLoad(&bodyMark[2u * cb.x + parity]) == p;
-  let winsB = !dynB || atomicLoad(&bodyMark[2u * cb.y + parity]) == p;
-  if (winsA && winsB) {
-    colours[k] = r;
+  let p = priority(i);
+  var wins = true;
+  for (var n = 0u; n < 4u; n = n + 1u) {
+    if ((bodies.dynamic & (1u << n)) != 0u && atomicLoad(&bodyMark[2u * bodies.list[n] + parity]) != p) {
+      wins = false;
+    }
+  }
+  if (wins) {
+    colours[i] = r;
   }
 }
 
@@ -156,7 +189,7 @@ fn offsets(@builtin(local_invocation_index) lid: u32) {
   if (lid > COLOUR_CAP + 1u) {
     return;
   }
-  let count = solverState[SV_COUNT];
+  let count = solverState[SV_ITEMS];
   let start = colour_start(lid, count);
   solverState[SV_COLOUR_START + lid] = start;
   if (lid > COLOUR_CAP) {

@@ -39,11 +39,25 @@ const STATE_ENTRIES: u32 = 15u;        // entries to sort and sweep: the total, 
 const OVERFLOW_PAIRS: u32 = 1u;
 const OVERFLOW_ENTRIES: u32 = 2u;
 
-// Sweep entries: key = strip << QUANT_BITS | quantised lower bound on the sweep axis.
+// Sweep entries: key = strip << q | the quantised lower bound on the sweep axis (QUANT_BITS, from
+// axis.wgsl) cut to its top q bits, q = min(QUANT_BITS, KEY_BITS - bits of the strip index), so
+// that a key fits in KEY_BITS (three 8-bit sort passes). A coarser key only ties more keys: the
+// sweep then tests more candidates, which the exact AABB test rejects (sweep.wgsl).
 const STRIP_BITS: u32 = 12u;
 const MAX_STRIPS: u32 = 4096u;
 const QUANT_BITS: u32 = 20u;
 const QUANT_MAX: u32 = 1048575u;
+const KEY_BITS: u32 = 24u;
+
+// q above, for `strips` strips (MAX_STRIPS at most, so q >= KEY_BITS - STRIP_BITS).
+fn key_quant_bits(strips: u32) -> u32 {
+  return min(QUANT_BITS, KEY_BITS - (32u - countLeadingZeros(strips - 1u)));
+}
+
+// The sweep key of quantised coordinate `q` in strip `strip`; monotone in q.
+fn sweep_key(strip: u32, q: u32, quantBits: u32) -> u32 {
+  return (strip << quantBits) | (q >> (QUANT_BITS - quantBits));
+}
 
 // Indirect-dispatch argument triples (u32 word offsets in the indirect buffer).
 const ARGS_EMIT: u32 = 0u;             // sweep emit, one invocation per work item
@@ -200,6 +214,8 @@ const SV_MIN_SEPARATION: u32 = 2u;     // sortable_key of this position iteratio
 const SV_POSITION_ITERATIONS: u32 = 3u; // position iterations that ran (2.2.1's early exit stops the rest)
 const SV_POSITION_DONE: u32 = 4u;      // 1 once an iteration ended with every separation >= -3 b2_linearSlop and the joints within slop
 const SV_JOINT_ERROR: u32 = 5u;        // 1 when a joint of this position iteration is not within b2_linearSlop / b2_angularSlop
+const SV_JOINTS: u32 = 6u;             // joint slots: the colouring's items are joint slots, then solver contacts (k + SV_JOINTS)
+const SV_ITEMS: u32 = 7u;              // items to colour and solve: SV_JOINTS + SV_COUNT, or 0 when skipping
 const SV_COLOUR_START: u32 = 8u;       // COLOUR_CAP + 2 words: first entry of colour c in colourKeys, then the end
 
 // Colours of the graph colouring; colour COLOUR_CAP is the overflow set (solved in order by one invocation).
@@ -208,9 +224,10 @@ const UNCOLOURED: u32 = 0xffffffffu;
 
 // Indirect-dispatch triples of the solver (u32 word offsets in its indirect buffer).
 const SV_ARGS_CONTACTS: u32 = 0u;      // one invocation per solver contact
-const SV_ARGS_TILES: u32 = 3u;         // the colour sort, one workgroup per 1024 contacts
+const SV_ARGS_TILES: u32 = 3u;         // the colour sort, one workgroup per 1024 items
 const SV_ARGS_COLOURS: u32 = 6u;       // + 3 * colour: the velocity passes over one colour (COLOUR_CAP + 1 triples)
 const SV_ARGS_POSITION: u32 = 81u;     // + 3 * colour: the position passes (zeroed by the early exit)
+const SV_ARGS_ITEMS: u32 = 156u;       // one invocation per item (the colouring's rounds)
 
 // vec4s per solver contact in the constraint buffer (solverCommon.wgsl lists them).
 const CONSTRAINT_VEC4: u32 = 13u;

@@ -3,13 +3,14 @@
 // the transforms (`synchronize`: b2Body::SynchronizeTransform, and a new cell for a body that
 // left its own).
 //
-// In:  params (h, cellSize, body slot count), solverState[SV_SKIP], bodyFlags, bodyMass (local
-//      centre), bodySweep, bodyVel, bodyXf, bodyCell.
-// Out: `main`: bodySweep c, a and bodyVel (clamped) of live active non-static bodies.
+// In:  params (h, cellSize, body slot count), solverState[SV_SKIP], bodyFlags, bodyAwake, bodyMass
+//      (local centre), bodySweep, bodyVel, bodyXf, bodyCell.
+// Out: `main`: bodySweep c, a and bodyVel (clamped) of live active awake non-static bodies.
 //      `synchronize`: bodyXf (p = c - R(a) localCenter, q = R(a)); when p leaves
 //      [-cellSize/2, cellSize/2] on an axis, bodyCell moves by round(p / cellSize) there and p, c0,
 //      c move the other way (exact: multiples of a power of two), keeping offsets within a cell.
-// Invariants: one invocation per body slot writing only its own body; static bodies never move.
+// Invariants: one invocation per body slot writing only its own body; static and sleeping bodies
+//      never move (a body put to sleep this step is synchronized first: islands.wgsl runs after).
 
 @group(0) @binding(0) var<uniform> params: SolverParams;
 @group(0) @binding(1) var<storage, read> solverState: array<u32>;
@@ -19,13 +20,14 @@
 @group(0) @binding(5) var<storage, read_write> bodyVel: array<vec4<f32>>;
 @group(0) @binding(6) var<storage, read_write> bodyXf: array<vec4<f32>>;
 @group(0) @binding(7) var<storage, read_write> bodyCell: array<vec2<i32>>;
+@group(0) @binding(8) var<storage, read> bodyAwake: array<u32>;
 
 fn moving_body(i: u32) -> bool {
   if (i >= params.bodySlots || solverState[SV_SKIP] != 0u) {
     return false;
   }
   let flags = bodyFlags[i];
-  return (flags & BODY_LIVE) != 0u && (flags & BODY_ACTIVE) != 0u && body_type(flags) != STATIC_BODY;
+  return (flags & BODY_LIVE) != 0u && (flags & BODY_ACTIVE) != 0u && body_type(flags) != STATIC_BODY && bodyAwake[i] != 0u;
 }
 
 @compute @workgroup_size(256)

@@ -2,11 +2,12 @@
 // of step (c0 = c, a0 = a) and, for dynamic bodies, gravity (times the gravity scale), forces and
 // damping (v *= b2Clamp(1 - h * damping, 0, 1)).
 //
-// In:  params (h, gravity, body slot count), solverState[SV_SKIP], bodyFlags, bodyForce, bodyMass,
-//      bodyParams, bodySweep, bodyVel (src-gpu/layout.ts).
-// Out: bodySweep (c0, a0), bodyVel of every live active dynamic body.
-// Invariants: one invocation per body slot, each writing only its own body; dead, inactive and
-//      static bodies are left as they are; nothing runs when the collision passes overflowed.
+// In:  params (h, gravity, body slot count), solverState[SV_SKIP], bodyFlags, bodyAwake (after the
+//      island search), bodyForce, bodyMass, bodyParams, bodySweep, bodyVel (src-gpu/layout.ts).
+// Out: bodySweep (c0, a0) of every live active awake non-static body, bodyVel of the dynamic ones.
+// Invariants: one invocation per body slot, each writing only its own body; dead, inactive, static
+//      and sleeping bodies are left as they are (2.2.1 solves only the islands of awake bodies);
+//      nothing runs when the collision passes overflowed.
 
 @group(0) @binding(0) var<uniform> params: SolverParams;
 @group(0) @binding(1) var<storage, read> solverState: array<u32>;
@@ -16,6 +17,7 @@
 @group(0) @binding(5) var<storage, read> bodyParams: array<vec4<f32>>;
 @group(0) @binding(6) var<storage, read_write> bodySweep: array<vec4<f32>>;
 @group(0) @binding(7) var<storage, read_write> bodyVel: array<vec4<f32>>;
+@group(0) @binding(8) var<storage, read> bodyAwake: array<u32>;
 
 @compute @workgroup_size(256)
 fn main(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: vec3<u32>,
@@ -25,7 +27,7 @@ fn main(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: vec
     return;
   }
   let flags = bodyFlags[i];
-  if ((flags & BODY_LIVE) == 0u || (flags & BODY_ACTIVE) == 0u || body_type(flags) == STATIC_BODY) {
+  if ((flags & BODY_LIVE) == 0u || (flags & BODY_ACTIVE) == 0u || body_type(flags) == STATIC_BODY || bodyAwake[i] == 0u) {
     return;
   }
   let s0 = bodySweep[2u * i];

@@ -1,8 +1,9 @@
 // keys.wgsl: stage 3, the sweep entries and their sort keys.
 //
 // A proxy gets one entry in each strip its AABB spans on the other axis (axis.wgsl chose the
-// strips). An entry is (key, proxy slot), key = strip << QUANT_BITS | the quantised lower bound on
-// the sweep axis, so that one sort orders the entries by strip, then along the sweep axis.
+// strips). An entry is (key, proxy slot), key = sweep_key(strip, quantised lower bound on the
+// sweep axis) (common.wgsl: KEY_BITS bits), so that one sort orders the entries by strip, then
+// along the sweep axis.
 // In:  proxyAABB[p] for p in [0, count) (dead slots: lower > upper); the layout in the state
 //      buffer (STATE_AXIS, STATE_STRIPS, STATE_OTHER_*, STATE_AXIS_*); STATE_ENTRY_CAPACITY.
 // Out: items[0, E) = (key, slot), E = state[STATE_ENTRIES]; replicaOffset[p]; indirect sizes.
@@ -99,12 +100,13 @@ fn entries(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: 
   let lo = strip_of(box[other], l.otherLo, l.invH, l.strips);
   let hi = strip_of(box[2u + other], l.otherLo, l.invH, l.strips);
   let q = quantise(box[l.axis], l.axisLo, l.scale);
+  let quantBits = key_quant_bits(l.strips);
   let capacity = state[STATE_ENTRY_CAPACITY];
   let first = replicaOffset[p];
   for (var k = lo; k <= hi; k = k + 1u) {
     let index = first + (k - lo);
     if (index < capacity) {
-      items[index] = vec2<u32>((k << QUANT_BITS) | q, p);
+      items[index] = vec2<u32>(sweep_key(k, q, quantBits), p);
     }
   }
 }

@@ -4,12 +4,16 @@
 // In:  solverState[SV_COUNT], solverList (contact indices), contactRef (fixtures and bodies in
 //      A/B order), fixtureShape (radius), fixtureMaterial (friction, restitution), manifolds
 //      (type, local normal and points, warm-start impulses in word 3), bodyMass, and after stage 1
-//      bodySweep, bodyVel, bodyCell; params (dtRatio, warmStarting, cellSize).
+//      bodySweep, bodyVel, bodyCell; params (dtRatio, warmStarting, cellSize); bodyAwake (after
+//      the island search).
 // Out: contactBodies[k] and constraints[k] (solverCommon.wgsl) of each solver contact k:
 //      `bodies`   bodies, which are dynamic, b2MixFriction / b2MixRestitution, masses, radii,
 //                 local centres;
 //      `manifold` point counts and type, local normal and points, impulses (dtRatio x the
-//                 manifold's when warm starting, else 0);
+//                 manifold's when warm starting, else 0); a contact of a sleeping island (no
+//                 awake dynamic body: 2.2.1 neither updates nor solves it) gets no points and no
+//                 dynamic body, so no pass writes a body, and keeps the manifold's impulses,
+//                 which storeImpulses writes back unchanged;
 //      `velocity` b2WorldManifold::Initialize in A's cell, normal, rA, rB, normal and tangent
 //                 masses, the restitution bias (vRel < -b2_velocityThreshold), and for two points
 //                 the block solver's K and its inverse, or one point when K's condition number
@@ -30,6 +34,7 @@
 @group(0) @binding(10) var<storage, read> bodySweep: array<vec4<f32>>;
 @group(0) @binding(11) var<storage, read> bodyVel: array<vec4<f32>>;
 @group(0) @binding(12) var<storage, read> bodyCell: array<vec2<i32>>;
+@group(0) @binding(13) var<storage, read> bodyAwake: array<u32>;
 
 fn contact_of(wid: vec3<u32>, nwg: vec3<u32>, lid: u32) -> u32 {
   let k = group_index(wid, nwg) * WORKGROUP_SIZE + lid;
@@ -80,12 +85,16 @@ fn manifold(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg:
   let cb = contactBodies[k];
   let i = cb.w;
   let header = manifolds[4u * i].x;
-  let count = (header >> 2u) & 3u;
   let kind = header & 3u;
-  contactBodies[k].z = (cb.z & (CB_DYNAMIC_A | CB_DYNAMIC_B)) | count | (count << CB_MANIFOLD_POINTS_SHIFT) | (kind << CB_TYPE_SHIFT);
   let base = CONSTRAINT_VEC4 * k;
+  // Islands are connected components, so one awake dynamic body means the whole contact is awake.
+  let awake = ((cb.z & CB_DYNAMIC_A) != 0u && bodyAwake[cb.x] != 0u) || ((cb.z & CB_DYNAMIC_B) != 0u && bodyAwake[cb.y] != 0u);
+  let count = select(0u, (header >> 2u) & 3u, awake);
+  contactBodies[k].z = select(0u, cb.z & (CB_DYNAMIC_A | CB_DYNAMIC_B), awake) | count | (count << CB_MANIFOLD_POINTS_SHIFT) | (kind << CB_TYPE_SHIFT);
   var impulses = vec4<f32>(0.0);
-  if (params.warmStarting != 0u) {
+  if (!awake) {
+    impulses = bitcast<vec4<f32>>(manifolds[4u * i + 3u]);
+  } else if (params.warmStarting != 0u) {
     impulses = params.dtRatio * bitcast<vec4<f32>>(manifolds[4u * i + 3u]);
     if (count < 2u) {
       impulses = vec4<f32>(impulses.xy, 0.0, 0.0);

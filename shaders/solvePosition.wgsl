@@ -1,22 +1,29 @@
-// solvePosition.wgsl: solver stage 9, one position iteration of b2ContactSolver::
-// SolvePositionConstraints over one colour (b2PositionSolverManifold, Baumgarte with
-// b2_linearSlop and b2_maxLinearCorrection), and 2.2.1's early exit as GPU work (`check`).
+// solvePosition.wgsl: solver stage 9, one position iteration over one colour: its contacts'
+// b2ContactSolver::SolvePositionConstraints (b2PositionSolverManifold, Baumgarte with
+// b2_linearSlop and b2_maxLinearCorrection), then its joints' b2*Joint::SolvePositionConstraints
+// (solveJointsCommon.wgsl); and 2.2.1's early exit as GPU work (`check`).
 //
 // In:  colour (the pass's colour, serial for the overflow set), solverState (SV_COLOUR_START,
-//      SV_MIN_SEPARATION), colourKeys, contactBodies, constraints (masses, radii, local geometry
-//      and centres, B's cell relative to A's), bodySweep (c, a after integratePositions.wgsl).
-// Out: `main`: bodySweep c, a of the dynamic bodies of the colour's contacts; the minimum
-//      separation of the iteration (atomicMin of sortable keys: order-independent).
-//      `check` (one invocation, after each iteration's colours and joints): unless
-//      SV_POSITION_DONE, counts the iteration in SV_POSITION_ITERATIONS; when the minimum
-//      separation is >= -3 b2_linearSlop (2.2.1's contactsOkay) and no joint set SV_JOINT_ERROR
-//      (jointsOkay), sets SV_POSITION_DONE and zeroes the indirect sizes of every colour's
-//      position pass, so the remaining iterations dispatch no workgroups (the joints' pass
-//      returns at once); resets the minimum to 0 (b2ContactSolver starts each iteration at 0)
-//      and SV_JOINT_ERROR. colour.wgsl's `offsets` restores the sizes each step.
-// Invariants: one writer per dynamic body per pass (the colouring); no read-back. The exit is
-//      global (all contacts of the world), where 2.2.1 exits per island: at least as many
-//      iterations as 2.2.1 for every island.
+//      SV_JOINTS, SV_MIN_SEPARATION), colourKeys (items: joint slots below SV_JOINTS, then solver
+//      contacts), contactBodies, constraints (masses, radii, local geometry and centres, B's cell
+//      relative to A's), jointBodies, jointParams, jointConstraints, bodySweep (c, a after
+//      integratePositions.wgsl).
+// Out: `main`: bodySweep c, a of the dynamic bodies of the colour's items; the minimum
+//      separation of the iteration (atomicMin of sortable keys: order-independent);
+//      SV_JOINT_ERROR when a joint is not within b2_linearSlop / b2_angularSlop.
+//      `check` (one invocation, after each iteration's colours): unless SV_POSITION_DONE, counts
+//      the iteration in SV_POSITION_ITERATIONS; when the minimum separation is >= -3
+//      b2_linearSlop (2.2.1's contactsOkay) and no joint set SV_JOINT_ERROR (jointsOkay), sets
+//      SV_POSITION_DONE and zeroes the indirect sizes of every colour's position pass, so the
+//      remaining iterations dispatch no workgroups; resets the minimum to 0 (b2ContactSolver
+//      starts each iteration at 0) and SV_JOINT_ERROR. colour.wgsl's `offsets` restores the
+//      sizes each step.
+// Invariants: one writer per dynamic body per pass (the colouring); no read-back. 2.2.1 solves
+//      all of an island's contacts, then all its joints, per iteration; here each colour's
+//      contacts, then its joints (the same within a colour, whose items share no dynamic body;
+//      the overflow set runs its contacts, then its joints, in one invocation). The exit is
+//      global (all contacts and joints of the world), where 2.2.1 exits per island: at least as
+//      many iterations as 2.2.1 for every island.
 
 @group(0) @binding(0) var<uniform> colour: ColourParams;
 @group(0) @binding(1) var<storage, read_write> solverState: array<atomic<u32>>;
@@ -100,28 +107,68 @@ fn solve(k: u32) -> f32 {
   return minSeparation;
 }
 
+// One joint's position iteration; false when it is not within its slop.
+fn solve_joint(j: u32) -> bool {
+  let list = jointBodies[2u * j];
+  let info = jointBodies[2u * j + 1u];
+  if (info.z == 0u) {
+    return true;
+  }
+  var motion = Motion();
+  for (var i = 0u; i < 4u; i = i + 1u) {
+    if (list[i] != NO_BODY) {
+      motion[i] = bodySweep[2u * list[i] + 1u];
+    }
+  }
+  let okay = joint_position(j, info.x, info.w, &motion);
+  for (var i = 0u; i < 4u; i = i + 1u) {
+    if ((info.y & (1u << i)) != 0u) {
+      bodySweep[2u * list[i] + 1u] = motion[i];
+    }
+  }
+  return okay;
+}
+
 @compute @workgroup_size(256)
 fn main(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: vec3<u32>,
         @builtin(local_invocation_index) lid: u32) {
   let start = atomicLoad(&solverState[SV_COLOUR_START + colour.colour]);
   let end = atomicLoad(&solverState[SV_COLOUR_START + colour.colour + 1u]);
+  let joints = atomicLoad(&solverState[SV_JOINTS]);
   let t = group_index(wid, nwg) * WORKGROUP_SIZE + lid;
   var minSeparation = 0.0;
+  var jointsOkay = true;
   if (colour.serial != 0u) {
     if (t != 0u) {
       return;
     }
-    for (var e = start; e < end; e = e + 1u) {
-      minSeparation = min(minSeparation, solve(colourKeys[e].y));
+    // Joints sort first (lower items): the contacts' entries, then the joints'.
+    var firstContact = start;
+    while (firstContact < end && colourKeys[firstContact].y < joints) {
+      firstContact = firstContact + 1u;
+    }
+    for (var e = firstContact; e < end; e = e + 1u) {
+      minSeparation = min(minSeparation, solve(colourKeys[e].y - joints));
+    }
+    for (var e = start; e < firstContact; e = e + 1u) {
+      jointsOkay = solve_joint(colourKeys[e].y) && jointsOkay;
     }
   } else {
     if (start + t >= end) {
       return;
     }
-    minSeparation = solve(colourKeys[start + t].y);
+    let item = colourKeys[start + t].y;
+    if (item < joints) {
+      jointsOkay = solve_joint(item);
+    } else {
+      minSeparation = solve(item - joints);
+    }
   }
   if (minSeparation < 0.0) {
     atomicMin(&solverState[SV_MIN_SEPARATION], sortable_key(minSeparation));
+  }
+  if (!jointsOkay) {
+    atomicStore(&solverState[SV_JOINT_ERROR], 1u);
   }
 }
 

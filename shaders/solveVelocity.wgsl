@@ -1,14 +1,18 @@
-// solveVelocity.wgsl: solver stage 6, one velocity iteration of b2ContactSolver::
-// SolveVelocityConstraints over one colour: friction first (clamped by friction x the normal
+// solveVelocity.wgsl: solver stage 6, one velocity iteration over one colour: its joints'
+// b2*Joint::SolveVelocityConstraints (solveJointsCommon.wgsl), and its contacts'
+// b2ContactSolver::SolveVelocityConstraints: friction first (clamped by friction x the normal
 // impulse), then the normal impulses: one point directly, two points with the block solver
 // (its four cases: both points active, only the first, only the second, none).
 //
-// In:  colour (the pass's colour, serial for the overflow set), solverState[SV_COLOUR_START],
-//      colourKeys, contactBodies, constraints (prepareContacts.wgsl), bodyVel.
-// Out: bodyVel of the dynamic bodies of the colour's contacts; constraints rows 4 (accumulated
-//      normal and tangent impulses).
-// Invariants: the contacts of a colour share no dynamic body (one writer per body per pass); the
-//      overflow set runs in one invocation, in contact order; float32 in the engine's order.
+// In:  colour (the pass's colour, serial for the overflow set), solverState (SV_COLOUR_START,
+//      SV_JOINTS), colourKeys (items: joint slots below SV_JOINTS, then solver contacts),
+//      contactBodies, constraints (prepareContacts.wgsl), jointBodies, jointParams (motor speeds,
+//      limits, forces as set this step), jointConstraints (solveJoints.wgsl), bodyVel.
+// Out: bodyVel of the dynamic bodies of the colour's items; constraints rows 4 (accumulated
+//      normal and tangent impulses); jointConstraints rows 2 (accumulated joint impulses).
+// Invariants: the items of a colour share no dynamic body (one writer per body per pass); the
+//      overflow set runs in one invocation, its joints, then its contacts, in item order, as
+//      b2Island::Solve orders joints before contacts; float32 in the engine's order.
 
 @group(0) @binding(0) var<uniform> colour: ColourParams;
 @group(0) @binding(1) var<storage, read> solverState: array<u32>;
@@ -148,21 +152,50 @@ fn solve(k: u32) {
   }
 }
 
+fn solve_joint(j: u32) {
+  let list = jointBodies[2u * j];
+  let info = jointBodies[2u * j + 1u];
+  if (info.z == 0u) {
+    return;
+  }
+  var motion = Motion();
+  for (var i = 0u; i < 4u; i = i + 1u) {
+    if (list[i] != NO_BODY) {
+      motion[i] = bodyVel[list[i]];
+    }
+  }
+  joint_velocity(j, info.x, info.w, &motion);
+  for (var i = 0u; i < 4u; i = i + 1u) {
+    if ((info.y & (1u << i)) != 0u) {
+      bodyVel[list[i]] = vec4<f32>(motion[i].xyz, 0.0);
+    }
+  }
+}
+
+fn solve_item(item: u32, joints: u32) {
+  if (item < joints) {
+    solve_joint(item);
+  } else {
+    solve(item - joints);
+  }
+}
+
 @compute @workgroup_size(256)
 fn main(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: vec3<u32>,
         @builtin(local_invocation_index) lid: u32) {
   let start = solverState[SV_COLOUR_START + colour.colour];
   let end = solverState[SV_COLOUR_START + colour.colour + 1u];
+  let joints = solverState[SV_JOINTS];
   let t = group_index(wid, nwg) * WORKGROUP_SIZE + lid;
   if (colour.serial != 0u) {
     if (t == 0u) {
       for (var e = start; e < end; e = e + 1u) {
-        solve(colourKeys[e].y);
+        solve_item(colourKeys[e].y, joints);
       }
     }
     return;
   }
   if (start + t < end) {
-    solve(colourKeys[start + t].y);
+    solve_item(colourKeys[start + t].y, joints);
   }
 }

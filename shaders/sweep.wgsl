@@ -8,13 +8,14 @@
 // Out: pairs[0, min(found, capacity)) = (proxy a, proxy b), a < b, in no particular order;
 //      state[STATE_PAIR_COUNT] = found, counted past the capacity so the host can grow and redo.
 // Passes:
-//   `gather`    sortedBox[e] = sortable keys of the entry's AABB with the sweep axis first
-//               (min axis, min other, max axis, max other); sortedInfo[e] = (slot, body,
-//               category | mask << 16, group (int16 bits) | flag word << 16); sortedAux[e] = (key,
-//               key of the upper bound in the same strip, the proxy's first strip).
-//   `count`     each entry's candidates are the entries after it up to the first whose key passes
-//               its upper key (a galloping, then binary search); workOffset[e] = their number in
-//               chunks of CHUNK.
+//   `gather`    sortedKeys[2e] = sortable keys of the entry's AABB with the sweep axis first
+//               (min axis, min other, max axis, max other), sortedKeys[2e + 1] = (key, key of
+//               the upper bound in the same strip, the proxy's first strip, the entry's strip):
+//               what each candidate test reads, side by side; sortedInfo[e] = (slot, body,
+//               category | mask << 16, group (int16 bits) | flag word << 16). Then the entry's
+//               candidates: the entries after it up to the first whose key passes its upper key
+//               (a galloping, then binary search on the sorted keys); workOffset[e] = their number
+//               in chunks of CHUNK.
 //   (scan.wgsl turns workOffset into exclusive offsets and their total, state[STATE_WORK_TOTAL])
 //   `emit_args` the indirect size of `emit`.
 //   `emit`      one invocation per work item: its entry e (binary search of the offsets) and up
@@ -23,8 +24,9 @@
 //               in several strips is kept once), and Box2D would create a contact. A workgroup
 //               reserves room for its pairs with one atomicAdd and writes them in invocation order.
 // Invariants: the keys order entries by strip, then by quantised lower bound: quantisation is
-// monotone, so an entry whose key passes e's upper key cannot overlap e, and a candidate with the
-// same quantised lower bound as e still comes after e or finds e itself; each pair is found once.
+// monotone (however coarse: sweep_key keeps KEY_BITS - strip bits of it), so an entry whose key
+// passes e's upper key cannot overlap e, and a candidate with the same quantised lower bound as e
+// still comes after e or finds e itself; each pair is found once. Ties only add candidates.
 // One invocation does at most CHUNK overlap tests, so a huge AABB does not serialise the sweep.
 
 const CHUNK: u32 = 32u;
@@ -42,9 +44,8 @@ struct SweepParams {
 @group(0) @binding(3) var<storage, read> proxyRef: array<vec4<u32>>;
 @group(0) @binding(4) var<storage, read> proxyFilter: array<vec2<u32>>;
 @group(0) @binding(5) var<storage, read> state: array<u32>;
-@group(0) @binding(6) var<storage, read_write> sortedBox: array<vec4<u32>>;
+@group(0) @binding(6) var<storage, read_write> sortedKeys: array<vec4<u32>>;
 @group(0) @binding(7) var<storage, read_write> sortedInfo: array<vec4<u32>>;
-@group(0) @binding(8) var<storage, read_write> sortedAux: array<vec4<u32>>;
 @group(0) @binding(9) var<storage, read_write> workOffset: array<u32>;
 @group(0) @binding(10) var<storage, read> jointRange: array<vec2<u32>>;
 @group(0) @binding(11) var<storage, read> jointList: array<u32>;
@@ -58,7 +59,8 @@ var<workgroup> groupBase: u32;
 fn gather(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: vec3<u32>,
           @builtin(local_invocation_index) lid: u32) {
   let e = group_index(wid, nwg) * WORKGROUP_SIZE + lid;
-  if (e >= state[STATE_ENTRIES]) {
+  let n = state[STATE_ENTRIES];
+  if (e >= n) {
     return;
   }
   let item = items[e];
@@ -71,26 +73,17 @@ fn gather(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: v
     box = box.yxwz;
     otherMin = b.x;
   }
-  sortedBox[e] = box;
   let proxy = proxyRef[slot];
   let filterBits = proxyFilter[slot];
   sortedInfo[e] = vec4<u32>(slot, proxy.z, filterBits.x, (filterBits.y & 0xffffu) | (proxy.w << 16u));
   let strips = state[STATE_STRIPS];
   let stripLo = strip_of(otherMin, bitcast<f32>(state[STATE_OTHER_LO]), bitcast<f32>(state[STATE_OTHER_INV_H]), strips);
-  let upper = quantise(b[2u + axis], bitcast<f32>(state[STATE_AXIS_LO]), bitcast<f32>(state[STATE_AXIS_SCALE]));
-  let stripBits = item.x & ~QUANT_MAX;
-  sortedAux[e] = vec4<u32>(item.x, stripBits | upper, stripLo, 0u);
-}
+  let quantBits = key_quant_bits(strips);
+  let strip = item.x >> quantBits;
+  let upper = sweep_key(strip, quantise(b[2u + axis], bitcast<f32>(state[STATE_AXIS_LO]), bitcast<f32>(state[STATE_AXIS_SCALE])), quantBits);
+  sortedKeys[2u * e] = box;
+  sortedKeys[2u * e + 1u] = vec4<u32>(item.x, upper, stripLo, strip);
 
-@compute @workgroup_size(256)
-fn count(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: vec3<u32>,
-         @builtin(local_invocation_index) lid: u32) {
-  let e = group_index(wid, nwg) * WORKGROUP_SIZE + lid;
-  let n = state[STATE_ENTRIES];
-  if (e >= n) {
-    return;
-  }
-  let upper = sortedAux[e].y;
   // Gallop: find hi with items[hi].x > upper (or hi = n), lo just past the last known <= upper.
   var lo = e + 1u;
   var hi = e + 1u;
@@ -200,16 +193,16 @@ fn emit(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: vec
     e = lo - 1u;
     first = e + 1u + (w - workOffset[e]) * CHUNK;
     let end = min(n, first + CHUNK);
-    let boxE = sortedBox[e];
-    let auxE = sortedAux[e];
+    let boxE = sortedKeys[2u * e];
+    let auxE = sortedKeys[2u * e + 1u];
     let infoE = sortedInfo[e];
-    let strip = auxE.x >> QUANT_BITS;
+    let strip = auxE.w;
     for (var t = first; t < end; t = t + 1u) {
-      let auxT = sortedAux[t];
+      let auxT = sortedKeys[2u * t + 1u];
       if (auxT.x > auxE.y) {
         break;
       }
-      let boxT = sortedBox[t];
+      let boxT = sortedKeys[2u * t];
       // Exact overlap (the quantised order does not give boxE.x <= boxT.x), in the strip where
       // the pair belongs.
       if (boxT.x <= boxE.z && boxE.x <= boxT.z && boxT.y <= boxE.w && boxE.y <= boxT.w &&

@@ -1,12 +1,17 @@
-// warmStart.wgsl: solver stage 4, b2ContactSolver::WarmStart over one colour: each contact
-// applies its carried impulses (already scaled by dtRatio, prepareContacts.wgsl) to its bodies.
+// warmStart.wgsl: solver stage 4, the warm start over one colour: b2ContactSolver::WarmStart for
+// its contacts (impulses already scaled by dtRatio, prepareContacts.wgsl) and the warm start of
+// b2*Joint::InitVelocityConstraints for its joints (solveJointsCommon.wgsl; a mouse joint's 0.98
+// angular damping included, so this pass runs with warm starting off too when there are joints).
 //
-// In:  colour (the pass's colour, serial for the overflow set), solverState[SV_COLOUR_START],
-//      colourKeys (sorted (colour, k)), contactBodies, constraints (normal, rA, rB, impulses,
-//      masses), bodyVel.
-// Out: bodyVel of the dynamic bodies of the colour's contacts.
-// Invariants: the contacts of a colour share no dynamic body, so each body has one writer per
-//      pass; the overflow set runs in one invocation, in contact order.
+// In:  colour (the pass's colour, serial for the overflow set), solverState (SV_COLOUR_START,
+//      SV_JOINTS), colourKeys (sorted (colour, item): items below SV_JOINTS are joint slots, the
+//      rest solver contacts k + SV_JOINTS), contactBodies, constraints (normal, rA, rB, impulses,
+//      masses), jointBodies, jointConstraints, bodyVel.
+// Out: bodyVel of the dynamic bodies of the colour's items.
+// Invariants: the items of a colour share no dynamic body, so each body has one writer per pass;
+//      the overflow set runs in one invocation, its joints first, then its contacts, in item
+//      order. 2.2.1 warm-starts all contacts, then the joints: the same sums but for the mouse
+//      joint's damping, which here sees the contacts' warm start of earlier colours only.
 
 @group(0) @binding(0) var<uniform> colour: ColourParams;
 @group(0) @binding(1) var<storage, read> solverState: array<u32>;
@@ -14,6 +19,34 @@
 @group(0) @binding(3) var<storage, read> contactBodies: array<vec4<u32>>;
 @group(0) @binding(4) var<storage, read> constraints: array<vec4<f32>>;
 @group(0) @binding(5) var<storage, read_write> bodyVel: array<vec4<f32>>;
+
+fn warm_start_joint(j: u32) {
+  let list = jointBodies[2u * j];
+  let info = jointBodies[2u * j + 1u];
+  if (info.z == 0u) {
+    return;
+  }
+  var motion = Motion();
+  for (var i = 0u; i < 4u; i = i + 1u) {
+    if (list[i] != NO_BODY) {
+      motion[i] = bodyVel[list[i]];
+    }
+  }
+  joint_warm_start(j, info.x, &motion);
+  for (var i = 0u; i < 4u; i = i + 1u) {
+    if ((info.y & (1u << i)) != 0u) {
+      bodyVel[list[i]] = vec4<f32>(motion[i].xyz, 0.0);
+    }
+  }
+}
+
+fn warm_start_item(item: u32, joints: u32) {
+  if (item < joints) {
+    warm_start_joint(item);
+  } else {
+    warm_start(item - joints);
+  }
+}
 
 fn warm_start(k: u32) {
   let cb = contactBodies[k];
@@ -50,16 +83,17 @@ fn main(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: vec
         @builtin(local_invocation_index) lid: u32) {
   let start = solverState[SV_COLOUR_START + colour.colour];
   let end = solverState[SV_COLOUR_START + colour.colour + 1u];
+  let joints = solverState[SV_JOINTS];
   let t = group_index(wid, nwg) * WORKGROUP_SIZE + lid;
   if (colour.serial != 0u) {
     if (t == 0u) {
       for (var e = start; e < end; e = e + 1u) {
-        warm_start(colourKeys[e].y);
+        warm_start_item(colourKeys[e].y, joints);
       }
     }
     return;
   }
   if (start + t < end) {
-    warm_start(colourKeys[start + t].y);
+    warm_start_item(colourKeys[start + t].y, joints);
   }
 }

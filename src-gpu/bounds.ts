@@ -1,12 +1,22 @@
 /*
- * Stage 1, bounds (shaders/bounds.wgsl): the fattened AABB of every proxy slot of a GpuWorld.
+ * Stage 1, bounds (shaders/bounds.wgsl): the fattened, swept AABB of every proxy slot of a GpuWorld.
  *
- * In:  the world's proxyRef, fixtureShape, shapePool, bodyXf and bodyCell tables.
- * Out: proxyAABB[slot] (vec4<f32>, relative to the world origin cell): b2Shape::ComputeAABB of the
- *      proxy's child at the body's current transform, extended by `extension` (b2_aabbExtension,
- *      0.1 m, by default) on each side; dead slots get an AABB that overlaps nothing.
- * Unlike b2DynamicTree's fat AABBs, these are recomputed from scratch each step: no history, no
- * displacement prediction, so the pair set is a function of the current positions alone.
+ * In:  the world's proxyRef, fixtureShape, shapePool, bodyXf, bodyCell, bodySweep and bodyVel
+ *      tables, and its b2World's m_inv_dt0 (the last step's 1 / dt).
+ * Out: proxyAABB[slot] (vec4<f32>, relative to the world origin cell): the union of
+ *      b2Shape::ComputeAABB of the proxy's child at the start of the body's sweep and at its
+ *      transform (b2Fixture::Synchronize's swept AABB), extended by `extension`
+ *      (b2_aabbExtension, 0.1 m, by default) on each side, then by b2_aabbMultiplier x the sweep's
+ *      displacement (b2DynamicTree::MoveProxy's prediction) and b2_aabbMultiplier x dt x v (the
+ *      coming step's motion, dt the last step's) in their directions; dead slots get an AABB that
+ *      overlaps nothing.
+ * Why the prediction: 2.2.1 finds the contacts its TOI tests after the solve, from the swept AABBs
+ * of the motion itself; the GPU step runs its broad phase once, before the solve, so the pairs of
+ * a fast body's path must be predicted (continuous collision, src-gpu/timeOfImpact.ts). A body's
+ * first step in a world never stepped (m_inv_dt0 = 0), and a body whose velocity changes by more
+ * than the prediction within a step, can miss a pair there.
+ * Unlike b2DynamicTree's fat AABBs, these are recomputed from scratch each step: no hysteresis, so
+ * the pair set is a function of the current sweeps and velocities alone.
  */
 
 import type { GpuContext } from './device';
@@ -33,6 +43,8 @@ export class BoundsStage {
     p.u32[0] = count;
     p.f32[1] = extension;
     p.f32[2] = world.cellSize;
+    const invDt0 = world.world.m_inv_dt0;
+    p.f32[3] = invDt0 > 0 ? 1 / invDt0 : 0;
     p.i32[4] = world.originCell[0];
     p.i32[5] = world.originCell[1];
     p.upload();
@@ -44,6 +56,8 @@ export class BoundsStage {
       4: world.bodyXf.buffer,
       5: world.bodyCell.buffer,
       6: proxyAABB,
+      7: world.bodySweep.buffer,
+      8: world.bodyVel.buffer,
     });
     rec.dispatch(this.kernel, group, Math.ceil(count / WORKGROUP_SIZE));
   }

@@ -6,7 +6,7 @@
  *   axis    the sweep axis (variance of the AABB centres) and the strips    src-gpu/axis.ts
  *           across the other axis
  *   sort    one entry per (proxy, strip it spans), radix-sorted by          src-gpu/keys.ts, radixSort.ts
- *           (strip, quantised lower bound) (8 passes)
+ *           (strip, quantised lower bound) (24-bit keys, 3 passes)
  *   sweep   sorted AABBs, candidate ranges, work offsets, pairs           src-gpu/sweep.ts, scan.ts
  *   pairs   overflow check, pairs radix-sorted by (a, b)                   src-gpu/pairs.ts
  * then copies the state words (pair count, overflow, axis, work items) and the pass timestamps to
@@ -36,11 +36,14 @@ import { SweepStage } from './sweep';
 import type { SweepInputs } from './sweep';
 import { PassTimer } from './timing';
 import { Readback } from './readback';
-import { ARGS, INDIRECT_WORDS, MAP_READ, OVERFLOW_ENTRIES, OVERFLOW_PAIRS, STATE, STATE_WORDS, USAGE } from './layout';
+import { ARGS, INDIRECT_WORDS, KEY_BITS, MAP_READ, OVERFLOW_ENTRIES, OVERFLOW_PAIRS, STATE, STATE_WORDS, USAGE } from './layout';
 import { GpuWorld } from './world';
 
 /** Opens a (timed) compute pass named `name`, lets `body` record into it, and closes it. */
 export type PassRecorder = (name: string, body: (rec: Recorder) => void) => void;
+
+/** The entry sort: the KEY_BITS-bit keys in 8-bit digits. */
+const ENTRY_SORT_PASSES = digitPasses(KEY_BITS, 0, 8);
 
 /** Byte offset of the timestamps in the read-back buffer (after the 64-byte state). */
 const TIMER_OFFSET = 256;
@@ -219,9 +222,10 @@ export class GpuBroadPhase {
     let sorted: GPUBuffer = this.items.buffer;
     pass('sort', (rec) => {
       this.keys.encode(rec, inputs.proxyAABB, n, this.state, this.items.buffer, this.indirect);
-      sorted = this.sort.encode(rec, this.items.buffer, this.itemsTmp.buffer, digitPasses(32, 0), this.state, STATE.ENTRIES, {
+      sorted = this.sort.encode(rec, this.items.buffer, this.itemsTmp.buffer, ENTRY_SORT_PASSES, this.state, STATE.ENTRIES, {
         indirect: this.indirect,
         offset: ARGS.ENTRY_TILES * 4,
+        maxCount: this.entryCapacity,
       });
     });
     pass('sweep', (rec) => {
@@ -229,7 +233,7 @@ export class GpuBroadPhase {
       this.sweep.encodeEmit(rec, inputs, this.pairsA.buffer, this.state, this.indirect);
     });
     pass('pairs', (rec) => {
-      this.sortedPairs = this.pairStage.encode(rec, this.sort, this.pairsA.buffer, this.pairsB.buffer, n, this.state, this.indirect);
+      this.sortedPairs = this.pairStage.encode(rec, this.sort, this.pairsA.buffer, this.pairsB.buffer, this.pairsA.capacity, n, this.state, this.indirect);
     });
     return this.sortedPairs!;
   }
@@ -260,7 +264,7 @@ export class GpuBroadPhase {
   /** Records the emit and the pair sort again (after growPairs); returns the sorted pairs' buffer. */
   encodeRegrow(rec: Recorder, inputs: SweepInputs): GPUBuffer {
     this.sweep.encodeEmit(rec, inputs, this.pairsA.buffer, this.state, this.indirect);
-    this.sortedPairs = this.pairStage.encode(rec, this.sort, this.pairsA.buffer, this.pairsB.buffer, inputs.slotCount, this.state, this.indirect);
+    this.sortedPairs = this.pairStage.encode(rec, this.sort, this.pairsA.buffer, this.pairsB.buffer, this.pairsA.capacity, inputs.slotCount, this.state, this.indirect);
     return this.sortedPairs;
   }
 

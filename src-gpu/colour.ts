@@ -1,15 +1,19 @@
 /*
  * Solver stage 3, graph colouring (shaders/colour.wgsl + a two-pass radix sort): hashed-priority
- * Jones-Plassmann over the solver contacts, then the contacts of each colour as one list.
+ * Jones-Plassmann over the solver's items, joints and contacts together (items 0 .. joints - 1
+ * are joint slots, then solver contact k is item joints + k), then the items of each colour as
+ * one list: joints, then contacts.
  *
- * In:  the broad phase's and narrow phase's state (overflow flags, NP_SOLVER), contactBodies
- *      (prepareContacts.ts: bodies, which are dynamic).
- * Out: colours[k] in [0, COLOUR_CAP) or COLOUR_CAP (the overflow set); colourKeys: (colour, k)
- *      sorted by colour, k ascending within one; solverState[SV.COLOUR_START + c] (COLOUR_CAP + 2
- *      words); the indirect sizes of each colour's velocity and position passes (SV_ARGS.COLOURS,
+ * In:  the solver's parameters (joint slots), the broad phase's and narrow phase's state
+ *      (overflow flags, NP_SOLVER), contactBodies (prepareContacts.ts) and jointBodies
+ *      (solveJoints.ts): bodies, which are dynamic (a gear joint has four).
+ * Out: colours[item] in [0, COLOUR_CAP) or COLOUR_CAP (the overflow set); colourKeys: (colour,
+ *      item) sorted by colour, items ascending within one; solverState[SV.COLOUR_START + c]
+ *      (COLOUR_CAP + 2 words); the indirect sizes of each colour's passes (SV_ARGS.COLOURS,
  *      SV_ARGS.POSITION: a 1-invocation pass for the overflow set, which is solved in order).
- *      `encodeBegin` also sets SV.SKIP / SV.COUNT (nothing is solved when collision overflowed:
- *      the host reruns it, and the solver with it) and the per-contact indirect sizes.
+ *      `encodeBegin` also sets SV.SKIP / SV.COUNT / SV.JOINTS / SV.ITEMS (nothing is solved when
+ *      collision overflowed: the host reruns it, and the solver with it) and the per-contact and
+ *      per-item indirect sizes.
  * Rounds: COLOUR_CAP rounds of two dispatches (post priorities with atomicMax, then pick the
  *      local maxima), whatever the contact count: no read-back decides when to stop. A round
  *      with nothing left to colour costs two empty-ish dispatches.
@@ -29,6 +33,10 @@ export interface ColourInputs {
   solverState: GPUBuffer;
   solverIndirect: GPUBuffer;
   contactBodies: GPUBuffer;
+  /** The solver's parameters (SolverParams: the joint slot count). */
+  params: GPUBuffer;
+  /** Per joint slot: bodies and dynamic mask (solveJoints.ts). */
+  jointBodies: GPUBuffer;
   /** One uniform per round / colour (ColourParams), COLOUR_CAP + 1 of them. */
   rounds: Uniform[];
 }
@@ -40,9 +48,9 @@ export class ColourStage {
   private readonly offsets: Kernel;
   private readonly sort: RadixSort;
   private readonly sortPasses: SortPass[] = digitPasses(Math.ceil(Math.log2(COLOUR_CAP + 1)), 0);
-  /** Colour per solver contact. */
+  /** Colour per item. */
   readonly colours: GpuArray;
-  /** (colour, k) per solver contact; sorted by colour after encode(). */
+  /** (colour, item) per item; sorted by colour after encode(). */
   readonly keys: GpuArray;
   private readonly keysTmp: GpuArray;
   /** Two words per body slot (round parity), zero between steps. */
@@ -60,26 +68,26 @@ export class ColourStage {
     this.bodyMark = new GpuArray(ctx, 'colour body marks', 8, 64);
   }
 
-  /** Makes room for `contacts` solver contacts and `bodies` body slots. */
-  reserve(contacts: number, bodies: number): void {
-    this.colours.ensure(contacts);
-    this.keys.ensure(contacts);
-    this.keysTmp.ensure(contacts);
-    this.sort.reserve(contacts);
+  /** Makes room for `items` items (joint slots and solver contacts) and `bodies` body slots. */
+  reserve(items: number, bodies: number): void {
+    this.colours.ensure(items);
+    this.keys.ensure(items);
+    this.keysTmp.ensure(items);
+    this.sort.reserve(items);
     // A new buffer is zero: the marks' invariant holds without copying.
     this.bodyMark.ensure(bodies);
   }
 
   encodeBegin(rec: Recorder, io: ColourInputs): void {
-    rec.dispatch(this.beginKernel, this.beginKernel.bind({ 1: io.broadState, 2: io.npState, 3: io.solverState, 4: io.solverIndirect }), 1);
+    rec.dispatch(this.beginKernel, this.beginKernel.bind({ 1: io.broadState, 2: io.npState, 3: io.solverState, 4: io.solverIndirect, 9: io.params }), 1);
   }
 
   encode(rec: Recorder, io: ColourInputs): void {
-    const args = SV_ARGS.CONTACTS * 4;
+    const args = SV_ARGS.ITEMS * 4;
     for (let round = 0; round <= COLOUR_CAP; ++round) {
       const u = io.rounds[round].buffer;
       if (round < COLOUR_CAP) {
-        const group = this.mark.bind({ 0: u, 3: io.solverState, 5: io.contactBodies, 6: this.colours.buffer, 7: this.bodyMark.buffer });
+        const group = this.mark.bind({ 0: u, 3: io.solverState, 5: io.contactBodies, 6: this.colours.buffer, 7: this.bodyMark.buffer, 10: io.jointBodies });
         rec.dispatchIndirect(this.mark, group, io.solverIndirect, args);
       }
       const group = this.pick.bind({
@@ -89,10 +97,11 @@ export class ColourStage {
         6: this.colours.buffer,
         7: this.bodyMark.buffer,
         8: this.keys.buffer,
+        10: io.jointBodies,
       });
       rec.dispatchIndirect(this.pick, group, io.solverIndirect, args);
     }
-    const sorted = this.sort.encode(rec, this.keys.buffer, this.keysTmp.buffer, this.sortPasses, io.solverState, SV.COUNT, {
+    const sorted = this.sort.encode(rec, this.keys.buffer, this.keysTmp.buffer, this.sortPasses, io.solverState, SV.ITEMS, {
       indirect: io.solverIndirect,
       offset: SV_ARGS.TILES * 4,
     });

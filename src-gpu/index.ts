@@ -1,7 +1,7 @@
 /*
  * webphysics/gpu: the WebGPU backend (part 1: devices, the world mirrored on the GPU, and a
  * sweep-and-prune broad phase; part 2: the narrow phase; part 3, in progress: the graph-coloured
- * solver and GpuStepper). The engine never imports this module; it reads the engine's world
+ * solver, GpuStepper, and WebGPUBackend behind b2World's API). The engine never imports this module; it reads the engine's world
  * through its public fields.
  *
  *   const gpu = await requestGpu({ onLost: (info) => console.warn('GPU lost', info) });
@@ -12,7 +12,13 @@
  *   const { pairCount } = await broadPhase.update(mirror);
  *   const pairs = await broadPhase.readPairs();  // (proxy a, proxy b) slots; mirror.proxyAt(a)
  *
- * Stepping on the GPU (contacts, revolute and distance joints; no sleeping or continuous collision yet):
+ * The world API on the GPU (docs/GPU.md, "The world API on the GPU"):
+ *   await world.SetBackend(await WebGPUBackend.create());
+ *   world.Step(1 / 60, 8, 3);           // submitted; world.StepAsync() also waits and reads back
+ *   await world.Synchronize();          // positions, velocities, contact events
+ *   await world.SetBackend(null);       // back to the JavaScript engine, contacts and impulses kept
+ *
+ * Stepping on the GPU (contacts, revolute and distance joints; sleeping; no continuous collision yet):
  *   const stepper = new GpuStepper(gpu, world);
  *   await stepper.step(1 / 60, 8, 3);   // broad phase, narrow phase and solver, one submission
  *   await stepper.readBodies();         // positions and velocities back into world's bodies
@@ -44,4 +50,6 @@ export type { NarrowPhaseOutputs } from './narrowPhase';
 export { GpuSolver } from './solver';
 export type { SolverStep, SolverInputs, SolverState } from './solver';
 export { GpuStepper } from './stepper';
-export type { GpuStepperOptions, GpuStepOptions } from './stepper';
+export type { GpuStepperOptions, GpuStepOptions, GpuReadRange } from './stepper';
+export { WebGPUBackend } from './backend';
+export type { WebGPUBackendOptions } from './backend';

@@ -4,8 +4,9 @@
  * position iterations the body transforms (b2Body::SynchronizeTransform) and cells.
  *
  * In:  the solver's parameters (h, cellSize), solverState[SV.SKIP], the mirror's bodyFlags,
- *      bodyMass, bodySweep, bodyVel, bodyXf, bodyCell.
- * Out: `encodeIntegrate`: bodySweep c, a and clamped bodyVel of non-static bodies.
+ *      bodyAwake, bodyMass, bodySweep, bodyVel, bodyXf, bodyCell.
+ * Out: `encodeIntegrate`: bodySweep c, a and clamped bodyVel of awake non-static bodies (sleeping
+ *      bodies neither move nor synchronize).
  *      `encodeSynchronize`: bodyXf, and bodyCell (with bodySweep shifted to match) for a body whose
  *      offset left half a cell, as GpuWorld would place it.
  */
@@ -32,6 +33,7 @@ export class IntegratePositionsStage {
       2: mirror.bodyFlags.buffer,
       4: mirror.bodySweep.buffer,
       5: mirror.bodyVel.buffer,
+      8: mirror.bodyAwake.buffer,
     });
     rec.dispatch(this.integrate, group, Math.ceil(mirror.bodySlotCount / WORKGROUP_SIZE));
   }
@@ -45,6 +47,7 @@ export class IntegratePositionsStage {
       4: mirror.bodySweep.buffer,
       6: mirror.bodyXf.buffer,
       7: mirror.bodyCell.buffer,
+      8: mirror.bodyAwake.buffer,
     });
     rec.dispatch(this.synchronize, group, Math.ceil(mirror.bodySlotCount / WORKGROUP_SIZE));
   }

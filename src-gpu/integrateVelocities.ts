@@ -3,9 +3,10 @@
  * loop for every body slot.
  *
  * In:  the solver's parameters (h, gravity), solverState[SV.SKIP], the mirror's bodyFlags,
- *      bodyForce, bodyMass, bodyParams, bodySweep, bodyVel.
- * Out: bodySweep c0 = c, a0 = a (non-static bodies); bodyVel of dynamic bodies with gravity x
- *      gravity scale, forces and damping applied.
+ *      bodyAwake (this step's, after the island search), bodyForce, bodyMass, bodyParams,
+ *      bodySweep, bodyVel.
+ * Out: bodySweep c0 = c, a0 = a (awake non-static bodies); bodyVel of awake dynamic bodies with
+ *      gravity x gravity scale, forces and damping applied. Sleeping bodies are left alone.
  */
 
 import type { GpuContext } from './device';
@@ -31,6 +32,7 @@ export class IntegrateVelocitiesStage {
       5: mirror.bodyParams.buffer,
       6: mirror.bodySweep.buffer,
       7: mirror.bodyVel.buffer,
+      8: mirror.bodyAwake.buffer,
     });
     rec.dispatch(this.kernel, group, Math.ceil(mirror.bodySlotCount / WORKGROUP_SIZE));
   }

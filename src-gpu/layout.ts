@@ -25,18 +25,39 @@
  *   bodyMass   vec4<f32>  invMass, invI, localCenter.x, localCenter.y
  *   bodyParams vec4<f32>  linearDamping, angularDamping, gravityScale, 0
  *   bodyFlags  u32        b2Body::m_flags (bits 0-15) | type << 16 (bits 16-17) | BODY_LIVE
+ *   bodyAwake  u32        1 awake, 0 asleep (b2Body::e_awakeFlag; part 3): GPU-owned once it
+ *                         steps, like the motion (the islands stage wakes and puts to sleep;
+ *                         bodyFlags' copy of e_awakeFlag is the JavaScript value, unused on the GPU)
  *   jointRange vec2<u32>  (start, count) into jointList: the bodies joined to this one by a joint
  *                         with collideConnected == false, ascending
  * Joint buffers
  *   jointList  u32        body slots (see jointRange)
  *   joints     vec4<u32>  (index: joint slot) body A slot, body B slot, b2JointType,
  *                         collideConnected | JOINT_LIVE
- *   jointParams 3 x vec4<f32>  (index: joint slot; part 3) localAnchorA, localAnchorB | revolute:
- *                         referenceAngle, lowerAngle, upperAngle, maxMotorTorque | motorSpeed,
- *                         enableLimit, enableMotor, 0; distance: length, frequencyHz,
- *                         dampingRatio, 0 | 0
- *   jointState 2 x vec4<f32>  impulse (revolute x, y, z; distance: impulse), motorImpulse |
- *                         b2LimitState as a float: the warm-start state, GPU-owned once it steps
+ *   jointParams 5 x vec4<f32>  (index: joint slot; part 3) row 0: localAnchorA, localAnchorB
+ *                         (mouse: 0, localAnchorB), rows 1-4 by b2JointType (unused words 0; a
+ *                         world point is a cell (i32 bits) and the offset in it, as bodies are):
+ *       revolute   referenceAngle, lowerAngle, upperAngle, maxMotorTorque | motorSpeed,
+ *                  enableLimit, enableMotor
+ *       prismatic  referenceAngle, lowerTranslation, upperTranslation, maxMotorForce |
+ *                  motorSpeed, enableLimit, enableMotor | localXAxisA, localYAxisA
+ *       distance   length, frequencyHz, dampingRatio
+ *       pulley     lengthA, lengthB, ratio, constant | groundAnchorA offset, groundAnchorB
+ *                  offset | groundAnchorA cell, groundAnchorB cell
+ *       mouse      frequencyHz, dampingRatio, maxForce, body B's mass | target offset | target cell
+ *       gear       referenceAngleA, referenceAngleB, ratio, constant | localAnchorC,
+ *                  localAnchorD | localAxisC, localAxisD | body C slot, body D slot (u32 bits),
+ *                  joint types A, B (u32 bits)
+ *       wheel      frequencyHz, dampingRatio, 0, maxMotorTorque | motorSpeed, 0, enableMotor |
+ *                  localXAxisA, localYAxisA
+ *       weld       referenceAngle, frequencyHz, dampingRatio
+ *       friction   maxForce, maxTorque
+ *       rope       maxLength
+ *   jointState 2 x vec4<f32>  impulses: revolute, prismatic x, y, z, motorImpulse; weld x, y, z;
+ *                         distance, pulley, gear, rope impulse; mouse x, y; wheel impulse,
+ *                         springImpulse, motorImpulse; friction linear x, y, angular |
+ *                         b2LimitState as a float (revolute, prismatic, rope): the warm-start
+ *                         state, GPU-owned once it steps
  * Fixture buffers (index: fixture slot)
  *   fixtureShape    vec4<u32>  type | shape flags << 4 | vertexCount << 8, pool offset,
  *                              body slot, radius (f32 bits)
@@ -88,10 +109,22 @@
  *                          bodies are dynamic: shaders/solverCommon.wgsl CB_*), contact index
  *   constraints    CONSTRAINT_VEC4 x vec4<f32>  b2ContactVelocityConstraint and
  *                          b2ContactPositionConstraint together (rows in solverCommon.wgsl)
- *   colours        u32        colour of each solver contact, COLOUR_CAP for the overflow set
- *   colourKeys     vec2<u32>  (colour, k) sorted by colour, k ascending within a colour
+ *   colours        u32        colour of each item (joint slots, then solver contacts k as items
+ *                         joints + k), COLOUR_CAP for the overflow set
+ *   colourKeys     vec2<u32>  (colour, item) sorted by colour, items ascending within a colour
+ *   jointBodies    2 x vec4<u32>  (index: joint slot) bodies A, B, C, D (NO_BODY but for a gear) |
+ *                          b2JointType, dynamic mask, solved this step, b2LimitState
+ *   jointConstraints JOINT_VEC4 x vec4<f32>  (index: joint slot) the joint's solver data (rows in
+ *                          shaders/solveJointsCommon.wgsl)
  *   bodyMark       2 x u32    per body slot: Jones-Plassmann priorities of the round's parity
  *   solverState    u32 x SV_STATE_WORDS (SV below), solverIndirect u32 x SV_INDIRECT_WORDS
+ *   islands        ISLAND_WORDS x u32 per body slot: union-find parent (after the island search
+ *                          the island's label, its smallest body slot; NO_ISLAND for static,
+ *                          inactive and dead bodies), then per root: any body awake, the smallest
+ *                          sleep time (f32 bits) (shaders/islands.wgsl)
+ *   toiBody        u32        continuous collision (src-gpu/timeOfImpact.ts): word 0 the contacts to
+ *                          test, word 1 + body slot 0x3f800000 - bits of the body's earliest time
+ *                          of impact (0: none; zero again after each step), toiIndirect 3 x u32
  */
 
 /** GPUBufferUsage, without relying on the WebGPU globals being installed. */
@@ -136,9 +169,13 @@ export const STATE_WORDS = 16;
 export const OVERFLOW_PAIRS = 1;
 export const OVERFLOW_ENTRIES = 2;
 
-/** Sweep entry keys: strip << QUANT_BITS | quantised lower bound (shaders/common.wgsl). */
+/**
+ * Sweep entry keys: strip << q | the quantised lower bound cut to q bits, KEY_BITS in all
+ * (shaders/common.wgsl sweep_key).
+ */
 export const QUANT_BITS = 20;
 export const MAX_STRIPS = 4096;
+export const KEY_BITS = 24;
 
 /** Word offsets of the indirect-dispatch triples (shaders/common.wgsl ARGS_*). */
 export const ARGS = {
@@ -231,6 +268,8 @@ export const SV = {
   POSITION_ITERATIONS: 3,
   POSITION_DONE: 4,
   JOINT_ERROR: 5,
+  JOINTS: 6,
+  ITEMS: 7,
   COLOUR_START: 8,
 } as const;
 export const SV_STATE_WORDS = 40;
@@ -245,8 +284,13 @@ export const SV_ARGS = {
   TILES: 3,
   COLOURS: 6,
   POSITION: 81,
+  ITEMS: 156,
 } as const;
 export const SV_INDIRECT_WORDS = 160;
+
+/** u32 words per body slot in the islands buffer, and the label of a body in no island (shaders/islands.wgsl). */
+export const ISLAND_WORDS = 4;
+export const NO_ISLAND = 0xffffffff;
 
 /** vec4s per solver contact in the constraint buffer (shaders/solverCommon.wgsl). */
 export const CONSTRAINT_VEC4 = 13;

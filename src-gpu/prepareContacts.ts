@@ -5,7 +5,8 @@
  * In:  solverState[SV.COUNT] (the solver list's length), the narrow phase's solverList,
  *      contactRefs and manifolds (warm-start impulses in word 3), the mirror's fixtureShape,
  *      fixtureMaterial, bodyMass, and after stage 1 bodySweep, bodyVel, bodyCell; the solver's
- *      parameters (dtRatio, warmStarting, cellSize).
+ *      parameters (dtRatio, warmStarting, cellSize); the mirror's bodyAwake (after the island
+ *      search: the contacts of sleeping islands are given no points to solve).
  * Out: contactBodies and constraints per solver contact (shaders/solverCommon.wgsl): three
  *      passes, split so that no kernel binds more than 8 storage buffers.
  */
@@ -57,7 +58,7 @@ export class PrepareContactsStage {
     );
     rec.dispatchIndirect(
       this.manifold,
-      this.manifold.bind({ 0: io.params, 1: io.solverState, 7: io.contactBodies, 8: io.constraints, 9: io.manifolds }),
+      this.manifold.bind({ 0: io.params, 1: io.solverState, 7: io.contactBodies, 8: io.constraints, 9: io.manifolds, 13: mirror.bodyAwake.buffer }),
       io.solverIndirect,
       offset,
     );

@@ -3,7 +3,9 @@
  * a small plugin in vitest.config.ts for the tests). shaders/common.wgsl is prepended to each
  * stage, since WGSL has no include, and shaders/manifold.wgsl (bindings and helpers of the collide
  * kernels) to the four narrow-phase collide stages; shaders/solverCommon.wgsl (the solver's
- * parameters, constants and helpers) to the solver stages.
+ * parameters, constants and helpers) to the solver stages, and shaders/solveJointsCommon.wgsl (the
+ * joints' share of the colour passes) to the stages that solve joints; shaders/distance.wgsl (GJK)
+ * to the sensor test and to continuous collision, which also takes manifold.wgsl's shape helpers.
  */
 
 import common from '../shaders/common.wgsl';
@@ -19,6 +21,7 @@ import contacts from '../shaders/contacts.wgsl';
 import collideCircle from '../shaders/collideCircle.wgsl';
 import collidePolygon from '../shaders/collidePolygon.wgsl';
 import collideEdge from '../shaders/collideEdge.wgsl';
+import distance from '../shaders/distance.wgsl';
 import overlap from '../shaders/overlap.wgsl';
 import persist from '../shaders/persist.wgsl';
 import compact from '../shaders/compact.wgsl';
@@ -32,6 +35,9 @@ import storeImpulses from '../shaders/storeImpulses.wgsl';
 import integratePositions from '../shaders/integratePositions.wgsl';
 import solvePosition from '../shaders/solvePosition.wgsl';
 import solveJoints from '../shaders/solveJoints.wgsl';
+import timeOfImpact from '../shaders/timeOfImpact.wgsl';
+import solveJointsCommon from '../shaders/solveJointsCommon.wgsl';
+import islands from '../shaders/islands.wgsl';
 
 export const SHADERS = {
   common,
@@ -46,18 +52,20 @@ export const SHADERS = {
   collideCircle: `${common}\n${manifold}\n${collideCircle}`,
   collidePolygon: `${common}\n${manifold}\n${collidePolygon}`,
   collideEdge: `${common}\n${manifold}\n${collideEdge}`,
-  overlap: `${common}\n${manifold}\n${overlap}`,
+  overlap: `${common}\n${manifold}\n${distance}\n${overlap}`,
   persist: `${common}\n${persist}`,
   compact: `${common}\n${compact}`,
   integrateVelocities: `${common}\n${solverCommon}\n${integrateVelocities}`,
   prepareContacts: `${common}\n${solverCommon}\n${prepareContacts}`,
   colour: `${common}\n${solverCommon}\n${colour}`,
-  warmStart: `${common}\n${solverCommon}\n${warmStart}`,
-  solveVelocity: `${common}\n${solverCommon}\n${solveVelocity}`,
+  warmStart: `${common}\n${solverCommon}\n${solveJointsCommon}\n${warmStart}`,
+  solveVelocity: `${common}\n${solverCommon}\n${solveJointsCommon}\n${solveVelocity}`,
   storeImpulses: `${common}\n${solverCommon}\n${storeImpulses}`,
   integratePositions: `${common}\n${solverCommon}\n${integratePositions}`,
-  solvePosition: `${common}\n${solverCommon}\n${solvePosition}`,
-  solveJoints: `${common}\n${solverCommon}\n${solveJoints}`,
+  solvePosition: `${common}\n${solverCommon}\n${solveJointsCommon}\n${solvePosition}`,
+  solveJoints: `${common}\n${solverCommon}\n${solveJointsCommon}\n${solveJoints}`,
+  islands: `${common}\n${solverCommon}\n${islands}`,
+  timeOfImpact: `${common}\n${manifold}\n${distance}\n${timeOfImpact}`,
 } as const;
 
 export type ShaderName = Exclude<keyof typeof SHADERS, 'common'>;

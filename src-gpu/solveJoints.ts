@@ -1,15 +1,17 @@
 /*
- * The solver's joints (shaders/solveJoints.wgsl): b2RevoluteJoint and b2DistanceJoint as 2.2.1
- * solves them. Other joint types are refused by GpuStepper.
+ * The solver's joints (shaders/solveJoints.wgsl, shaders/solveJointsCommon.wgsl): the ten joint
+ * types of 2.2.1 (revolute, prismatic, distance, pulley, mouse, gear, wheel, weld, friction,
+ * rope) in float32. The per-step records are made here; the joints are solved inside the colour
+ * passes (warmStart.ts, solveVelocity.ts, solvePosition.ts), coloured with the contacts
+ * (colour.ts: joint slots are the first items).
  *
  * In:  the solver's parameters (h, dtRatio, warmStarting, cellSize, joint slot count), the
- *      mirror's joints, jointParams, jointState (impulses carried over), bodyFlags, bodyMass,
- *      bodySweep, bodyCell, bodyVel; solverState (SV.SKIP, SV.POSITION_DONE).
- * Out: `encodePrepare`: jointConstraints per joint slot (InitVelocityConstraints without the
- *      velocity update); `encodeWarmStart`, `encodeVelocity`, `encodePosition`: the warm start,
- *      one velocity iteration, one position iteration (SV.JOINT_ERROR for the early exit), each
- *      one invocation over the joints in slot order (joints are not coloured yet);
- *      `encodeStore`: the impulses and limit states back into jointState.
+ *      mirror's joints, jointParams, jointState (impulses carried over), bodyFlags, bodyAwake
+ *      (a joint with a dynamic body asleep is not solved: 2.2.1 solves awake islands only),
+ *      bodyMass, bodySweep, bodyCell; solverState (SV.SKIP).
+ * Out: `encodePrepare`: jointBodies (bodies, type, which bodies are dynamic, whether the joint is
+ *      solved, limit state) and jointConstraints per joint slot (InitVelocityConstraints without
+ *      the velocity update); `encodeStore`: the impulses and limit states back into jointState.
  */
 
 import type { GpuContext } from './device';
@@ -19,84 +21,81 @@ import type { Recorder } from './kernel';
 import { WORKGROUP_SIZE } from './layout';
 import type { GpuWorld } from './world';
 
-/** vec4s per joint slot in jointConstraints (shaders/solveJoints.wgsl JOINT_VEC4). */
-export const JOINT_VEC4 = 7;
+/** vec4s per joint slot in jointConstraints (shaders/solveJointsCommon.wgsl JOINT_VEC4). */
+export const JOINT_VEC4 = 9;
+/** vec4s per joint slot in jointParams (shaders/solveJointsCommon.wgsl JOINT_PARAMS_VEC4). */
+export const JOINT_PARAMS_VEC4 = 5;
+/** vec4<u32>s per joint slot in jointBodies. */
+export const JOINT_BODIES_VEC4 = 2;
 
 export class SolveJointsStage {
+  private readonly bodiesKernel: Kernel;
   private readonly prepare: Kernel;
-  private readonly warmStart: Kernel;
-  private readonly velocity: Kernel;
-  private readonly position: Kernel;
   private readonly store: Kernel;
-  private readonly constraints: GpuArray;
+  private readonly bodyArray: GpuArray;
+  private readonly constraintArray: GpuArray;
 
   constructor(ctx: GpuContext) {
+    this.bodiesKernel = new Kernel(ctx, 'solveJoints', 'bodies');
     this.prepare = new Kernel(ctx, 'solveJoints', 'prepare');
-    this.warmStart = new Kernel(ctx, 'solveJoints', 'warm_start');
-    this.velocity = new Kernel(ctx, 'solveJoints', 'velocity');
-    this.position = new Kernel(ctx, 'solveJoints', 'position');
     this.store = new Kernel(ctx, 'solveJoints', 'store');
-    this.constraints = new GpuArray(ctx, 'joint constraints', 16 * JOINT_VEC4, 16);
+    this.bodyArray = new GpuArray(ctx, 'joint bodies', 16 * JOINT_BODIES_VEC4, 16);
+    this.constraintArray = new GpuArray(ctx, 'joint constraints', 16 * JOINT_VEC4, 16);
+  }
+
+  /** Per joint slot: bodies, type, dynamic mask, solved flag, limit state (solveJointsCommon.wgsl). */
+  get bodies(): GPUBuffer {
+    return this.bodyArray.buffer;
+  }
+
+  get constraints(): GPUBuffer {
+    return this.constraintArray.buffer;
+  }
+
+  /** Makes room for the mirror's joint slots (call before taking `bodies` / `constraints`). */
+  reserve(mirror: GpuWorld): void {
+    const n = Math.max(1, mirror.jointSlotCount);
+    this.bodyArray.ensure(n);
+    this.constraintArray.ensure(n);
   }
 
   encodePrepare(rec: Recorder, params: GPUBuffer, mirror: GpuWorld): void {
     const n = mirror.jointSlotCount;
     if (n === 0) return;
-    this.constraints.ensure(n);
-    const group = this.prepare.bind({
-      0: params,
+    const groups = Math.ceil(n / WORKGROUP_SIZE);
+    const bodies = this.bodiesKernel.bind({
       2: mirror.joints.buffer,
-      3: mirror.jointParams.buffer,
-      4: mirror.jointState.buffer,
-      5: this.constraints.buffer,
+      5: mirror.bodyAwake.buffer,
       6: mirror.bodyFlags.buffer,
       7: mirror.bodyMass.buffer,
+      9: params,
+      10: this.bodyArray.buffer,
+      11: mirror.jointParams.buffer,
+      12: this.constraintArray.buffer,
+    });
+    rec.dispatch(this.bodiesKernel, bodies, groups);
+    const prepare = this.prepare.bind({
+      3: mirror.bodyCell.buffer,
+      4: mirror.jointState.buffer,
+      7: mirror.bodyMass.buffer,
       8: mirror.bodySweep.buffer,
-      9: mirror.bodyCell.buffer,
+      9: params,
+      10: this.bodyArray.buffer,
+      11: mirror.jointParams.buffer,
+      12: this.constraintArray.buffer,
     });
-    rec.dispatch(this.prepare, group, Math.ceil(n / WORKGROUP_SIZE));
-  }
-
-  encodeWarmStart(rec: Recorder, params: GPUBuffer, solverState: GPUBuffer, mirror: GpuWorld): void {
-    if (mirror.jointSlotCount === 0) return;
-    const group = this.warmStart.bind({ 0: params, 1: solverState, 2: mirror.joints.buffer, 5: this.constraints.buffer, 10: mirror.bodyVel.buffer });
-    rec.dispatch(this.warmStart, group, 1);
-  }
-
-  encodeVelocity(rec: Recorder, params: GPUBuffer, solverState: GPUBuffer, mirror: GpuWorld): void {
-    if (mirror.jointSlotCount === 0) return;
-    const group = this.velocity.bind({
-      0: params,
-      1: solverState,
-      2: mirror.joints.buffer,
-      3: mirror.jointParams.buffer,
-      5: this.constraints.buffer,
-      10: mirror.bodyVel.buffer,
-    });
-    rec.dispatch(this.velocity, group, 1);
-  }
-
-  encodePosition(rec: Recorder, params: GPUBuffer, solverState: GPUBuffer, mirror: GpuWorld): void {
-    if (mirror.jointSlotCount === 0) return;
-    const group = this.position.bind({
-      0: params,
-      1: solverState,
-      2: mirror.joints.buffer,
-      3: mirror.jointParams.buffer,
-      5: this.constraints.buffer,
-      8: mirror.bodySweep.buffer,
-    });
-    rec.dispatch(this.position, group, 1);
+    rec.dispatch(this.prepare, prepare, groups);
   }
 
   encodeStore(rec: Recorder, params: GPUBuffer, solverState: GPUBuffer, mirror: GpuWorld): void {
     const n = mirror.jointSlotCount;
     if (n === 0) return;
-    const group = this.store.bind({ 0: params, 1: solverState, 4: mirror.jointState.buffer, 5: this.constraints.buffer });
+    const group = this.store.bind({ 1: solverState, 4: mirror.jointState.buffer, 9: params, 10: this.bodyArray.buffer, 12: this.constraintArray.buffer });
     rec.dispatch(this.store, group, Math.ceil(n / WORKGROUP_SIZE));
   }
 
   destroy(): void {
-    this.constraints.destroy();
+    this.bodyArray.destroy();
+    this.constraintArray.destroy();
   }
 }

@@ -1,12 +1,14 @@
 /*
- * Solver stage 9, position iterations (shaders/solvePosition.wgsl): b2ContactSolver::
- * SolvePositionConstraints, per iteration one pass per colour (the overflow set last, in one
- * invocation), then the joints (solveJoints.ts), then `check`: 2.2.1's early exit (minimum
- * separation >= -3 b2_linearSlop and every joint within its slop) zeroes
- * the position passes' indirect sizes, so later iterations dispatch no workgroups. No read-back.
+ * Solver stage 9, position iterations (shaders/solvePosition.wgsl): per iteration one pass per
+ * colour (the overflow set last, in one invocation), each solving its contacts
+ * (b2ContactSolver::SolvePositionConstraints) and its joints (b2*Joint::SolvePositionConstraints)
+ * in parallel (the overflow set: its contacts, then its joints, as 2.2.1 orders an island's), then
+ * `check`: 2.2.1's early exit (minimum separation >= -3 b2_linearSlop and every joint within its
+ * slop) zeroes the position passes' indirect sizes, so later iterations dispatch no workgroups.
+ * No read-back.
  *
  * In:  the colour lists (colour.ts; SV_ARGS.POSITION sizes), contactBodies, constraints,
- *      bodySweep (after integratePositions.ts).
+ *      jointBodies, jointParams, jointConstraints, bodySweep (after integratePositions.ts).
  * Out: bodySweep c, a of the dynamic bodies; SV.POSITION_ITERATIONS (iterations that ran),
  *      SV.POSITION_DONE.
  */
@@ -26,8 +28,7 @@ export class SolvePositionStage {
     this.check = new Kernel(ctx, 'solvePosition', 'check');
   }
 
-  /** `joints` records the joints' iteration, which runs after the contacts' (b2Island::Solve). */
-  encode(rec: Recorder, io: ColourPassInputs, bodySweep: GPUBuffer, iterations: number, joints: (rec: Recorder) => void): void {
+  encode(rec: Recorder, io: ColourPassInputs, bodySweep: GPUBuffer, iterations: number): void {
     const check = this.check.bind({ 1: io.solverState, 6: io.solverIndirect });
     for (let it = 0; it < iterations; ++it) {
       for (let c = 0; c <= COLOUR_CAP; ++c) {
@@ -38,10 +39,12 @@ export class SolvePositionStage {
           3: io.contactBodies,
           4: io.constraints,
           5: bodySweep,
+          10: io.jointBodies,
+          11: io.jointParams,
+          12: io.jointConstraints,
         });
         rec.dispatchIndirect(this.kernel, group, io.solverIndirect, (SV_ARGS.POSITION + 3 * c) * 4);
       }
-      joints(rec);
       rec.dispatch(this.check, check, 1);
     }
   }

@@ -1,10 +1,14 @@
 /*
- * Solver stage 6, velocity iterations (shaders/solveVelocity.wgsl): b2ContactSolver::
- * SolveVelocityConstraints, per iteration one pass per colour (the overflow set last, in one
- * invocation): friction, then the normal impulses (the two-point block solver included).
+ * Solver stage 6, velocity iterations (shaders/solveVelocity.wgsl): per iteration one pass per
+ * colour (the overflow set last, in one invocation), each solving its joints
+ * (b2*Joint::SolveVelocityConstraints) and its contacts (b2ContactSolver::
+ * SolveVelocityConstraints: friction, then the normal impulses, the two-point block solver
+ * included) in parallel; the overflow set solves its joints, then its contacts.
  *
- * In:  the colour lists (colour.ts), contactBodies, constraints, bodyVel.
- * Out: bodyVel of the dynamic bodies; the accumulated impulses in constraints.
+ * In:  the colour lists (colour.ts), contactBodies, constraints, jointBodies, jointParams,
+ *      jointConstraints, bodyVel.
+ * Out: bodyVel of the dynamic bodies; the accumulated impulses in constraints and
+ *      jointConstraints.
  */
 
 import type { GpuContext } from './device';
@@ -20,12 +24,21 @@ export class SolveVelocityStage {
     this.kernel = new Kernel(ctx, 'solveVelocity', 'main');
   }
 
-  /** `joints` records the joints' iteration, which runs before the contacts' (b2Island::Solve). */
-  encode(rec: Recorder, io: ColourPassInputs, bodyVel: GPUBuffer, iterations: number, joints: (rec: Recorder) => void): void {
+  encode(rec: Recorder, io: ColourPassInputs, bodyVel: GPUBuffer, iterations: number): void {
     for (let it = 0; it < iterations; ++it) {
-      joints(rec);
       for (let c = 0; c <= COLOUR_CAP; ++c) {
-        const group = this.kernel.bind({ 0: io.colours[c].buffer, 1: io.solverState, 2: io.colourKeys, 3: io.contactBodies, 4: io.constraints, 5: bodyVel });
+        const group = this.kernel.bind({
+          0: io.colours[c].buffer,
+          1: io.solverState,
+          2: io.colourKeys,
+          3: io.contactBodies,
+          4: io.constraints,
+          5: bodyVel,
+          9: io.params,
+          10: io.jointBodies,
+          11: io.jointParams,
+          12: io.jointConstraints,
+        });
         rec.dispatchIndirect(this.kernel, group, io.solverIndirect, (SV_ARGS.COLOURS + 3 * c) * 4);
       }
     }

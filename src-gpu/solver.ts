@@ -3,31 +3,40 @@
  * recorded after the narrow phase in the same command buffer.
  *
  *   begin               solver state: skip when collision overflowed, the contact count  colour.ts
+ *   islands             wake (new contacts, touch changes), connected components through
+ *                       touching contacts and joints, whole islands woken           islands.ts
  *   integrate velocities  c0 = c; gravity, forces, damping                       integrateVelocities.ts
  *   prepare             solver contacts: masses, world manifold, K, restitution bias    prepareContacts.ts
- *   colour              Jones-Plassmann colouring, colour lists (+ overflow set)         colour.ts
- *   joints: prepare     revolute and distance joints: InitVelocityConstraints          solveJoints.ts
- *   warm start          per colour, impulses x dtRatio; then the joints' (one invocation)  warmStart.ts
- *   velocity            iterations: joints (one invocation), then colours: friction, then
- *                       normal (block solver)                                            solveVelocity.ts
+ *   joints: prepare     the ten joint types' InitVelocityConstraints (no velocity update) solveJoints.ts
+ *   colour              Jones-Plassmann colouring of joints and contacts together, colour
+ *                       lists (+ overflow set)                                           colour.ts
+ *   warm start          per colour: its joints' and contacts' impulses x dtRatio          warmStart.ts
+ *   velocity            iterations: per colour, its joints, then its contacts (friction,
+ *                       then normal: block solver)                                       solveVelocity.ts
  *   store impulses      into the manifolds' word 3 for the next step                     storeImpulses.ts
  *   integrate positions with b2_maxTranslation / b2_maxRotation                          integratePositions.ts
- *   position            iterations: colours, then joints; early exit as zeroed indirect
- *                       sizes                                                            solvePosition.ts
+ *   position            iterations: per colour, its contacts, then its joints; early exit
+ *                       as zeroed indirect sizes                                         solvePosition.ts
  *   synchronize         bodyXf from the sweep, cells                                     integratePositions.ts
+ *   sleep               sleep timers, islands at rest put to sleep                       islands.ts
+ *   time of impact      continuous physics on: b2TimeOfImpact of the contacts 2.2.1 tests
+ *                       (bullets; dynamic against static / kinematic), each dynamic body
+ *                       moved back to its earliest one; no TOI island solve   timeOfImpact.ts
  *
  * In:  the narrow phase's outputs of the step being recorded (solverList, contactRefs, manifolds,
  *      npState) and the broad phase's state (overflow), the mirror's body and fixture tables.
  * Out: bodySweep, bodyVel, bodyXf, bodyCell written in place (the GPU copy is then the authority:
  *      GpuWorld.gpuOwnsMotion), impulses in the manifolds and in the mirror's jointState.
- * Inputs set per step by configure(): dt, dtRatio, warm starting, gravity, iterations. Contacts
- * and bodies in the colour's passes are solved in parallel: a colour's contacts share no dynamic
- * body. Results are the same bits on every run on one device (no float atomics; the colouring
- * depends only on the contacts; the overflow set is solved in contact order).
- * Joints are solved by one invocation in joint-slot order (not coloured yet), as 2.2.1 solves an
- * island's joints: all joints, then all contacts, each velocity iteration.
- * Not yet: joint types other than revolute and distance, islands and sleeping (every dynamic body
- * is simulated as awake), bullets / continuous collision, PreSolve / PostSolve.
+ * Inputs set per step by configure(): dt, dtRatio, warm starting, gravity, iterations. Joints and
+ * contacts in a colour's passes are solved in parallel: a colour's items share no dynamic body.
+ * Results are the same bits on every run on one device (no float atomics; the colouring depends
+ * only on the joints and contacts; the overflow set is solved in item order). 2.2.1 solves an
+ * island's joints, then its contacts, each velocity iteration (contacts, then joints, each
+ * position iteration); the GPU analogue is per colour, so across colours the Gauss-Seidel order
+ * differs from the engine's.
+ * Sleeping bodies are not integrated and their contacts are not solved (islands.ts), nor joints
+ * with a sleeping dynamic body (solveJoints.ts).
+ * Not yet: 2.2.1's TOI island solve and sub-steps (timeOfImpact.ts), PreSolve / PostSolve.
  */
 
 import type { GpuContext } from './device';
@@ -47,7 +56,11 @@ import { SolveVelocityStage } from './solveVelocity';
 import { StoreImpulsesStage } from './storeImpulses';
 import { SolvePositionStage } from './solvePosition';
 import { SolveJointsStage } from './solveJoints';
-import { COLOUR_CAP, CONSTRAINT_VEC4, SV, SV_INDIRECT_WORDS, SV_STATE_WORDS, USAGE } from './layout';
+import { IslandsStage } from './islands';
+import { TimeOfImpactStage } from './timeOfImpact';
+import type { TimeOfImpactInputs } from './timeOfImpact';
+import type { IslandInputs } from './islands';
+import { COLOUR_CAP, CONSTRAINT_VEC4, ISLAND_WORDS, SV, SV_INDIRECT_WORDS, SV_STATE_WORDS, USAGE } from './layout';
 import type { GpuWorld } from './world';
 
 /** The time step, as b2TimeStep carries it. */
@@ -76,6 +89,8 @@ export interface SolverInputs {
 export interface SolverState {
   skipped: boolean;
   contacts: number;
+  /** Joint slots coloured with the contacts (0 when skipped). */
+  joints: number;
   positionIterations: number;
   positionSolved: boolean;
   /** First entry of each colour in the sorted list (COLOUR_CAP + 2 words, the last is the end). */
@@ -102,12 +117,16 @@ export class GpuSolver {
   private readonly integratePositions: IntegratePositionsStage;
   private readonly solvePosition: SolvePositionStage;
   private readonly joints: SolveJointsStage;
+  readonly islands: IslandsStage;
+  readonly timeOfImpact: TimeOfImpactStage;
   private readonly step: SolverStep = { dt: 0, dtRatio: 0, velocityIterations: 8, positionIterations: 3, warmStarting: true, gravity: { x: 0, y: 0 } };
   // The step being recorded: filled in place by encode() so that recording allocates nothing.
   private mirror: GpuWorld | null = null;
   private readonly colourIo: ColourInputs;
   private readonly passIo: ColourPassInputs;
   private readonly prepareIo: PrepareInputs;
+  private readonly islandIo: IslandInputs;
+  private readonly toiIo: TimeOfImpactInputs;
 
   constructor(ctx: GpuContext) {
     this.ctx = ctx;
@@ -132,6 +151,8 @@ export class GpuSolver {
     this.integratePositions = new IntegratePositionsStage(ctx);
     this.solvePosition = new SolvePositionStage(ctx);
     this.joints = new SolveJointsStage(ctx);
+    this.islands = new IslandsStage(ctx);
+    this.timeOfImpact = new TimeOfImpactStage(ctx);
     const placeholder = this.state;
     this.colourIo = {
       broadState: placeholder,
@@ -139,6 +160,8 @@ export class GpuSolver {
       solverState: this.state,
       solverIndirect: this.indirect,
       contactBodies: this.contactBodiesArray.buffer,
+      params: this.params.buffer,
+      jointBodies: this.joints.bodies,
       rounds: this.colourParams,
     };
     this.passIo = {
@@ -147,6 +170,10 @@ export class GpuSolver {
       colourKeys: this.colouring.keys.buffer,
       contactBodies: this.contactBodiesArray.buffer,
       constraints: this.constraintArray.buffer,
+      params: this.params.buffer,
+      jointBodies: this.joints.bodies,
+      jointConstraints: this.joints.constraints,
+      jointParams: placeholder,
       colours: this.colourParams,
     };
     this.prepareIo = {
@@ -159,6 +186,16 @@ export class GpuSolver {
       contactBodies: this.contactBodiesArray.buffer,
       constraints: this.constraintArray.buffer,
     };
+    this.islandIo = {
+      solverState: this.state,
+      solverIndirect: this.indirect,
+      npState: placeholder,
+      contactRefs: placeholder,
+      manifolds: placeholder,
+      solverList: placeholder,
+      contactCapacity: 0,
+    };
+    this.toiIo = { solverState: this.state, npState: placeholder, contactRefs: placeholder };
   }
 
   /** Solver contact records per solver contact k (body A, body B, flags, contact index). */
@@ -186,6 +223,7 @@ export class GpuSolver {
     u.u32[6] = mirror.bodySlotCount;
     u.u32[7] = mirror.jointSlotCount;
     u.upload();
+    this.islands.configure(step.dt, mirror);
   }
 
   /** Records the solver's passes for the collision step whose outputs are `io`. */
@@ -193,32 +231,58 @@ export class GpuSolver {
     const contacts = Math.max(1, io.contactCapacity);
     this.contactBodiesArray.ensure(contacts);
     this.constraintArray.ensure(contacts);
-    this.colouring.reserve(contacts, Math.max(1, mirror.bodySlotCount));
+    this.colouring.reserve(contacts + mirror.jointSlotCount, Math.max(1, mirror.bodySlotCount));
+    this.joints.reserve(mirror);
     this.mirror = mirror;
     const c = this.colourIo;
     c.broadState = io.broadState;
     c.npState = io.npState;
     c.contactBodies = this.contactBodiesArray.buffer;
+    c.jointBodies = this.joints.bodies;
     const v = this.passIo;
     v.colourKeys = this.colouring.keys.buffer;
     v.contactBodies = this.contactBodiesArray.buffer;
     v.constraints = this.constraintArray.buffer;
+    v.jointBodies = this.joints.bodies;
+    v.jointConstraints = this.joints.constraints;
+    v.jointParams = mirror.jointParams.buffer;
     const p = this.prepareIo;
     p.solverList = io.solverList;
     p.contactRefs = io.contactRefs;
     p.manifolds = io.manifolds;
     p.contactBodies = this.contactBodiesArray.buffer;
     p.constraints = this.constraintArray.buffer;
+    const s = this.islandIo;
+    s.npState = io.npState;
+    s.contactRefs = io.contactRefs;
+    s.manifolds = io.manifolds;
+    s.solverList = io.solverList;
+    s.contactCapacity = io.contactCapacity;
+    pass('solve: islands', this.encodeIslands);
     pass('solve: integrate velocities', this.encodeIntegrateVelocities);
     pass('solve: prepare', this.encodePrepare);
     pass('solve: colour', this.encodeColour);
     pass('solve: velocity', this.encodeVelocity);
     pass('solve: position', this.encodePosition);
+    pass('solve: sleep', this.encodeSleep);
+    if (mirror.world.m_continuousPhysics) {
+      this.toiIo.npState = io.npState;
+      this.toiIo.contactRefs = io.contactRefs;
+      pass('solve: time of impact', this.encodeTimeOfImpact);
+    }
     this.mirror = null;
   }
 
-  private readonly encodeIntegrateVelocities = (rec: Recorder): void => {
+  private readonly encodeIslands = (rec: Recorder): void => {
     this.colouring.encodeBegin(rec, this.colourIo);
+    this.islands.encodeFind(rec, this.islandIo, this.mirror!);
+  };
+
+  private readonly encodeSleep = (rec: Recorder): void => this.islands.encodeSleep(rec, this.state, this.mirror!);
+
+  private readonly encodeTimeOfImpact = (rec: Recorder): void => this.timeOfImpact.encode(rec, this.toiIo, this.mirror!);
+
+  private readonly encodeIntegrateVelocities = (rec: Recorder): void => {
     this.integrateVelocities.encode(rec, this.params.buffer, this.state, this.mirror!);
   };
 
@@ -227,18 +291,13 @@ export class GpuSolver {
     this.joints.encodePrepare(rec, this.params.buffer, this.mirror!);
   };
 
-  private readonly encodeJointVelocity = (rec: Recorder): void => this.joints.encodeVelocity(rec, this.params.buffer, this.state, this.mirror!);
-
-  private readonly encodeJointPosition = (rec: Recorder): void => this.joints.encodePosition(rec, this.params.buffer, this.state, this.mirror!);
-
   private readonly encodeColour = (rec: Recorder): void => this.colouring.encode(rec, this.colourIo);
 
   private readonly encodeVelocity = (rec: Recorder): void => {
     const mirror = this.mirror!;
-    if (this.step.warmStarting) this.warmStart.encode(rec, this.passIo, mirror.bodyVel.buffer);
-    // b2Island::Solve: the contacts' warm start, then the joints' (InitVelocityConstraints).
-    this.joints.encodeWarmStart(rec, this.params.buffer, this.state, mirror);
-    this.solveVelocity.encode(rec, this.passIo, mirror.bodyVel.buffer, this.step.velocityIterations, this.encodeJointVelocity);
+    // Joints need the pass without warm starting too: the mouse joint damps its body there.
+    if (this.step.warmStarting || mirror.jointSlotCount > 0) this.warmStart.encode(rec, this.passIo, mirror.bodyVel.buffer);
+    this.solveVelocity.encode(rec, this.passIo, mirror.bodyVel.buffer, this.step.velocityIterations);
     this.storeImpulses.encode(rec, this.state, this.indirect, this.contactBodiesArray.buffer, this.constraintArray.buffer, this.prepareIo.manifolds);
     this.joints.encodeStore(rec, this.params.buffer, this.state, mirror);
     this.integratePositions.encodeIntegrate(rec, this.params.buffer, this.state, mirror);
@@ -246,7 +305,7 @@ export class GpuSolver {
 
   private readonly encodePosition = (rec: Recorder): void => {
     const mirror = this.mirror!;
-    this.solvePosition.encode(rec, this.passIo, mirror.bodySweep.buffer, this.step.positionIterations, this.encodeJointPosition);
+    this.solvePosition.encode(rec, this.passIo, mirror.bodySweep.buffer, this.step.positionIterations);
     this.integratePositions.encodeSynchronize(rec, this.params.buffer, this.state, mirror);
   };
 
@@ -272,6 +331,7 @@ export class GpuSolver {
     return {
       skipped: w[SV.SKIP] !== 0,
       contacts: w[SV.COUNT],
+      joints: w[SV.ITEMS] - w[SV.COUNT],
       positionIterations: w[SV.POSITION_ITERATIONS],
       positionSolved: w[SV.POSITION_DONE] !== 0,
       colourStart: Array.from(w.subarray(SV.COLOUR_START, SV.COLOUR_START + COLOUR_CAP + 2)),
@@ -279,19 +339,34 @@ export class GpuSolver {
   }
 
   /**
-   * The last step's colouring: per solver contact k its colour (COLOUR_CAP: overflow set), its
-   * bodies and whether they are dynamic, and the sorted colour list.
+   * The last step's colouring: per item (joint slots 0 .. joints - 1, then solver contact k as
+   * item joints + k) its colour (COLOUR_CAP: overflow set), the contacts' records (contactBodies),
+   * the joints' (jointBodies: bodies A, B, C, D | type, dynamic mask, solved, limit state), and
+   * the sorted colour list.
    */
-  async readColouring(): Promise<{ colours: Uint32Array; bodies: Uint32Array; keys: Uint32Array; state: SolverState }> {
+  async readColouring(): Promise<{ joints: number; colours: Uint32Array; bodies: Uint32Array; jointBodies: Uint32Array; keys: Uint32Array; state: SolverState }> {
     const state = await this.readState();
+    const joints = state.joints;
     const n = state.contacts;
-    if (n === 0) return { colours: new Uint32Array(0), bodies: new Uint32Array(0), keys: new Uint32Array(0), state };
+    const items = joints + n;
+    const read = async (buffer: GPUBuffer, bytes: number): Promise<Uint32Array> => (bytes === 0 ? new Uint32Array(0) : new Uint32Array(await this.readBuffer(buffer, bytes)));
     return {
-      colours: new Uint32Array(await this.readBuffer(this.colouring.colours.buffer, 4 * n)),
-      bodies: new Uint32Array(await this.readBuffer(this.contactBodiesArray.buffer, 16 * n)),
-      keys: new Uint32Array(await this.readBuffer(this.colouring.keys.buffer, 8 * n)),
+      joints,
+      colours: await read(this.colouring.colours.buffer, 4 * items),
+      bodies: await read(this.contactBodiesArray.buffer, 16 * n),
+      jointBodies: await read(this.joints.bodies, 32 * joints),
+      keys: await read(this.colouring.keys.buffer, 8 * items),
       state,
     };
+  }
+
+  /**
+   * The last step's islands: per body slot its island's label (the island's smallest body slot),
+   * NO_ISLAND for static, inactive and dead bodies.
+   */
+  async readIslands(bodySlots: number): Promise<Uint32Array> {
+    const words = new Uint32Array(await this.readBuffer(this.islands.labels.buffer, 4 * ISLAND_WORDS * bodySlots));
+    return Uint32Array.from({ length: bodySlots }, (_, i) => words[ISLAND_WORDS * i]);
   }
 
   destroy(): void {
@@ -303,5 +378,7 @@ export class GpuSolver {
     this.constraintArray.destroy();
     this.colouring.destroy();
     this.joints.destroy();
+    this.islands.destroy();
+    this.timeOfImpact.destroy();
   }
 }

@@ -1,12 +1,13 @@
 /*
  * Stepping a b2World on the GPU: the broad phase, the narrow phase and the solver of a step in
  * one command buffer and one submission (two when collision overflows and the host reruns it,
- * the solver with it), as b2World::Step orders them (Collide, then Solve; no TOI yet).
+ * the solver with it), as b2World::Step orders them (Collide, Solve, then SolveTOI when the world's
+ * continuous physics is on: timeOfImpact.ts, one parallel pass without 2.2.1's TOI sub-steps).
  *
  * In:  a b2World built with the normal API; step(dt, velocityIterations, positionIterations).
  * Out: the bodies' motion on the GPU (GpuWorld's bodyXf, bodyCell, bodySweep, bodyVel), contacts
- *      and impulses in the narrow phase's buffers; readBodies() copies the motion back into the
- *      world's b2Body objects with one map.
+ *      and impulses in the narrow phase's buffers; readBodies() copies the motion, the awake flag
+ *      and the sleep time back into the world's b2Body objects with one map.
  * Authority: from the first step the GPU's copy of the body motion is the one that counts
  * (GpuWorld.gpuOwnsMotion): the world's bodies keep their old positions and velocities until
  * readBodies(), and setting them in JavaScript (SetTransform, SetLinearVelocity) is not seen by the
@@ -16,10 +17,13 @@
  * Handing over a running world: the constructor takes the world's contacts and their impulses as
  * the previous step's (GpuNarrowPhase.seedFromWorld) and its 1 / dt of the last step, so the first
  * GPU step warm-starts as the engine's next step would.
- * Joints: revolute and distance joints are solved; a world with another joint type is refused
- * (step() throws, naming the type) rather than stepped without it.
- * Not yet (docs/GPU.md, "The solver"): the other joint types, sleeping, continuous collision
- * (bullets), contact listeners; readBodies() does not write joint impulses back.
+ * Joints: all ten types of 2.2.1 are solved (solveJoints.ts), coloured with the contacts.
+ * Sleeping: islands and sleep timers on the GPU (islands.ts); the awake flag is GPU-owned like the
+ * motion, and SetAwake from JavaScript reaches the GPU by GpuWorld's rule (its header).
+ * Not yet (docs/GPU.md, "The solver"): 2.2.1's TOI island solve and sub-steps (a body is stopped at
+ * its time of impact and the next step solves the contact); readBodies() does not write joint
+ * impulses back. Contact listeners: WebGPUBackend
+ * (backend.ts) reads events and contacts in readBodies()'s map and delivers them after the step.
  */
 
 import type { b2World } from '../src/dynamics/b2World';
@@ -40,18 +44,26 @@ export interface GpuStepperOptions {
   narrowPhase?: GpuNarrowPhaseOptions;
 }
 
+/** A range of a GPU buffer read back in readBodies()'s map (offset and size multiples of 4). */
+export interface GpuReadRange {
+  buffer: GPUBuffer;
+  offset: number;
+  size: number;
+  /** Set by readBodies(): a copy of the range's bytes. */
+  data: ArrayBuffer | null;
+}
+
 export interface GpuStepOptions {
   /** false: return once submitted (the narrow phase's { wait: false }); default true. */
   wait?: boolean;
 }
 
-/** b2JointType values the GPU solves. */
-const e_revoluteJoint = 1;
-const e_distanceJoint = 3;
 /** b2World::e_clearForces. */
 const e_clearForces = 0x0004;
-/** Bytes per body slot in readBodies()'s staging buffer: xf 16, cell 8, sweep 32, velocity 16. */
-const BODY_READ_BYTES = 72;
+/** b2Body::e_awakeFlag. */
+const e_awakeFlag = 0x0002;
+/** Bytes per body slot in readBodies()'s staging buffer: xf 16, cell 8, sweep 32, velocity 16, awake 4. */
+const BODY_READ_BYTES = 76;
 
 export class GpuStepper {
   readonly ctx: GpuContext;
@@ -64,7 +76,7 @@ export class GpuStepper {
   steps = 0;
   private invDt0: number;
   private staging: GPUBuffer | null = null;
-  private stagingBodies = 0;
+  private stagingBytes = 0;
   private readonly solverStep: SolverStep = { dt: 0, dtRatio: 0, velocityIterations: 0, positionIterations: 0, warmStarting: true, gravity: { x: 0, y: 0 } };
   private readonly encodeSolver = (pass: PassRecorder, outputs: NarrowPhaseOutputs): void => this.solver.encode(pass, this.mirror, outputs);
 
@@ -86,15 +98,10 @@ export class GpuStepper {
    */
   async step(dt: number, velocityIterations: number, positionIterations: number, options: GpuStepOptions = {}): Promise<NarrowPhaseResult> {
     const world = this.world;
-    for (let j = world.m_jointList; j; j = j.m_next) {
-      if (j.m_type !== e_revoluteJoint && j.m_type !== e_distanceJoint) {
-        throw new Error(`GpuStepper: joints of type ${j.m_type} (b2JointType) are not solved on the GPU yet; only revolute and distance joints are`);
-      }
-    }
     this.mirror.sync();
     this.mirror.gpuOwnsMotion = true;
     // The forces are on the GPU now; b2World::Step clears them after the step.
-    if ((world.m_flags & e_clearForces) !== 0) world.ClearForces();
+    if ((world.m_flags & e_clearForces) !== 0) this.mirror.clearForces();
     const solve = dt > 0;
     if (solve) {
       const s = this.solverStep;
@@ -117,18 +124,21 @@ export class GpuStepper {
 
   /**
    * Copies the GPU's body motion into the world's bodies (m_xf, m_sweep, velocities) with one map,
-   * after every step submitted so far. Returns the number of bodies written.
+   * after every step submitted so far; `extras` (events, contacts: WebGPUBackend) are copied in the
+   * same map. Returns the number of bodies written.
    */
-  async readBodies(): Promise<number> {
+  async readBodies(extras: GpuReadRange[] = []): Promise<number> {
     const ctx = this.ctx;
     ctx.assertAlive();
     const mirror = this.mirror;
     const n = mirror.bodySlotCount;
-    if (n === 0) return 0;
-    if (this.staging === null || this.stagingBodies < n) {
+    let bytes = BODY_READ_BYTES * n;
+    for (const r of extras) bytes += r.size;
+    if (bytes === 0) return 0;
+    if (this.staging === null || this.stagingBytes < bytes) {
       this.staging?.destroy();
-      this.stagingBodies = Math.max(n, 2 * this.stagingBodies, 64);
-      this.staging = ctx.createBuffer('stepper body read-back', BODY_READ_BYTES * this.stagingBodies, USAGE.MAP_READ | USAGE.COPY_DST);
+      this.stagingBytes = Math.max(bytes, 2 * this.stagingBytes, 64 * BODY_READ_BYTES);
+      this.staging = ctx.createBuffer('stepper body read-back', this.stagingBytes, USAGE.MAP_READ | USAGE.COPY_DST);
     }
     const staging = this.staging;
     const encoder = ctx.device.createCommandEncoder({ label: 'stepper body read-back' });
@@ -136,18 +146,30 @@ export class GpuStepper {
     encoder.copyBufferToBuffer(mirror.bodyCell.buffer, 0, staging, 16 * n, 8 * n);
     encoder.copyBufferToBuffer(mirror.bodySweep.buffer, 0, staging, 24 * n, 32 * n);
     encoder.copyBufferToBuffer(mirror.bodyVel.buffer, 0, staging, 56 * n, 16 * n);
+    encoder.copyBufferToBuffer(mirror.bodyAwake.buffer, 0, staging, 72 * n, 4 * n);
+    let at = BODY_READ_BYTES * n;
+    for (const r of extras) {
+      if (r.size > 0) encoder.copyBufferToBuffer(r.buffer, r.offset, staging, at, r.size);
+      at += r.size;
+    }
     ctx.device.queue.submit([encoder.finish()]);
     try {
-      await Promise.race([staging.mapAsync(MAP_READ, 0, BODY_READ_BYTES * n), ctx.lostRejection]);
+      await Promise.race([staging.mapAsync(MAP_READ, 0, bytes), ctx.lostRejection]);
     } catch {
       ctx.assertAlive();
       throw new Error('reading the bodies back from the GPU failed');
     }
-    const bytes = staging.getMappedRange(0, BODY_READ_BYTES * n);
-    const xf = new Float32Array(bytes, 0, 4 * n);
-    const cell = new Int32Array(bytes, 16 * n, 2 * n);
-    const sweep = new Float32Array(bytes, 24 * n, 8 * n);
-    const vel = new Float32Array(bytes, 56 * n, 4 * n);
+    const mapped = staging.getMappedRange(0, bytes);
+    at = BODY_READ_BYTES * n;
+    for (const r of extras) {
+      r.data = mapped.slice(at, at + r.size);
+      at += r.size;
+    }
+    const xf = new Float32Array(mapped, 0, 4 * n);
+    const cell = new Int32Array(mapped, 16 * n, 2 * n);
+    const sweep = new Float32Array(mapped, 24 * n, 8 * n);
+    const vel = new Float32Array(mapped, 56 * n, 4 * n);
+    const awake = new Uint32Array(mapped, 72 * n, n);
     const S = mirror.cellSize;
     let written = 0;
     for (let slot = 0; slot < n; ++slot) {
@@ -170,6 +192,11 @@ export class GpuStepper {
       b.m_linearVelocity.x = vel[4 * slot];
       b.m_linearVelocity.y = vel[4 * slot + 1];
       b.m_angularVelocity = vel[4 * slot + 2];
+      b.m_sleepTime = sweep[s + 7];
+      b.m_flags = awake[slot] !== 0 ? b.m_flags | e_awakeFlag : b.m_flags & ~e_awakeFlag;
+      // The mirror's shadow now holds what the GPU holds: sync() uploads the flag again only
+      // when JavaScript changes it (GpuWorld's header).
+      mirror.bodyAwake.u32[slot] = awake[slot];
       written++;
     }
     staging.unmap();

@@ -3,8 +3,8 @@
  *
  * In:  items[0, E) = (key, proxy slot) sorted by key; the proxy tables (SweepInputs).
  * Out: pairs[0, min(found, capacity)) = (a, b), a < b, unordered; state[STATE.PAIR_COUNT] = found.
- * Steps: gather (AABB keys, filter data and strip data in sorted order), count (each entry's
- * candidate range, in work items of SWEEP_CHUNK candidates), scan (work-item offsets; total in
+ * Steps: gather (AABB keys, filter data and strip data in sorted order, and each entry's
+ * candidate range in work items of SWEEP_CHUNK candidates), scan (work-item offsets; total in
  * state[STATE.WORK_TOTAL]), emit_args (the indirect size of emit), emit (the overlap tests, the
  * strip de-duplication and Box2D's pair filters; pairs appended with one atomic per workgroup).
  * Every pass over the entries is dispatched indirectly: only the GPU knows E.
@@ -32,34 +32,29 @@ export interface SweepInputs {
 
 export class SweepStage {
   private readonly gather: Kernel;
-  private readonly count: Kernel;
   private readonly emitArgs: Kernel;
   private readonly emit: Kernel;
   private readonly scan: PrefixScan;
   private readonly params: Uniform;
-  readonly sortedBox: GpuArray;
+  readonly sortedKeys: GpuArray;
   readonly sortedInfo: GpuArray;
-  readonly sortedAux: GpuArray;
   readonly workOffset: GpuArray;
 
   constructor(ctx: GpuContext) {
     this.gather = new Kernel(ctx, 'sweep', 'gather');
-    this.count = new Kernel(ctx, 'sweep', 'count');
     this.emitArgs = new Kernel(ctx, 'sweep', 'emit_args');
     this.emit = new Kernel(ctx, 'sweep', 'emit');
     this.scan = new PrefixScan(ctx);
     this.params = new Uniform(ctx, 'sweep params', 4);
-    this.sortedBox = new GpuArray(ctx, 'sortedBox', 16);
+    this.sortedKeys = new GpuArray(ctx, 'sortedKeys', 32);
     this.sortedInfo = new GpuArray(ctx, 'sortedInfo', 16);
-    this.sortedAux = new GpuArray(ctx, 'sortedAux', 16);
     this.workOffset = new GpuArray(ctx, 'workOffset', 4);
   }
 
   /** Makes room for `entries` sweep entries. */
   reserve(entries: number): void {
-    this.sortedBox.ensure(entries);
+    this.sortedKeys.ensure(entries);
     this.sortedInfo.ensure(entries);
-    this.sortedAux.ensure(entries);
     this.workOffset.ensure(entries);
     this.scan.reserve(entries);
   }
@@ -70,7 +65,7 @@ export class SweepStage {
     this.params.upload();
   }
 
-  /** gather, count, scan, emit_args. */
+  /** gather, scan, emit_args. */
   encodePrepare(rec: Recorder, inputs: SweepInputs, items: GPUBuffer, state: GPUBuffer, indirect: GPUBuffer): void {
     const entryGroups = ARGS.ENTRY_GROUPS * 4;
     rec.dispatchIndirect(
@@ -81,16 +76,10 @@ export class SweepStage {
         3: inputs.proxyRef,
         4: inputs.proxyFilter,
         5: state,
-        6: this.sortedBox.buffer,
+        6: this.sortedKeys.buffer,
         7: this.sortedInfo.buffer,
-        8: this.sortedAux.buffer,
+        9: this.workOffset.buffer,
       }),
-      indirect,
-      entryGroups,
-    );
-    rec.dispatchIndirect(
-      this.count,
-      this.count.bind({ 1: items, 5: state, 8: this.sortedAux.buffer, 9: this.workOffset.buffer }),
       indirect,
       entryGroups,
     );
@@ -105,9 +94,8 @@ export class SweepStage {
   encodeEmit(rec: Recorder, inputs: SweepInputs, pairs: GPUBuffer, state: GPUBuffer, indirect: GPUBuffer): void {
     const group = this.emit.bind({
       0: this.params.buffer,
-      6: this.sortedBox.buffer,
+      6: this.sortedKeys.buffer,
       7: this.sortedInfo.buffer,
-      8: this.sortedAux.buffer,
       9: this.workOffset.buffer,
       10: inputs.jointRange,
       11: inputs.jointList,

@@ -1,9 +1,11 @@
 /*
- * Solver stage 4, warm start (shaders/warmStart.wgsl): b2ContactSolver::WarmStart, one pass per
- * colour (the overflow set last, in one invocation).
+ * Solver stage 4, warm start (shaders/warmStart.wgsl): b2ContactSolver::WarmStart and the joints'
+ * warm start (b2*Joint::InitVelocityConstraints), one pass per colour over its joints and
+ * contacts (the overflow set last, in one invocation).
  *
  * In:  the colour lists (colour.ts: colourKeys, SV.COLOUR_START, SV_ARGS.COLOURS), contactBodies,
- *      constraints (impulses already scaled by dtRatio), bodyVel.
+ *      constraints (impulses already scaled by dtRatio), jointBodies, jointConstraints
+ *      (solveJoints.ts), bodyVel.
  * Out: bodyVel of the dynamic bodies.
  */
 
@@ -18,6 +20,13 @@ export interface ColourPassInputs {
   colourKeys: GPUBuffer;
   contactBodies: GPUBuffer;
   constraints: GPUBuffer;
+  /** The solver's parameters (SolverParams). */
+  params: GPUBuffer;
+  /** solveJoints.ts: per joint slot, bodies and flags, and the solver records. */
+  jointBodies: GPUBuffer;
+  jointConstraints: GPUBuffer;
+  /** The mirror's jointParams (motor speeds, limits, forces as set this step). */
+  jointParams: GPUBuffer;
   /** One uniform per colour (ColourParams), COLOUR_CAP + 1 of them. */
   colours: Uniform[];
 }
@@ -31,7 +40,16 @@ export class WarmStartStage {
 
   encode(rec: Recorder, io: ColourPassInputs, bodyVel: GPUBuffer): void {
     for (let c = 0; c <= COLOUR_CAP; ++c) {
-      const group = this.kernel.bind({ 0: io.colours[c].buffer, 1: io.solverState, 2: io.colourKeys, 3: io.contactBodies, 4: io.constraints, 5: bodyVel });
+      const group = this.kernel.bind({
+        0: io.colours[c].buffer,
+        1: io.solverState,
+        2: io.colourKeys,
+        3: io.contactBodies,
+        4: io.constraints,
+        5: bodyVel,
+        10: io.jointBodies,
+        12: io.jointConstraints,
+      });
       rec.dispatchIndirect(this.kernel, group, io.solverIndirect, (SV_ARGS.COLOURS + 3 * c) * 4);
     }
   }

@@ -30,9 +30,19 @@
  * bodyVel) and of the joints' warm-start state (jointState) is the authority: sync() uploads them
  * only for bodies and joints new to the mirror (a reused slot included), and uploads exactly the
  * changed records of those tables. Everything else (mass, forces, damping, flags, fixtures, joint
- * parameters) is still mirrored from the world. Custom contact filters (b2ContactFilter subclasses)
- * cannot run on the GPU: `usesCustomContactFilter` says when the world has one, and the GPU pair
- * set then follows the default filter rules.
+ * parameters) is still mirrored from the world.
+ * The awake flag (bodyAwake) is GPU-owned in the same way, with one more rule: the GPU wakes and
+ * puts bodies to sleep (islands, part 3) and GpuStepper.readBodies() writes e_awakeFlag and
+ * m_sleepTime back; sync() uploads a body's awake flag when the world's e_awakeFlag differs from
+ * the value last uploaded or read back (SetAwake, or ApplyForce / SetLinearVelocity waking a body,
+ * after a read-back that showed it asleep), for a body new to the mirror, and for every body when
+ * b2World::m_allowSleep was turned off (SetAllowSleeping(false) wakes them all). sleepTime (word 7
+ * of bodySweep) is never uploaded after that: the GPU keeps 2.2.1's rule that a sleeping body has
+ * zero velocity and sleep time, so a body put to sleep or woken from JavaScript gets them there.
+ * A flag that only changed on the GPU since the last read-back is not seen: read back first.
+ * Custom contact filters (b2ContactFilter subclasses) cannot run on the GPU:
+ * `usesCustomContactFilter` says when the world has one, and the GPU pair set then follows the
+ * default filter rules.
  */
 
 import type { b2Body } from '../src/dynamics/b2Body';
@@ -41,6 +51,14 @@ import type { b2World } from '../src/dynamics/b2World';
 import type { b2Joint } from '../src/dynamics/joints/b2Joint';
 import type { b2RevoluteJoint } from '../src/dynamics/joints/b2RevoluteJoint';
 import type { b2DistanceJoint } from '../src/dynamics/joints/b2DistanceJoint';
+import type { b2PrismaticJoint } from '../src/dynamics/joints/b2PrismaticJoint';
+import type { b2PulleyJoint } from '../src/dynamics/joints/b2PulleyJoint';
+import type { b2MouseJoint } from '../src/dynamics/joints/b2MouseJoint';
+import type { b2GearJoint } from '../src/dynamics/joints/b2GearJoint';
+import type { b2WheelJoint } from '../src/dynamics/joints/b2WheelJoint';
+import type { b2WeldJoint } from '../src/dynamics/joints/b2WeldJoint';
+import type { b2FrictionJoint } from '../src/dynamics/joints/b2FrictionJoint';
+import type { b2RopeJoint } from '../src/dynamics/joints/b2RopeJoint';
 import type { b2CircleShape } from '../src/collision/shapes/b2CircleShape';
 import type { b2EdgeShape } from '../src/collision/shapes/b2EdgeShape';
 import type { b2PolygonShape } from '../src/collision/shapes/b2PolygonShape';
@@ -63,12 +81,60 @@ import {
 const e_circle = 0;
 const e_edge = 1;
 const e_polygon = 2;
-/** b2JointType values of the joints the GPU solves (parameters in jointParams). */
+/** b2Body::e_awakeFlag. */
+const e_awakeFlag = 0x0002;
+/** b2JointType values (parameters in jointParams by type: layout.ts). */
 const e_revoluteJoint = 1;
+const e_prismaticJoint = 2;
 const e_distanceJoint = 3;
+const e_pulleyJoint = 4;
+const e_mouseJoint = 5;
+const e_gearJoint = 6;
+const e_wheelJoint = 7;
+const e_weldJoint = 8;
+const e_frictionJoint = 9;
+const e_ropeJoint = 10;
+
+/** Four words into a scratch record at `at` (no array literal: sync() allocates nothing per joint). */
+function put4(record: Float32Array, at: number, a: number, b: number, c: number, d: number): void {
+  record[at] = a;
+  record[at + 1] = b;
+  record[at + 2] = c;
+  record[at + 3] = d;
+}
 
 /** A fixture slot without proxies. */
 const EMPTY_SLOTS: number[] = [];
+
+/**
+ * What the API changed since the last sync: the world's b2ChangeListener while a GpuWorld mirrors
+ * it (structurally one: src-gpu imports only types from the engine).
+ */
+class ChangeLog {
+  /** A body, fixture or joint came or went (or this is the first sync): walk everything. */
+  structure = true;
+  /** Bodies set through the API, true when their motion was set. */
+  readonly bodies = new Map<b2Body, boolean>();
+  readonly fixtures = new Set<b2Fixture>();
+
+  BodyChanged(body: b2Body, motion: boolean): void {
+    if (motion || !this.bodies.has(body)) this.bodies.set(body, motion || this.bodies.get(body) === true);
+  }
+
+  FixtureChanged(fixture: b2Fixture): void {
+    this.fixtures.add(fixture);
+  }
+
+  StructureChanged(): void {
+    this.structure = true;
+  }
+
+  reset(): void {
+    this.structure = false;
+    this.bodies.clear();
+    this.fixtures.clear();
+  }
+}
 
 /** Slots handed out lowest free first; `gen` marks the slots seen by the current sync. */
 class SlotAllocator<T> {
@@ -239,10 +305,12 @@ export class GpuWorld {
   readonly bodyMass: MirrorTable;
   readonly bodyParams: MirrorTable;
   readonly bodyFlags: MirrorTable;
+  /** Per body slot: 1 awake, 0 asleep; GPU-owned once the GPU steps (see the header). */
+  readonly bodyAwake: MirrorTable;
   readonly jointRange: MirrorTable;
   readonly jointList: MirrorTable;
   readonly joints: MirrorTable;
-  /** Per joint slot (layout.ts): anchors and the type's parameters (revolute, distance). */
+  /** Per joint slot (layout.ts): anchors and the type's parameters, every type. */
   readonly jointParams: MirrorTable;
   /** Per joint slot: the accumulated impulses and limit state (GPU-owned once the GPU steps). */
   readonly jointState: MirrorTable;
@@ -261,6 +329,11 @@ export class GpuWorld {
   readonly proxyKey: MirrorTable;
 
   private ownsMotion = false;
+  /** The world's change listener while this mirror is its latest one. */
+  private readonly changes = new ChangeLog();
+  /** b2World::m_allowSleep at the last sync, and whether this sync saw it turned off. */
+  private allowSleep = true;
+  private wakeAll = false;
   /** The tables the GPU writes once it steps (gpuOwnsMotion). */
   private readonly gpuWrittenTables: MirrorTable[];
 
@@ -312,10 +385,11 @@ export class GpuWorld {
     this.bodyMass = new MirrorTable(ctx, 'bodyMass', 4);
     this.bodyParams = new MirrorTable(ctx, 'bodyParams', 4);
     this.bodyFlags = new MirrorTable(ctx, 'bodyFlags', 1);
+    this.bodyAwake = new MirrorTable(ctx, 'bodyAwake', 1);
     this.jointRange = new MirrorTable(ctx, 'jointRange', 2);
     this.jointList = new MirrorTable(ctx, 'jointList', 1);
     this.joints = new MirrorTable(ctx, 'joints', 4);
-    this.jointParams = new MirrorTable(ctx, 'jointParams', 12);
+    this.jointParams = new MirrorTable(ctx, 'jointParams', 20);
     this.jointState = new MirrorTable(ctx, 'jointState', 8);
     this.fixtureShape = new MirrorTable(ctx, 'fixtureShape', 4);
     this.fixtureMaterial = new MirrorTable(ctx, 'fixtureMaterial', 4);
@@ -323,7 +397,7 @@ export class GpuWorld {
     this.proxyRef = new MirrorTable(ctx, 'proxyRef', 4);
     this.proxyFilter = new MirrorTable(ctx, 'proxyFilter', 2);
     this.proxyKey = new MirrorTable(ctx, 'proxyKey', 2);
-    this.gpuWrittenTables = [this.bodyXf, this.bodyCell, this.bodySweep, this.bodyVel, this.jointState];
+    this.gpuWrittenTables = [this.bodyXf, this.bodyCell, this.bodySweep, this.bodyVel, this.bodyAwake, this.jointState];
     this.allTables = [
       this.bodyXf,
       this.bodyCell,
@@ -333,6 +407,7 @@ export class GpuWorld {
       this.bodyMass,
       this.bodyParams,
       this.bodyFlags,
+      this.bodyAwake,
       this.jointRange,
       this.jointList,
       this.joints,
@@ -345,6 +420,7 @@ export class GpuWorld {
       this.proxyFilter,
       this.proxyKey,
     ];
+    world.SetChangeListener(this.changes);
   }
 
   /**
@@ -438,9 +514,21 @@ export class GpuWorld {
     };
     this.usesCustomContactFilter = isCustomContactFilter(world.m_contactManager.m_contactFilter);
 
-    this.syncBodies(world, gen, stats);
+    // b2World::SetAllowSleeping(false) wakes every body, including those the GPU put to sleep
+    // since the last read-back (the world's flags still say awake there).
+    this.wakeAll = this.allowSleep && !world.m_allowSleep;
+    this.allowSleep = world.m_allowSleep;
 
-    // 2. Joints, and the per-body lists of joints that turn collision off.
+    // Everything is walked while the engine moves the bodies, after a body, fixture or joint came
+    // or went, when sleeping was turned off, or when another listener replaced the change log;
+    // otherwise only what the change log names (and every joint: they report nothing).
+    const log = this.changes;
+    const full = !this.ownsMotion || log.structure || this.wakeAll || world.m_changeListener !== log;
+    if (full) this.syncBodies(world, gen, stats);
+    else log.bodies.forEach(this.packChangedBody);
+
+    // 2. Joints, and the per-body lists of joints that turn collision off (only a structural
+    // change alters those).
     const edges: number[] = [];
     for (let j = world.m_jointList; j; j = j.m_next) {
       const slot = this.jointSlots.acquire(j, gen);
@@ -449,16 +537,25 @@ export class GpuWorld {
       const b = this.bodySlot(j.m_bodyB);
       this.joints.commitWords(slot, a, b, j.m_type, (j.m_collideConnected ? 1 : 0) | JOINT_LIVE);
       this.packJoint(slot, j, this.jointSlots.created);
-      if (!j.m_collideConnected) {
+      if (full && !j.m_collideConnected) {
         edges.push(a * 67108864 + b, b * 67108864 + a);
       }
     }
-    stats.joints.released = this.jointSlots.sweep(gen, (slot) => {
-      this.joints.commitWords(slot, 0, 0, 0, 0);
-    });
-    this.packJointGraph(edges);
+    if (full) {
+      stats.joints.released = this.jointSlots.sweep(gen, (slot) => {
+        this.joints.commitWords(slot, 0, 0, 0, 0);
+      });
+      this.packJointGraph(edges);
+    }
 
-    this.syncFixtures(world, gen, stats);
+    if (full) {
+      this.syncFixtures(world, gen, stats);
+    } else {
+      for (const f of log.fixtures) this.packChangedFixture(f, gen, stats);
+    }
+    // Motion set through the API overrides the GPU's for that body.
+    if (this.ownsMotion) log.bodies.forEach(this.packSetMotion);
+    log.reset();
 
     stats.bodies.live = this.bodySlots.live;
     stats.fixtures.live = this.fixtureSlots.live;
@@ -468,6 +565,47 @@ export class GpuWorld {
     const queue = this.ctx.device.queue;
     for (const table of this.allTables) table.flush(queue, stats.upload);
     return stats;
+  }
+
+  /** A body in the change log, when sync() does not walk them all. */
+  private readonly packChangedBody = (_motion: boolean, b: b2Body): void => {
+    const slot = this.bodySlot(b);
+    if (slot >= 0) this.packBody(slot, b, false);
+  };
+
+  /** A body whose motion the API set: its motion records are uploaded over the GPU's. */
+  private readonly packSetMotion = (motion: boolean, b: b2Body): void => {
+    const slot = this.bodySlot(b);
+    if (motion && slot >= 0) this.packMotion(slot, b, true);
+  };
+
+  /** A fixture in the change log, when sync() does not walk them all. */
+  private packChangedFixture(f: b2Fixture, gen: number, stats: SyncStats): void {
+    const slot = this.fixtureSlot(f);
+    const bodySlot = this.bodySlot(f.m_body);
+    if (slot < 0 || bodySlot < 0) return;
+    this.packFixture(slot, f, bodySlot, false);
+    this.packProxies(f, slot, bodySlot, f.m_body.m_type, this.jointCount[bodySlot] > 0, gen, stats);
+  }
+
+  /**
+   * b2World::ClearForces for a world the GPU steps (GpuStepper calls it after each step, as
+   * b2World::Step does): zeroes the forces of the bodies whose uploaded force is not zero (every
+   * other body's force is zero already, unless written to m_force directly) and leaves the zeros
+   * for the next upload.
+   */
+  clearForces(): void {
+    const f = this.bodyForce.f32;
+    const n = this.bodyForce.count;
+    for (let slot = 0; slot < n; ++slot) {
+      if (f[4 * slot] === 0 && f[4 * slot + 1] === 0 && f[4 * slot + 2] === 0) continue;
+      const b = this.bodyAt(slot);
+      if (b !== null) {
+        b.m_force.SetZero();
+        b.m_torque = 0.0;
+      }
+      this.bodyForce.commitF4(slot, 0, 0, 0, 0);
+    }
   }
 
   /** Step 1 of sync: bodies, their slots kept in walk order for syncFixtures and as the next sync's hints. */
@@ -536,6 +674,10 @@ export class GpuWorld {
     this.bodyParams.commitF4(slot, b.m_linearDamping, b.m_angularDamping, b.m_gravityScale, 0);
 
     this.bodyFlags.commitWords(slot, ((b.m_flags & 0xffff) | (b.m_type << 16) | BODY_LIVE) >>> 0);
+    // The awake flag (header): commit uploads it when it differs from the last value uploaded or
+    // read back; a new body's, and every body's once sleeping is turned off, always.
+    this.bodyAwake.commitWords(slot, (b.m_flags & e_awakeFlag) !== 0 ? 1 : 0);
+    if (this.ownsMotion && (created || this.wakeAll)) this.bodyAwake.markDirty(slot);
   }
 
   /** Packs the motion records (cell, transform, sweep, velocity); `force` uploads them even if unchanged. */
@@ -592,39 +734,115 @@ export class GpuWorld {
     const owned = this.ownsMotion && !created;
     const s = this.jointState.scratchF32;
     s.fill(0);
-    if (j.m_type === e_revoluteJoint) {
-      const r = j as b2RevoluteJoint;
-      p[0] = r.m_localAnchorA.x;
-      p[1] = r.m_localAnchorA.y;
-      p[2] = r.m_localAnchorB.x;
-      p[3] = r.m_localAnchorB.y;
-      p[4] = r.m_referenceAngle;
-      p[5] = r.m_lowerAngle;
-      p[6] = r.m_upperAngle;
-      p[7] = r.m_maxMotorTorque;
-      p[8] = r.m_motorSpeed;
-      p[9] = r.m_enableLimit ? 1 : 0;
-      p[10] = r.m_enableMotor ? 1 : 0;
-      s[0] = r.m_impulse.x;
-      s[1] = r.m_impulse.y;
-      s[2] = r.m_impulse.z;
-      s[3] = r.m_motorImpulse;
-      s[4] = r.m_limitState;
-    } else if (j.m_type === e_distanceJoint) {
-      const d = j as b2DistanceJoint;
-      p[0] = d.m_localAnchorA.x;
-      p[1] = d.m_localAnchorA.y;
-      p[2] = d.m_localAnchorB.x;
-      p[3] = d.m_localAnchorB.y;
-      p[4] = d.m_length;
-      p[5] = d.m_frequencyHz;
-      p[6] = d.m_dampingRatio;
-      s[0] = d.m_impulse;
+    switch (j.m_type) {
+      case e_revoluteJoint: {
+        const r = j as b2RevoluteJoint;
+        put4(p, 0, r.m_localAnchorA.x, r.m_localAnchorA.y, r.m_localAnchorB.x, r.m_localAnchorB.y);
+        put4(p, 4, r.m_referenceAngle, r.m_lowerAngle, r.m_upperAngle, r.m_maxMotorTorque);
+        put4(p, 8, r.m_motorSpeed, r.m_enableLimit ? 1 : 0, r.m_enableMotor ? 1 : 0, 0);
+        put4(s, 0, r.m_impulse.x, r.m_impulse.y, r.m_impulse.z, r.m_motorImpulse);
+        s[4] = r.m_limitState;
+        break;
+      }
+      case e_prismaticJoint: {
+        const r = j as b2PrismaticJoint;
+        put4(p, 0, r.m_localAnchorA.x, r.m_localAnchorA.y, r.m_localAnchorB.x, r.m_localAnchorB.y);
+        put4(p, 4, r.m_referenceAngle, r.m_lowerTranslation, r.m_upperTranslation, r.m_maxMotorForce);
+        put4(p, 8, r.m_motorSpeed, r.m_enableLimit ? 1 : 0, r.m_enableMotor ? 1 : 0, 0);
+        put4(p, 12, r.m_localXAxisA.x, r.m_localXAxisA.y, r.m_localYAxisA.x, r.m_localYAxisA.y);
+        put4(s, 0, r.m_impulse.x, r.m_impulse.y, r.m_impulse.z, r.m_motorImpulse);
+        s[4] = r.m_limitState;
+        break;
+      }
+      case e_distanceJoint: {
+        const d = j as b2DistanceJoint;
+        put4(p, 0, d.m_localAnchorA.x, d.m_localAnchorA.y, d.m_localAnchorB.x, d.m_localAnchorB.y);
+        put4(p, 4, d.m_length, d.m_frequencyHz, d.m_dampingRatio, 0);
+        s[0] = d.m_impulse;
+        break;
+      }
+      case e_pulleyJoint: {
+        const q = j as b2PulleyJoint;
+        put4(p, 0, q.m_localAnchorA.x, q.m_localAnchorA.y, q.m_localAnchorB.x, q.m_localAnchorB.y);
+        put4(p, 4, q.m_lengthA, q.m_lengthB, q.m_ratio, q.m_constant);
+        this.packWorldPoint(q.m_groundAnchorA.x, q.m_groundAnchorA.y, 8, 12);
+        this.packWorldPoint(q.m_groundAnchorB.x, q.m_groundAnchorB.y, 10, 14);
+        s[0] = q.m_impulse;
+        break;
+      }
+      case e_mouseJoint: {
+        const m = j as b2MouseJoint;
+        put4(p, 0, 0, 0, m.m_localAnchorB.x, m.m_localAnchorB.y);
+        put4(p, 4, m.m_frequencyHz, m.m_dampingRatio, m.m_maxForce, m.m_bodyB.m_mass);
+        this.packWorldPoint(m.m_targetA.x, m.m_targetA.y, 8, 12);
+        s[0] = m.m_impulse.x;
+        s[1] = m.m_impulse.y;
+        break;
+      }
+      case e_gearJoint: {
+        const g = j as b2GearJoint;
+        put4(p, 0, g.m_localAnchorA.x, g.m_localAnchorA.y, g.m_localAnchorB.x, g.m_localAnchorB.y);
+        put4(p, 4, g.m_referenceAngleA, g.m_referenceAngleB, g.m_ratio, g.m_constant);
+        put4(p, 8, g.m_localAnchorC.x, g.m_localAnchorC.y, g.m_localAnchorD.x, g.m_localAnchorD.y);
+        put4(p, 12, g.m_localAxisC.x, g.m_localAxisC.y, g.m_localAxisD.x, g.m_localAxisD.y);
+        const u = this.jointParams.scratchU32;
+        u[16] = this.bodySlot(g.m_bodyC);
+        u[17] = this.bodySlot(g.m_bodyD);
+        u[18] = g.m_typeA;
+        u[19] = g.m_typeB;
+        s[0] = g.m_impulse;
+        break;
+      }
+      case e_wheelJoint: {
+        const w = j as b2WheelJoint;
+        put4(p, 0, w.m_localAnchorA.x, w.m_localAnchorA.y, w.m_localAnchorB.x, w.m_localAnchorB.y);
+        put4(p, 4, w.m_frequencyHz, w.m_dampingRatio, 0, w.m_maxMotorTorque);
+        put4(p, 8, w.m_motorSpeed, 0, w.m_enableMotor ? 1 : 0, 0);
+        put4(p, 12, w.m_localXAxisA.x, w.m_localXAxisA.y, w.m_localYAxisA.x, w.m_localYAxisA.y);
+        put4(s, 0, w.m_impulse, w.m_springImpulse, w.m_motorImpulse, 0);
+        break;
+      }
+      case e_weldJoint: {
+        const w = j as b2WeldJoint;
+        put4(p, 0, w.m_localAnchorA.x, w.m_localAnchorA.y, w.m_localAnchorB.x, w.m_localAnchorB.y);
+        put4(p, 4, w.m_referenceAngle, w.m_frequencyHz, w.m_dampingRatio, 0);
+        put4(s, 0, w.m_impulse.x, w.m_impulse.y, w.m_impulse.z, 0);
+        break;
+      }
+      case e_frictionJoint: {
+        const f = j as b2FrictionJoint;
+        put4(p, 0, f.m_localAnchorA.x, f.m_localAnchorA.y, f.m_localAnchorB.x, f.m_localAnchorB.y);
+        put4(p, 4, f.m_maxForce, f.m_maxTorque, 0, 0);
+        put4(s, 0, f.m_linearImpulse.x, f.m_linearImpulse.y, f.m_angularImpulse, 0);
+        break;
+      }
+      case e_ropeJoint: {
+        const r = j as b2RopeJoint;
+        put4(p, 0, r.m_localAnchorA.x, r.m_localAnchorA.y, r.m_localAnchorB.x, r.m_localAnchorB.y);
+        p[4] = r.m_maxLength;
+        s[0] = r.m_impulse;
+        s[4] = r.m_state;
+        break;
+      }
     }
     this.jointParams.commit(slot);
     if (owned) return;
     this.jointState.commit(slot);
     if (created && this.ownsMotion) this.jointState.markDirty(slot);
+  }
+
+  /**
+   * A world point into jointParams' scratch record as bodies are held: its cell (i32 words at
+   * `cellAt`) and the float32 offset in it (at `offsetAt`), so a stage takes it into any body's cell.
+   */
+  private packWorldPoint(x: number, y: number, offsetAt: number, cellAt: number): void {
+    const S = this.cellSize;
+    const cx = Math.round(x / S);
+    const cy = Math.round(y / S);
+    this.jointParams.scratchF32[offsetAt] = x - cx * S;
+    this.jointParams.scratchF32[offsetAt + 1] = y - cy * S;
+    this.jointParams.scratchI32[cellAt] = cx;
+    this.jointParams.scratchI32[cellAt + 1] = cy;
   }
 
   private packJointGraph(edges: number[]): void {
@@ -796,6 +1014,7 @@ export class GpuWorld {
   }
 
   destroy(): void {
+    if (this.world.m_changeListener === this.changes) this.world.SetChangeListener(null);
     for (const table of this.allTables) table.destroy();
   }
 }

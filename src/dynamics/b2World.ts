@@ -31,6 +31,7 @@ import {
 import { b2CheckBodyOf, b2CheckJointDef, b2CheckJointOf } from './b2DefValidation';
 import { b2Body, b2BodyType, type b2BodyDef } from './b2Body';
 import { b2ContactManager } from './b2ContactManager';
+import { b2WorldBackendEngineFunctions, type b2WorldBackend } from './b2WorldBackend';
 import type { b2Fixture, b2FixtureProxy } from './b2Fixture';
 import { b2Island } from './b2Island';
 import { b2Profile, b2TimeStep } from './b2TimeStep';
@@ -173,6 +174,10 @@ export class b2World {
 
   readonly m_profile = new b2Profile();
 
+  /** Not in the C++: the backend that steps this world (SetBackend), null for this engine. */
+  private m_backend: b2WorldBackend | null = null;
+  private m_backendSwitching = false;
+
   // Reused in place of the C++ stack temporaries of Step, Solve and SolveTOI.
   private readonly m_island = new b2Island(0, 0, 0, null);
   private readonly m_stack: b2Body[] = [];
@@ -248,19 +253,19 @@ export class b2World {
   }
 
   /**
-   * Register a routine for debug drawing. The debug draw functions are called inside with
-   * b2World.DrawDebugData method. The debug draw object is owned by you and must remain in scope.
-   */
-  SetDebugDraw(debugDraw: b2Draw | null): void {
-    this.m_debugDraw = debugDraw;
-  }
-
-  /**
    * Not in the C++: register a listener told when the API changes bodies, fixtures and the
    * world's structure (b2ChangeListener). The WebGPU backend's mirror uses it; one per world.
    */
   SetChangeListener(listener: b2ChangeListener | null): void {
     this.m_changeListener = listener;
+  }
+
+  /**
+   * Register a routine for debug drawing. The debug draw functions are called inside with
+   * b2World.DrawDebugData method. The debug draw object is owned by you and must remain in scope.
+   */
+  SetDebugDraw(debugDraw: b2Draw | null): void {
+    this.m_debugDraw = debugDraw;
   }
 
   /**
@@ -530,6 +535,10 @@ export class b2World {
     if (this.IsLocked()) {
       throw lockedError('Step');
     }
+    if (this.m_backend !== null) {
+      this.m_backend.Step(dt, velocityIterations, positionIterations);
+      return;
+    }
 
     const stepTimer = this.m_stepTimer;
     stepTimer.Reset();
@@ -591,6 +600,66 @@ export class b2World {
     }
 
     this.m_profile.step = stepTimer.GetMilliseconds();
+  }
+
+  /**
+   * Not in the C++: Step, resolving once the world's objects show the step's result. On this
+   * engine that is at once; on a backend (SetBackend) after its read-back.
+   */
+  async StepAsync(dt: number, velocityIterations: number, positionIterations: number): Promise<void> {
+    if (this.m_backend !== null && !this.IsLocked()) {
+      return this.m_backend.StepAsync(dt, velocityIterations, positionIterations);
+    }
+    this.Step(dt, velocityIterations, positionIterations);
+  }
+
+  /**
+   * Not in the C++: resolves once the world's objects (positions, velocities, contacts and the
+   * contact listener's events) show every step taken so far; at once on this engine.
+   */
+  async Synchronize(): Promise<void> {
+    if (this.m_backend !== null) await this.m_backend.Synchronize();
+  }
+
+  /**
+   * Not in the C++: steps this world on another backend (webphysics/gpu's WebGPUBackend) from now
+   * on, or on this engine again with null. Attaching happens at once (the backend throws when it
+   * cannot step this world); detaching waits for the backend's steps and writes its state into
+   * the world, so the promise must be awaited before the next Step (Step throws until then). When
+   * detaching fails (a lost device) the promise rejects and the world is on this engine anyway.
+   */
+  async SetBackend(backend: b2WorldBackend | null): Promise<void> {
+    if (this.IsLocked()) {
+      throw lockedError('SetBackend');
+    }
+    if (this.m_backendSwitching) {
+      throw new Error('b2World.SetBackend: a backend switch is in progress; await the previous SetBackend first');
+    }
+    if (backend === this.m_backend) {
+      return;
+    }
+    this.m_backendSwitching = true;
+    try {
+      if (this.m_backend !== null) {
+        // A failed detach (the device lost) still leaves the world on this engine.
+        try {
+          await this.m_backend.Detach();
+        } finally {
+          this.m_backend = null;
+        }
+      }
+      if (backend !== null) {
+        backend.Attach(this, b2WorldBackendEngineFunctions);
+        this.m_backend = backend;
+      }
+    } finally {
+      this.m_backendSwitching = false;
+    }
+  }
+
+  /** Not in the C++: the backend set with SetBackend, or null when this engine steps the world. */
+  GetBackend(): b2WorldBackend | null {
+    return this.m_backend;
   }
 
   /**

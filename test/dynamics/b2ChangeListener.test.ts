@@ -15,13 +15,13 @@ class Recorder extends b2ChangeListener {
   constructor(private readonly names: Map<object, string>) {
     super();
   }
-  BodyChanged(body: b2Body, motion: boolean): void {
+  override BodyChanged(body: b2Body, motion: boolean): void {
     this.events.push(`body ${this.names.get(body)} ${motion ? 'motion' : 'state'}`);
   }
-  FixtureChanged(fixture: b2Fixture): void {
+  override FixtureChanged(fixture: b2Fixture): void {
     this.events.push(`fixture ${this.names.get(fixture)}`);
   }
-  StructureChanged(): void {
+  override StructureChanged(): void {
     this.events.push('structure');
   }
   take(): string[] {

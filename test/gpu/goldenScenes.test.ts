@@ -4,13 +4,16 @@
  * GPU pair set must equal the brute-force set of proxy pairs whose (GPU) AABBs overlap and that
  * pass Box2D's own pair rules (asked of the engine: b2Body::ShouldCollide, the contact registry,
  * the world's contact filter). The GPU AABBs must match the engine's b2Shape::ComputeAABB at the
- * body transform, extended by b2_aabbExtension, and every contact of the JavaScript world whose
- * shapes overlap at the current transforms (b2TestOverlap on the shapes) must be among the GPU pairs.
+ * start of the body's sweep and at its transform (united, as b2Fixture::Synchronize sweeps them),
+ * extended by b2_aabbExtension and by b2_aabbMultiplier x the sweep's displacement and x dt x v
+ * (bounds.wgsl's prediction), and every contact of the JavaScript world whose shapes overlap at the
+ * current transforms (b2TestOverlap on the shapes) must be among the GPU pairs.
  */
 
 import { expect, it } from 'vitest';
 import { b2AABB, b2TestOverlapShapes } from '../../src/collision/b2Collision';
-import { b2_aabbExtension } from '../../src/common/b2Settings';
+import { b2Transform } from '../../src/common/b2Math';
+import { b2_aabbExtension, b2_aabbMultiplier } from '../../src/common/b2Settings';
 import { b2Contact } from '../../src/dynamics/contacts/b2Contact';
 import { GpuBroadPhase } from '../../src-gpu/broadPhase';
 import { GpuWorld } from '../../src-gpu/world';
@@ -30,6 +33,8 @@ describeGpu('GPU broad phase on the golden scenes', (ctx) => {
       const world = scene.world;
       const mirror = new GpuWorld(ctx, world);
       const aabb = new b2AABB();
+      const start = new b2AABB();
+      const xf0 = new b2Transform();
       let step = 0;
       for (const target of STEPS) {
         while (step < target) {
@@ -42,7 +47,8 @@ describeGpu('GPU broad phase on the golden scenes', (ctx) => {
         const pairs = await broadPhase.readPairs();
         expect(pairs.length / 2).toBe(result.pairCount);
 
-        // The AABBs: the engine's, fattened, to float32 accuracy.
+        // The AABBs: the engine's, swept, fattened and predicted, to float32 accuracy.
+        const dt = world.m_inv_dt0 > 0 ? 1 / world.m_inv_dt0 : 0;
         for (let slot = 0; slot < mirror.proxySlotCount; ++slot) {
           const proxy = mirror.proxyAt(slot);
           if (!proxy) {
@@ -50,12 +56,22 @@ describeGpu('GPU broad phase on the golden scenes', (ctx) => {
             continue;
           }
           const f = proxy.fixture;
-          f.m_shape.ComputeAABB(aabb, f.m_body.m_xf, proxy.childIndex);
+          const body = f.m_body;
+          const sweep = body.m_sweep;
+          f.m_shape.ComputeAABB(aabb, body.m_xf, proxy.childIndex);
+          // b2Body::SynchronizeFixtures' xf1, the transform at the sweep's start, with the turn
+          // a0 - a the mirror's float32 angles give (a lever of metres turns the rounding of a
+          // large angle into micrometres).
+          xf0.q.Set(sweep.a + (Math.fround(sweep.a0) - Math.fround(sweep.a)));
+          xf0.p.Set(sweep.c0.x - (xf0.q.c * sweep.localCenter.x - xf0.q.s * sweep.localCenter.y), sweep.c0.y - (xf0.q.s * sweep.localCenter.x + xf0.q.c * sweep.localCenter.y));
+          f.m_shape.ComputeAABB(start, xf0, proxy.childIndex);
+          const d = [b2_aabbMultiplier * (body.m_xf.p.x - xf0.p.x), b2_aabbMultiplier * (body.m_xf.p.y - xf0.p.y)];
+          const e = [b2_aabbMultiplier * dt * body.m_linearVelocity.x, b2_aabbMultiplier * dt * body.m_linearVelocity.y];
           const expected = [
-            aabb.lowerBound.x - b2_aabbExtension,
-            aabb.lowerBound.y - b2_aabbExtension,
-            aabb.upperBound.x + b2_aabbExtension,
-            aabb.upperBound.y + b2_aabbExtension,
+            Math.min(aabb.lowerBound.x, start.lowerBound.x) - b2_aabbExtension + Math.min(d[0], e[0], 0),
+            Math.min(aabb.lowerBound.y, start.lowerBound.y) - b2_aabbExtension + Math.min(d[1], e[1], 0),
+            Math.max(aabb.upperBound.x, start.upperBound.x) + b2_aabbExtension + Math.max(d[0], e[0], 0),
+            Math.max(aabb.upperBound.y, start.upperBound.y) + b2_aabbExtension + Math.max(d[1], e[1], 0),
           ];
           for (let k = 0; k < 4; ++k) {
             const tolerance = 2e-6 * (1 + Math.abs(expected[k]));

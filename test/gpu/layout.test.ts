@@ -11,14 +11,19 @@ import { fileURLToPath } from 'node:url';
 import { expect, it } from 'vitest';
 import { b2ContactFeature, b2Manifold } from '../../src/collision/b2Collision';
 import {
+  b2_angularSlop,
   b2_baumgarte,
+  b2_maxAngularCorrection,
   b2_linearSlop,
   b2_maxLinearCorrection,
   b2_maxRotation,
   b2_maxTranslation,
   b2_polygonRadius,
   b2_velocityThreshold,
+  b2_pi,
 } from '../../src/common/b2Settings';
+import { b2JointType, b2LimitState } from '../../src/dynamics/joints/b2Joint';
+import { JOINT_PARAMS_VEC4, JOINT_VEC4 } from '../../src-gpu/solveJoints';
 import { b2Body, b2_dynamicBody, b2_staticBody } from '../../src/dynamics/b2Body';
 import * as layout from '../../src-gpu/layout';
 
@@ -124,6 +129,33 @@ it("declares the solver's state words, indirect offsets, colour cap and 2.2.1's 
   expect(s.get('E_CIRCLES')).toBe(b2Manifold.e_circles);
   expect(s.get('E_FACE_A')).toBe(b2Manifold.e_faceA);
   expect(s.get('E_FACE_B')).toBe(b2Manifold.e_faceB);
+});
+
+it("declares the joints' record sizes, b2JointType, b2LimitState and 2.2.1's angular constants as the host and the engine use them", () => {
+  const j = constants(wgsl('solveJointsCommon'));
+  expect(j.get('JOINT_VEC4')).toBe(JOINT_VEC4);
+  expect(j.get('JOINT_PARAMS_VEC4')).toBe(JOINT_PARAMS_VEC4);
+  const types: [string, number][] = [
+    ['REVOLUTE_JOINT', b2JointType.e_revoluteJoint],
+    ['PRISMATIC_JOINT', b2JointType.e_prismaticJoint],
+    ['DISTANCE_JOINT', b2JointType.e_distanceJoint],
+    ['PULLEY_JOINT', b2JointType.e_pulleyJoint],
+    ['MOUSE_JOINT', b2JointType.e_mouseJoint],
+    ['GEAR_JOINT', b2JointType.e_gearJoint],
+    ['WHEEL_JOINT', b2JointType.e_wheelJoint],
+    ['WELD_JOINT', b2JointType.e_weldJoint],
+    ['FRICTION_JOINT', b2JointType.e_frictionJoint],
+    ['ROPE_JOINT', b2JointType.e_ropeJoint],
+    ['INACTIVE_LIMIT', b2LimitState.e_inactiveLimit],
+    ['AT_LOWER_LIMIT', b2LimitState.e_atLowerLimit],
+    ['AT_UPPER_LIMIT', b2LimitState.e_atUpperLimit],
+    ['EQUAL_LIMITS', b2LimitState.e_equalLimits],
+  ];
+  for (const [name, value] of types) expect(j.get(name), name).toBe(value);
+  const f32 = (x: number) => Math.fround(x);
+  expect(f32(j.get('ANGULAR_SLOP')!)).toBe(f32(b2_angularSlop));
+  expect(f32(j.get('MAX_ANGULAR_CORRECTION')!)).toBe(f32(b2_maxAngularCorrection));
+  expect(f32(j.get('PI')!)).toBe(f32(b2_pi));
 });
 
 it('uses the tile sizes the host dispatches with', () => {

@@ -1,9 +1,12 @@
 /*
- * The GPU graph colouring (src-gpu/colour.ts) on a pyramid of boxes and on a plate carrying more
- * circles than there are colours: every solver contact gets exactly one colour or the overflow
- * set, no two contacts of a colour share a dynamic body, static bodies block nothing, the colour
- * lists are the contacts sorted by (colour, index), the overflow set is solved (not dropped), and
- * the colouring and the solved bodies are the same bits run to run.
+ * The GPU graph colouring (src-gpu/colour.ts) of joints and contacts together, on a pyramid of
+ * boxes, on a plate carrying more circles than there are colours, on a 10 x 10 joint grid with
+ * contacts, on gear joints (four bodies) and on a hub holding more joints than there are colours:
+ * every item (joint slot or solver contact) gets exactly one colour or the overflow set, no two
+ * items of a colour share a dynamic body, static bodies block nothing, the colour lists are the
+ * items sorted by (colour, item) (a colour's joints, then its contacts), the overflow set is solved
+ * (not dropped: contacts keep their circles on the plate, joints keep their lengths), and the
+ * colouring and the solved bodies are the same bits run to run.
  */
 
 import { expect, it } from 'vitest';
@@ -12,6 +15,12 @@ import { b2PolygonShape } from '../../src/collision/shapes/b2PolygonShape';
 import { b2Vec2 } from '../../src/common/b2Math';
 import { b2BodyDef, b2_dynamicBody } from '../../src/dynamics/b2Body';
 import { b2FixtureDef } from '../../src/dynamics/b2Fixture';
+import type { b2Body } from '../../src/dynamics/b2Body';
+import type { b2Joint } from '../../src/dynamics/joints/b2Joint';
+import { b2DistanceJointDef } from '../../src/dynamics/joints/b2DistanceJoint';
+import type { b2DistanceJoint } from '../../src/dynamics/joints/b2DistanceJoint';
+import { b2GearJointDef } from '../../src/dynamics/joints/b2GearJoint';
+import { b2RevoluteJointDef } from '../../src/dynamics/joints/b2RevoluteJoint';
 import { b2World } from '../../src/dynamics/b2World';
 import { COLOUR_CAP } from '../../src-gpu/layout';
 import { GpuStepper } from '../../src-gpu/stepper';
@@ -70,14 +79,134 @@ function crowdedPlate(n: number): b2World {
   return world;
 }
 
+/**
+ * Joints and contacts on the same bodies: a revolute chain of 12 boxes lying on the ground (each
+ * box: two joints and its ground contact), and two gears (four bodies each: their discs and the
+ * discs' revolute joints to a dynamic carrier hung from the ground).
+ */
+function jointsAndContacts(): b2World {
+  const world = new b2World(new b2Vec2(0, -10));
+  world.SetAllowSleeping(false);
+  ground(world);
+  const groundBody = world.m_bodyList!;
+  const shape = new b2PolygonShape();
+  shape.SetAsBox(0.5, 0.25);
+  let previous: b2Body | null = null;
+  for (let i = 0; i < 12; ++i) {
+    const def = new b2BodyDef();
+    def.type = b2_dynamicBody;
+    def.position.Set(-6 + i, 0.25);
+    const body = world.CreateBody(def);
+    body.CreateFixture(shape, 1);
+    if (previous) {
+      const jd = new b2RevoluteJointDef();
+      jd.Initialize(previous, body, new b2Vec2(-6.5 + i, 0.25));
+      world.CreateJoint(jd);
+    }
+    previous = body;
+  }
+  const carrierDef = new b2BodyDef();
+  carrierDef.type = b2_dynamicBody;
+  carrierDef.position.Set(0, 8);
+  const carrier = world.CreateBody(carrierDef);
+  const plank = new b2PolygonShape();
+  plank.SetAsBox(3, 0.1);
+  carrier.CreateFixture(plank, 1);
+  const hang = new b2RevoluteJointDef();
+  hang.Initialize(groundBody, carrier, new b2Vec2(0, 8));
+  world.CreateJoint(hang);
+  const circle = new b2CircleShape();
+  circle.m_radius = 0.5;
+  for (const x of [-2, 2]) {
+    const discs: b2Joint[] = [];
+    for (const dx of [-0.5, 0.5]) {
+      const def = new b2BodyDef();
+      def.type = b2_dynamicBody;
+      def.position.Set(x + dx, 9);
+      const fd = new b2FixtureDef();
+      fd.shape = circle;
+      fd.density = 1;
+      fd.filter.groupIndex = -1;
+      const disc = world.CreateBody(def);
+      disc.CreateFixture(fd);
+      const jd = new b2RevoluteJointDef();
+      jd.Initialize(carrier, disc, disc.GetPosition());
+      discs.push(world.CreateJoint(jd));
+    }
+    const gear = new b2GearJointDef();
+    gear.bodyA = discs[0].m_bodyB;
+    gear.bodyB = discs[1].m_bodyB;
+    gear.joint1 = discs[0];
+    gear.joint2 = discs[1];
+    gear.ratio = 2;
+    world.CreateJoint(gear);
+  }
+  return world;
+}
+
+/** A dynamic hub hung from the ground with `n` balls on distance joints around it: n + 1 joints on one body. */
+function hub(n: number): b2World {
+  const world = new b2World(new b2Vec2(0, -10));
+  world.SetAllowSleeping(false);
+  ground(world);
+  const groundBody = world.m_bodyList!;
+  const hubDef = new b2BodyDef();
+  hubDef.type = b2_dynamicBody;
+  hubDef.position.Set(0, 10);
+  const centre = world.CreateBody(hubDef);
+  const core = new b2CircleShape();
+  core.m_radius = 0.5;
+  centre.CreateFixture(core, 5);
+  const pin = new b2RevoluteJointDef();
+  pin.Initialize(groundBody, centre, new b2Vec2(0, 10));
+  world.CreateJoint(pin);
+  const ball = new b2CircleShape();
+  ball.m_radius = 0.1;
+  for (let i = 0; i < n; ++i) {
+    const angle = (2 * Math.PI * i) / n;
+    const def = new b2BodyDef();
+    def.type = b2_dynamicBody;
+    def.position.Set(3 * Math.cos(angle), 10 + 3 * Math.sin(angle));
+    const fd = new b2FixtureDef();
+    fd.shape = ball;
+    fd.density = 1;
+    fd.filter.groupIndex = -1;
+    const body = world.CreateBody(def);
+    body.CreateFixture(fd);
+    const jd = new b2DistanceJointDef();
+    jd.Initialize(centre, body, centre.GetPosition(), body.GetPosition());
+    world.CreateJoint(jd);
+  }
+  return world;
+}
+
 interface Colouring {
+  /** Joint slots: items 0 .. joints - 1; solver contact k is item joints + k. */
+  joints: number;
   colours: Uint32Array;
   bodies: Uint32Array;
+  jointBodies: Uint32Array;
   keys: Uint32Array;
   colourStart: number[];
 }
 
-function checkColouring(c: Colouring, label: string): { overflow: number; sharedStatic: boolean; used: number } {
+/** An item's bodies, each with whether it is dynamic (written by the solver). */
+function itemBodies(c: Colouring, item: number): [number, boolean][] {
+  if (item < c.joints) {
+    const mask = c.jointBodies[8 * item + 5];
+    const out: [number, boolean][] = [];
+    for (let n = 0; n < 4; ++n) if (c.jointBodies[8 * item + n] !== 0xffffffff) out.push([c.jointBodies[8 * item + n], (mask & (1 << n)) !== 0]);
+    return out;
+  }
+  const k = item - c.joints;
+  const flags = c.bodies[4 * k + 2];
+  return [
+    [c.bodies[4 * k], (flags & CB_DYNAMIC_A) !== 0],
+    [c.bodies[4 * k + 1], (flags & CB_DYNAMIC_B) !== 0],
+  ];
+}
+
+function checkColouring(c: Colouring, label: string): { overflow: number; overflowJoints: number; sharedStatic: boolean; used: number } {
   const n = c.colours.length;
   // Exactly one colour (or the overflow set) per contact.
   for (let k = 0; k < n; ++k) expect(c.colours[k], `${label}: contact ${k}`).toBeLessThanOrEqual(COLOUR_CAP);
@@ -99,7 +228,7 @@ function checkColouring(c: Colouring, label: string): { overflow: number; shared
     while (first < n && c.keys[2 * first] < colour) first++;
     expect(c.colourStart[colour], `${label}: start of colour ${colour}`).toBe(first);
   }
-  // No two contacts of one colour share a dynamic body; static ones may be shared.
+  // No two items of one colour share a dynamic body; static ones may be shared.
   let sharedStatic = false;
   let used = 0;
   for (let colour = 0; colour < COLOUR_CAP; ++colour) {
@@ -109,14 +238,11 @@ function checkColouring(c: Colouring, label: string): { overflow: number; shared
     for (let k = 0; k < n; ++k) {
       if (c.colours[k] !== colour) continue;
       size++;
-      const flags = c.bodies[4 * k + 2];
-      for (const [body, dynamic] of [
-        [c.bodies[4 * k], (flags & CB_DYNAMIC_A) !== 0],
-        [c.bodies[4 * k + 1], (flags & CB_DYNAMIC_B) !== 0],
-      ] as [number, boolean][]) {
+      // A gear may name one body twice (its C and D): one item, one writer.
+      for (const [body, dynamic] of itemBodies(c, k)) {
         if (dynamic) {
           const other = dynamicOwner.get(body);
-          if (other !== undefined) throw new Error(`${label}: contacts ${other} and ${k} of colour ${colour} share dynamic body ${body}`);
+          if (other !== undefined && other !== k) throw new Error(`${label}: items ${other} and ${k} of colour ${colour} share dynamic body ${body}`);
           dynamicOwner.set(body, k);
         } else {
           staticUsers.set(body, (staticUsers.get(body) ?? 0) + 1);
@@ -127,8 +253,13 @@ function checkColouring(c: Colouring, label: string): { overflow: number; shared
     for (const count of staticUsers.values()) if (count > 1) sharedStatic = true;
   }
   let overflow = 0;
-  for (let k = 0; k < n; ++k) if (c.colours[k] === COLOUR_CAP) overflow++;
-  return { overflow, sharedStatic, used };
+  let overflowJoints = 0;
+  for (let k = 0; k < n; ++k) {
+    if (c.colours[k] !== COLOUR_CAP) continue;
+    overflow++;
+    if (k < c.joints) overflowJoints++;
+  }
+  return { overflow, overflowJoints, sharedStatic, used };
 }
 
 async function colouringAfter(ctx: Parameters<Parameters<typeof describeGpu>[1]>[0], build: () => b2World, steps: number) {
@@ -140,7 +271,7 @@ async function colouringAfter(ctx: Parameters<Parameters<typeof describeGpu>[1]>
   const state: number[] = [];
   for (let b = world.m_bodyList; b; b = b.m_next) state.push(b.m_xf.p.x, b.m_xf.p.y, b.m_sweep.a, b.m_linearVelocity.x, b.m_linearVelocity.y, b.m_angularVelocity);
   stepper.destroy();
-  return { colouring: { colours: c.colours, bodies: c.bodies, keys: c.keys, colourStart: c.state.colourStart }, state, world };
+  return { colouring: { joints: c.joints, colours: c.colours, bodies: c.bodies, jointBodies: c.jointBodies, keys: c.keys, colourStart: c.state.colourStart }, state, world };
 }
 
 describeGpu('GPU solver: graph colouring', (ctx) => {
@@ -173,13 +304,59 @@ describeGpu('GPU solver: graph colouring', (ctx) => {
       expect(Math.abs(b.m_xf.p.y - (plateY + 0.25 + 0.2))).toBeLessThan(0.006);
     }
     expect(circles).toBe(n);
-  });
+  }, 600_000);
 
-  it('gives the same colours, lists and solved bodies, bit for bit, run to run', async () => {
+  it('colours joints with the contacts: a chain lying on the ground and gears (four bodies) share no dynamic body in a colour', async () => {
+    const { colouring } = await colouringAfter(ctx, jointsAndContacts, 10);
+    const r = checkColouring(colouring, 'joints and contacts');
+    // 11 chain joints + 1 hanger + 4 disc revolutes + 2 gears.
+    expect(colouring.joints).toBe(18);
+    expect(colouring.colours.length - colouring.joints).toBeGreaterThanOrEqual(12);
+    console.log(`joints and contacts: ${colouring.joints} joints, ${colouring.colours.length - colouring.joints} contacts, ${r.used} colours, ${r.overflow} in the overflow set`);
+    expect(r.overflow).toBe(0);
+    // Colours mix joints and contacts (the lists put a colour's joints first).
+    let mixed = false;
+    for (let colour = 0; colour < COLOUR_CAP; ++colour) {
+      let j = 0;
+      let k = 0;
+      colouring.colours.forEach((c, item) => {
+        if (c === colour) item < colouring.joints ? j++ : k++;
+      });
+      mixed ||= j > 0 && k > 0;
+    }
+    expect(mixed).toBe(true);
+  }, 600_000);
+
+  it('puts joints the colour cap cannot hold in the overflow set and solves them: 40 distance joints on one hub keep their lengths', async () => {
+    const n = 40;
+    const { colouring, world } = await colouringAfter(ctx, () => hub(n), 30);
+    const r = checkColouring(colouring, 'hub');
+    console.log(`hub: ${colouring.joints} joints, ${r.used} colours, ${r.overflowJoints} joints in the overflow set`);
+    // n + 1 joints share the hub: at most one per colour.
+    expect(r.overflowJoints).toBeGreaterThanOrEqual(n + 1 - COLOUR_CAP);
+    // Solved, not dropped: after half a second of swinging under gravity every ball is at its rest
+    // length from the hub within 1 cm (a dropped joint lets its ball fall freely: 1.2 m).
+    let worst = 0;
+    for (let j = world.m_jointList; j; j = j.m_next) {
+      if (j.m_type !== 3) continue;
+      const a = j.GetAnchorA(new b2Vec2());
+      const b = j.GetAnchorB(new b2Vec2());
+      worst = Math.max(worst, Math.abs(Math.hypot(a.x - b.x, a.y - b.y) - (j as b2DistanceJoint).m_length));
+    }
+    console.log(`hub: largest length error ${worst.toExponential(2)} m`);
+    expect(worst).toBeLessThan(0.01);
+  }, 600_000);
+
+  it('gives the same colours, lists and solved bodies, bit for bit, run to run (contacts, and joints with contacts)', async () => {
+    const jointsFirst = await colouringAfter(ctx, jointsAndContacts, 10);
+    const jointsSecond = await colouringAfter(ctx, jointsAndContacts, 10);
+    expect(Array.from(jointsSecond.colouring.colours)).toEqual(Array.from(jointsFirst.colouring.colours));
+    expect(Array.from(jointsSecond.colouring.keys)).toEqual(Array.from(jointsFirst.colouring.keys));
+    expect(jointsSecond.state).toEqual(jointsFirst.state);
     const first = await colouringAfter(ctx, () => pyramid(10), 20);
     const second = await colouringAfter(ctx, () => pyramid(10), 20);
     expect(Array.from(second.colouring.colours)).toEqual(Array.from(first.colouring.colours));
     expect(Array.from(second.colouring.keys)).toEqual(Array.from(first.colouring.keys));
     expect(second.state).toEqual(first.state);
-  });
+  }, 600_000);
 });

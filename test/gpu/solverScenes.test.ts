@@ -179,10 +179,12 @@ describeGpu('GPU solver: stacks and pyramids against the engine', (ctx) => {
     it(`${name}: after ${c.steps} GPU steps the bodies rest where the engine's do, without deeper penetration or growing energy`, async () => {
       const js = c.build();
       const gpu = c.build();
-      // The GPU has neither sleeping nor continuous collision yet: the engine runs without them
-      // (a sleeping body keeps the penetration it had).
-      js.world.SetAllowSleeping(false);
-      js.world.SetContinuousPhysics(false);
+      // Both without sleeping (a sleeping body keeps the penetration it had, and float32 puts
+      // bodies to sleep a few steps apart) and without continuous collision.
+      for (const w of [js.world, gpu.world]) {
+        w.SetAllowSleeping(false);
+        w.SetContinuousPhysics(false);
+      }
       const settings = gpu.stepSettings;
       const dt = 1 / settings.stepsPerSecond;
       const stepper = new GpuStepper(ctx, gpu.world);
@@ -283,8 +285,10 @@ describeGpu('GPU solver: golden scenes in motion against the engine', (ctx) => {
     it(`${name}: every body within ${MOTION_TOLERANCE} m of the engine's at steps ${MOTION_CHECKPOINTS.join(', ')}`, async () => {
       const js = loadGoldenScene(name);
       const gpu = loadGoldenScene(name);
-      js.world.SetAllowSleeping(false);
-      js.world.SetContinuousPhysics(false);
+      for (const w of [js.world, gpu.world]) {
+        w.SetAllowSleeping(false);
+        w.SetContinuousPhysics(false);
+      }
       const settings = gpu.stepSettings;
       const stepper = new GpuStepper(ctx, gpu.world);
       const worst: number[] = [];

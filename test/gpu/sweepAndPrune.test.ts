@@ -7,6 +7,7 @@
 import { expect, it } from 'vitest';
 import { GpuBroadPhase } from '../../src-gpu/broadPhase';
 import { requestGpu } from '../../src-gpu/device';
+import { MAX_STRIPS } from '../../src-gpu/layout';
 import { GpuProxySet } from '../../src-gpu/proxies';
 import type { RawProxies } from '../../src-gpu/proxies';
 import { bruteForcePairs, expectSamePairs, sweepPairs } from './reference';
@@ -73,6 +74,28 @@ describeGpu('sweep-and-prune on AABB sets', (ctx) => {
   it('finds exactly the overlapping pairs of 100 000 AABBs of mixed sizes', async () => {
     const aabbs = randomAABBs(100_000, 600, mixed, 3);
     expectSamePairs(await gpuPairs({ aabbs }), sweepPairs(aabbs), 'mixed 1e5');
+  });
+
+  it('finds exactly the overlapping pairs with the coarsest keys (4096 strips: 12 quantisation bits) and many tied lower bounds', async () => {
+    // Keys are KEY_BITS = 24 bits: with 4096 strips (12 bits) the sweep axis keeps 12 bits, cells
+    // of 8000 m / 4096 = 1.95 m. Rows of 10 boxes 3 cm apart, each 4 cm wide, fall in one cell
+    // (equal keys) and overlap their neighbours; the exact test must keep those pairs and only those.
+    const n = 140_000;
+    const aabbs = randomAABBs(n, 8000, () => 0.005, 14);
+    const r = rng(15);
+    for (let row = 0; row < 2000; ++row) {
+      const x0 = (r() - 0.5) * 7900;
+      const y0 = (r() - 0.5) * 7900;
+      for (let j = 0; j < 10; ++j) aabbs.set([x0 + 0.03 * j - 0.02, y0 - 0.02, x0 + 0.03 * j + 0.02, y0 + 0.02], 4 * (10 * row + j));
+    }
+    proxies.set({ aabbs });
+    const result = await broadPhase.update(proxies);
+    expect(result.strips).toBe(MAX_STRIPS);
+    const pairs = await broadPhase.readPairs();
+    expect(isSortedUnique(pairs)).toBe(true);
+    const expected = sweepPairs(aabbs);
+    expect(expected.length / 2).toBeGreaterThanOrEqual(2000 * 9);
+    expectSamePairs(pairs, expected, 'coarse keys');
   });
 
   it('handles tiny AABBs among a few that span the whole set', async () => {

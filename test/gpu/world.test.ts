@@ -191,6 +191,49 @@ describeGpu('GpuWorld: the world mirrored on the GPU', (ctx) => {
     mirror.destroy();
   });
 
+  it('once the GPU owns the motion, uploads only what the API changed (b2ChangeListener), and everything after a structural change', () => {
+    const world = new b2World(new b2Vec2(0, -10));
+    const bodies = Array.from({ length: 50 }, (_, i) => box(world, (i % 10) * 2, Math.floor(i / 10) * 2));
+    const mirror = new GpuWorld(ctx, world);
+    mirror.sync();
+    mirror.gpuOwnsMotion = true;
+    expect(mirror.sync().upload.elements).toBe(0);
+
+    // A force: the body's force record only; its motion stays the GPU's.
+    bodies[3].ApplyForceToCenter(new b2Vec2(5, 0));
+    const forced = mirror.sync();
+    expect(forced.upload.elements).toBe(1);
+    expect(mirror.bodyForce.f32[4 * mirror.bodySlot(bodies[3])]).toBe(5);
+
+    // clearForces (b2World::ClearForces for the stepper) zeroes it in the world and on the GPU.
+    mirror.clearForces();
+    expect(bodies[3].m_force.x).toBe(0);
+    expect(mirror.sync().upload.elements).toBe(1);
+    expect(mirror.bodyForce.f32[4 * mirror.bodySlot(bodies[3])]).toBe(0);
+
+    // A velocity set through the API overrides the GPU's motion for that body: cell, xf, sweep, velocity.
+    bodies[7].SetLinearVelocity(new b2Vec2(0, 3));
+    const moved = mirror.sync();
+    expect(moved.upload.elements).toBe(4);
+    expect(mirror.bodyVel.f32[4 * mirror.bodySlot(bodies[7]) + 1]).toBe(3);
+
+    // A fixture's material.
+    bodies[9].GetFixtureList()!.SetFriction(0.25);
+    expect(mirror.sync().upload.elements).toBe(1);
+    expect(mirror.fixtureMaterial.f32[4 * mirror.fixtureSlot(bodies[9].GetFixtureList()!)]).toBe(0.25);
+
+    // A field written directly is not reported, so not seen until the next structural change.
+    bodies[11].m_linearDamping = 0.5;
+    expect(mirror.sync().upload.elements).toBe(0);
+    const added = box(world, 100, 0);
+    const full = mirror.sync();
+    expect(full.bodies.created).toBe(1);
+    expect(mirror.bodyParams.f32[4 * mirror.bodySlot(bodies[11])]).toBe(0.5);
+    expect(mirror.bodySlot(added)).toBeGreaterThanOrEqual(0);
+    mirror.destroy();
+    expect(world.m_changeListener).toBeNull();
+  });
+
   it('holds on the GPU what the engine holds: transforms, cells, shapes, filters, joints', async () => {
     const world = new b2World(new b2Vec2(0, -10));
     const a = box(world, 1.5, 2.25);
