@@ -182,7 +182,7 @@ function syntheticWorld(bodies: Body[]): b2World {
     body.m_fixtureList = next;
     head = body;
   }
-  return { m_bodyList: head, m_jointList: null, m_contactManager: { m_contactFilter: null, m_contactList: null } } as unknown as b2World;
+  return { m_bodyList: head, m_jointList: null, m_contactManager: { m_contactFilter: null, m_contactList: null }, SetChangeListener: () => {} } as unknown as b2World;
 }
 
 // Moves and turns every dynamic body (static ones have zero velocity): p += v dt, q *= rot(w dt),

@@ -10,10 +10,11 @@
  *      and the sleep time back into the world's b2Body objects with one map.
  * Authority: from the first step the GPU's copy of the body motion is the one that counts
  * (GpuWorld.gpuOwnsMotion): the world's bodies keep their old positions and velocities until
- * readBodies(), and setting them in JavaScript (SetTransform, SetLinearVelocity) is not seen by the
- * GPU, except for bodies created after that. Everything else still flows from the world at each
- * step: bodies and fixtures created or destroyed, masses, forces (cleared after each step when the
- * world auto-clears them, as b2World::Step does), damping, gravity, materials.
+ * readBodies(). Motion set through the API (SetTransform, SetLinearVelocity, impulses) replaces the
+ * GPU's for that body at the next step (GpuWorld's change log, b2ChangeListener), computed from the
+ * state the body had in JavaScript: read back first. Everything else still flows from the world at
+ * each step: bodies and fixtures created or destroyed, masses, forces (cleared after each step when
+ * the world auto-clears them, as b2World::Step does), damping, gravity, materials.
  * Handing over a running world: the constructor takes the world's contacts and their impulses as
  * the previous step's (GpuNarrowPhase.seedFromWorld) and its 1 / dt of the last step, so the first
  * GPU step warm-starts as the engine's next step would.
