@@ -142,11 +142,17 @@ fn main(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: vec
   let d = AABB_MULTIPLIER * displacement;
   let e = AABB_MULTIPLIER * params.predictTime * bodyVel[body].xy;
 
-  // The cell offset first (exact when it cancels the local coordinate), then the small terms
-  // together: no rounding at the magnitude of the local coordinate beyond the vertices' own.
+  // Where the world coordinate is larger than the local one, the margins go on in local
+  // coordinates and the cell offset last (one rounding at the world's magnitude); where the cell
+  // offset cancels the local coordinate (a body near the origin in a cell beside it), the offset
+  // goes first, exactly, and the margins after (roundings at the small result's magnitude).
   let margin = vec2<f32>(r + params.extension);
   let below = margin - min(min(d, e), vec2<f32>(0.0));
   let above = margin + max(max(d, e), vec2<f32>(0.0));
   let base = vec2<f32>(bodyCell[body] - params.originCell) * params.cellSize;
-  proxyAABB[p] = vec4<f32>((base + box.xy) - below, (base + box.zw) + above);
+  let worldLower = base + box.xy;
+  let worldUpper = base + box.zw;
+  let lower = select(worldLower - below, base + (box.xy - below), abs(box.xy) < abs(worldLower));
+  let upper = select(worldUpper + above, base + (box.zw + above), abs(box.zw) < abs(worldUpper));
+  proxyAABB[p] = vec4<f32>(lower, upper);
 }
