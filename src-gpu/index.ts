@@ -18,7 +18,7 @@
  *   await world.Synchronize();          // positions, velocities, contact events
  *   await world.SetBackend(null);       // back to the JavaScript engine, contacts and impulses kept
  *
- * Stepping on the GPU (contacts, revolute and distance joints; sleeping; no continuous collision yet):
+ * Stepping on the GPU (contacts, the ten joint types; sleeping; no continuous collision yet):
  *   const stepper = new GpuStepper(gpu, world);
  *   await stepper.step(1 / 60, 8, 3);   // broad phase, narrow phase and solver, one submission
  *   await stepper.readBodies();         // positions and velocities back into world's bodies

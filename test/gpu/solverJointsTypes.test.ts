@@ -4,14 +4,15 @@
  * JavaScript engine: the same world built twice, one stepped by the engine, one by GpuStepper,
  * for STEPS steps (parameters changed from JavaScript mid-run where the joint has any: motor
  * speeds, limits, the mouse target). Each scene checks:
- *   - its constraint error on the GPU (the quantity the joint holds: perpendicular offset for
- *     prismatic and wheel, length sum for the pulley, the gear relation, the rope's excess length,
- *     a weld's anchor gap and angle, limits) against the engine's at the same step: at most the
- *     engine's + ERROR_SLACK (float32 and the per-colour Gauss-Seidel order; measured values in
- *     each scene's comment);
- *   - the jointed bodies' positions (m, rad) within the scene's `position` of the engine's: float32
- *     rounding compounded over STEPS steps, larger where contacts or a chaotic motion amplify it
- *     (stated per scene, with the measured value);
+ *   - its constraint error on the GPU (the quantity the joint holds: perpendicular offset and
+ *     angle for prismatic, axis offset for wheel, the pulley's length sum, the gear relation, the
+ *     rope's excess length, a weld's anchor gap and angle, limits; the largest over the world's
+ *     joints) against the engine's at the same step, every 10 steps: at most ERROR_SLACK + the
+ *     engine's largest of the run above it (float32 and the per-colour Gauss-Seidel order; see
+ *     ERROR_SLACK);
+ *   - every body's position (m, rad) within the scene's `position` of the engine's: float32
+ *     rounding compounded over STEPS steps, larger where rolling contacts amplify it (stated per
+ *     scene, with the measured value);
  *   - where there is no constraint to hold (mouse, friction), the motion itself: the body reaches
  *     the target / slows down as the engine's does.
  * Warm starting: after one step from rest, and after a second, every joint's accumulated
@@ -61,8 +62,8 @@ const STEPS = 60;
  * Constraint error allowed above the engine's at the same step (m or rad): ERROR_SLACK + the
  * engine's largest error of the run. Where joints share bodies (a chain) the colours sweep them
  * in another order than the island, which converges to another, equally valid error of the
- * engine's size within 8 iterations (measured: rope chain 2.5e-3 above the engine's 2.8e-3; the
- * single joints at most 1.6e-4).
+ * engine's size within 8 iterations (measured: rope chain 2.2e-3 above the engine's 2.5e-3; the
+ * others at most 1.6e-4).
  */
 const ERROR_SLACK = 2e-3;
 /**
@@ -70,8 +71,8 @@ const ERROR_SLACK = 2e-3;
  * differs by the impulse itself (relative 0.4 to 1 in these scenes); joints sharing bodies differ
  * by the order in which the colours sweep them (2.2.1's island puts a gear before its joints, the
  * colours may not): measured after step 2 1.8e-2 for the rack-and-pinion gear (0.397 against the
- * engine's 0.416, its motor equal to 1e-7), 5.4e-3 for the rope chain, 3.8e-3 for three welds in
- * series; at most 4e-5 for the others, and at most 7.2e-3 after step 1.
+ * engine's 0.416, its motor equal to 1e-7), 3.8e-3 for three welds in series, 1.6e-3 for the rope
+ * chain; at most 4e-5 for the others, and at most 7.2e-3 after step 1.
  */
 const IMPULSE_TOLERANCE = 5e-2;
 
@@ -485,7 +486,7 @@ const SCENES: Record<string, Scene> = {
       world.CreateJoint(rope);
       return world;
     },
-    // A swinging chain in colour order: the difference grows over the swing (measured 1.0e-2).
+    // A swinging chain in colour order: the difference grows over the swing (measured 2.7e-3).
     position: 3e-2,
   },
 };
@@ -555,6 +556,8 @@ describeGpu('GPU solver: prismatic, pulley, mouse, gear, wheel, weld, friction a
       if (anchorGap(rope(world)) > (rope(world) as b2RopeJoint).m_maxLength - b2_linearSlop) taut++;
     }
     stepper.destroy();
+    // Measured: GPU 2.4e-3 m, the engine's own 1.0e-2 m (the engine is not asserted: its rope
+    // overshoots by 2 slops when the heavy chain is caught); taut in 51 steps.
     console.log(`rope: largest excess length GPU ${excess.toExponential(2)} m, engine ${engineExcess.toExponential(2)} m; taut in ${taut} of 90 steps`);
     expect(taut).toBeGreaterThan(10);
     expect(excess).toBeLessThan(b2_linearSlop);
