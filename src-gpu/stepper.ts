@@ -7,7 +7,8 @@
  * In:  a b2World built with the normal API; step(dt, velocityIterations, positionIterations).
  * Out: the bodies' motion on the GPU (GpuWorld's bodyXf, bodyCell, bodySweep, bodyVel), contacts
  *      and impulses in the narrow phase's buffers; readBodies() copies the motion, the awake flag
- *      and the sleep time back into the world's b2Body objects with one map.
+ *      and the sleep time back into the world's b2Body objects, and the joints' impulses and limit
+ *      states into its b2Joint objects, with one map.
  * Authority: from the first step the GPU's copy of the body motion is the one that counts
  * (GpuWorld.gpuOwnsMotion): the world's bodies keep their old positions and velocities until
  * readBodies(). Motion set through the API (SetTransform, SetLinearVelocity, impulses) replaces the
@@ -22,8 +23,7 @@
  * Sleeping: islands and sleep timers on the GPU (islands.ts); the awake flag is GPU-owned like the
  * motion, and SetAwake from JavaScript reaches the GPU by GpuWorld's rule (its header).
  * Not yet (docs/GPU.md, "The solver"): 2.2.1's TOI island solve and sub-steps (a body is stopped at
- * its time of impact and the next step solves the contact); readBodies() does not write joint
- * impulses back. Contact listeners: WebGPUBackend
+ * its time of impact and the next step solves the contact). Contact listeners: WebGPUBackend
  * (backend.ts) reads events and contacts in readBodies()'s map and delivers them after the step.
  */
 
@@ -65,6 +65,8 @@ const e_clearForces = 0x0004;
 const e_awakeFlag = 0x0002;
 /** Bytes per body slot in readBodies()'s staging buffer: xf 16, cell 8, sweep 32, velocity 16, awake 4. */
 const BODY_READ_BYTES = 76;
+/** Bytes per joint slot read back with the bodies: jointState, impulses and limit state. */
+const JOINT_STATE_BYTES = 32;
 
 export class GpuStepper {
   readonly ctx: GpuContext;
@@ -133,7 +135,8 @@ export class GpuStepper {
     ctx.assertAlive();
     const mirror = this.mirror;
     const n = mirror.bodySlotCount;
-    let bytes = BODY_READ_BYTES * n;
+    const joints = mirror.jointSlotCount;
+    let bytes = BODY_READ_BYTES * n + JOINT_STATE_BYTES * joints;
     for (const r of extras) bytes += r.size;
     if (bytes === 0) return 0;
     if (this.staging === null || this.stagingBytes < bytes) {
@@ -148,7 +151,8 @@ export class GpuStepper {
     encoder.copyBufferToBuffer(mirror.bodySweep.buffer, 0, staging, 24 * n, 32 * n);
     encoder.copyBufferToBuffer(mirror.bodyVel.buffer, 0, staging, 56 * n, 16 * n);
     encoder.copyBufferToBuffer(mirror.bodyAwake.buffer, 0, staging, 72 * n, 4 * n);
-    let at = BODY_READ_BYTES * n;
+    if (joints > 0) encoder.copyBufferToBuffer(mirror.jointState.buffer, 0, staging, BODY_READ_BYTES * n, JOINT_STATE_BYTES * joints);
+    let at = BODY_READ_BYTES * n + JOINT_STATE_BYTES * joints;
     for (const r of extras) {
       if (r.size > 0) encoder.copyBufferToBuffer(r.buffer, r.offset, staging, at, r.size);
       at += r.size;
@@ -161,7 +165,8 @@ export class GpuStepper {
       throw new Error('reading the bodies back from the GPU failed');
     }
     const mapped = staging.getMappedRange(0, bytes);
-    at = BODY_READ_BYTES * n;
+    mirror.unpackJointStates(new Float32Array(mapped, BODY_READ_BYTES * n, (JOINT_STATE_BYTES / 4) * joints));
+    at = BODY_READ_BYTES * n + JOINT_STATE_BYTES * joints;
     for (const r of extras) {
       r.data = mapped.slice(at, at + r.size);
       at += r.size;

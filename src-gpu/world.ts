@@ -832,6 +832,65 @@ export class GpuWorld {
   }
 
   /**
+   * The GPU's joint state (jointState words, 8 per joint slot, as read back) into the joints'
+   * impulses and limit states, the inverse of packJoint's state words: so that the engine's next
+   * step warm-starts the joints from the GPU's impulses. The shadow takes the same words.
+   */
+  unpackJointStates(state: Float32Array): void {
+    const n = Math.min(this.jointSlotCount, state.length >> 3);
+    this.jointState.f32.set(state.subarray(0, 8 * n));
+    for (let slot = 0; slot < n; ++slot) {
+      const j = this.jointAt(slot);
+      if (j === null) continue;
+      const s = 8 * slot;
+      switch (j.m_type) {
+        case e_revoluteJoint:
+        case e_prismaticJoint: {
+          const r = j as b2RevoluteJoint | b2PrismaticJoint;
+          r.m_impulse.Set(state[s], state[s + 1], state[s + 2]);
+          r.m_motorImpulse = state[s + 3];
+          r.m_limitState = state[s + 4];
+          break;
+        }
+        case e_distanceJoint:
+          (j as b2DistanceJoint).m_impulse = state[s];
+          break;
+        case e_pulleyJoint:
+          (j as b2PulleyJoint).m_impulse = state[s];
+          break;
+        case e_mouseJoint:
+          (j as b2MouseJoint).m_impulse.Set(state[s], state[s + 1]);
+          break;
+        case e_gearJoint:
+          (j as b2GearJoint).m_impulse = state[s];
+          break;
+        case e_wheelJoint: {
+          const w = j as b2WheelJoint;
+          w.m_impulse = state[s];
+          w.m_springImpulse = state[s + 1];
+          w.m_motorImpulse = state[s + 2];
+          break;
+        }
+        case e_weldJoint:
+          (j as b2WeldJoint).m_impulse.Set(state[s], state[s + 1], state[s + 2]);
+          break;
+        case e_frictionJoint: {
+          const f = j as b2FrictionJoint;
+          f.m_linearImpulse.Set(state[s], state[s + 1]);
+          f.m_angularImpulse = state[s + 2];
+          break;
+        }
+        case e_ropeJoint: {
+          const r = j as b2RopeJoint;
+          r.m_impulse = state[s];
+          r.m_state = state[s + 4];
+          break;
+        }
+      }
+    }
+  }
+
+  /**
    * A world point into jointParams' scratch record as bodies are held: its cell (i32 words at
    * `cellAt`) and the float32 offset in it (at `offsetAt`), so a stage takes it into any body's cell.
    */

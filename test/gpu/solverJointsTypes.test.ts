@@ -538,6 +538,26 @@ describeGpu('GPU solver: prismatic, pulley, mouse, gear, wheel, weld, friction a
     }
   }, 600_000);
 
+  it("readBodies() writes every type's impulses back into the engine's joints (the warm start a switch back to JavaScript needs)", async () => {
+    for (const [name, scene] of Object.entries(SCENES)) {
+      const gpu = scene.build();
+      const stepper = new GpuStepper(ctx, gpu);
+      for (let i = 0; i < 3; ++i) await stepper.step(DT, 8, 3);
+      await stepper.readBodies();
+      const state = await readJointState(ctx, stepper);
+      let nonZero = 0;
+      for (const j of joints(gpu)) {
+        const slot = stepper.mirror.jointSlot(j);
+        engineImpulses(j).forEach((value, w) => {
+          expect(value, `${name} joint ${slot} word ${w}`).toBe(state[8 * slot + w]);
+          if (value !== 0) nonZero++;
+        });
+      }
+      stepper.destroy();
+      expect(nonZero, name).toBeGreaterThan(0);
+    }
+  }, 600_000);
+
   it('keeps a rope within its length: never longer than maxLength + b2_linearSlop', async () => {
     const build = SCENES['rope joint: a revolute chain whose end is caught by a rope to the ground'].build;
     const world = build();
