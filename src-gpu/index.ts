@@ -1,8 +1,8 @@
 /*
  * webphysics/gpu: the WebGPU backend (part 1: devices, the world mirrored on the GPU, and a
  * sweep-and-prune broad phase; part 2: the narrow phase; part 3, in progress: the graph-coloured
- * solver, GpuStepper, and WebGPUBackend behind b2World's API). The engine never imports this module; it reads the engine's world
- * through its public fields.
+ * solver, GpuStepper, and WebGPUBackend behind b2World's API). The engine never imports this
+ * module; it reads the engine's world through its public fields and its b2ChangeListener.
  *
  *   const gpu = await requestGpu({ onLost: (info) => console.warn('GPU lost', info) });
  *   const mirror = new GpuWorld(gpu, world);
@@ -18,10 +18,10 @@
  *   await world.Synchronize();          // positions, velocities, contact events
  *   await world.SetBackend(null);       // back to the JavaScript engine, contacts and impulses kept
  *
- * Stepping on the GPU (contacts, the ten joint types; sleeping; no continuous collision yet):
+ * Stepping on the GPU (contacts, the ten joint types, sleeping, a time-of-impact pass):
  *   const stepper = new GpuStepper(gpu, world);
  *   await stepper.step(1 / 60, 8, 3);   // broad phase, narrow phase and solver, one submission
- *   await stepper.readBodies();         // positions and velocities back into world's bodies
+ *   await stepper.readBodies();         // motion and joint impulses back into the world's objects
  */
 
 export {
