@@ -36,14 +36,14 @@ import { b2CircleShape } from '../src/collision/shapes/b2CircleShape';
 import { b2PolygonShape } from '../src/collision/shapes/b2PolygonShape';
 import type { b2Shape } from '../src/collision/shapes/b2Shape';
 import { b2Transform, b2Vec2 } from '../src/common/b2Math';
-import type { b2World } from '../src/dynamics/b2World';
 import { GpuBroadPhase } from '../src-gpu/broadPhase';
 import type { BroadPhaseResult } from '../src-gpu/broadPhase';
 import { requestGpu } from '../src-gpu/device';
 import type { GpuContext } from '../src-gpu/device';
 import { USAGE } from '../src-gpu/layout';
 import { GpuWorld } from '../src-gpu/world';
-import { fmt, logLogChart, median, rng } from './gpu-support';
+import { fmt, logLogChart, median, rng, syntheticWorld } from './gpu-support';
+import type { SyntheticBody } from './gpu-support';
 
 const DT = 1 / 60;
 
@@ -138,50 +138,15 @@ function moveBody(s: Scenario, i: number): void {
   s.y[i] = y;
 }
 
-/**
- * The bodies as the fields GpuWorld reads (a b2World's bodies, fixtures and shapes): building a
- * real b2World of a million bodies would also build its dynamic tree, which is not measured here.
- */
-function syntheticWorld(s: Scenario): b2World {
-  let head: object | null = null;
-  for (let i = s.n - 1; i >= 0; --i) {
-    const xf = new b2Transform();
-    xf.p.Set(s.x[i], s.y[i]);
-    const c = new b2Vec2(s.x[i], s.y[i]);
-    const body: Record<string, unknown> = {
-      m_type: s.dynamic[i] ? 2 : 0,
-      m_flags: 0x26,
-      m_xf: xf,
-      m_sweep: { localCenter: new b2Vec2(), c0: c, c, a0: 0, a: 0, alpha0: 0 },
-      m_linearVelocity: new b2Vec2(s.vx[i], s.vy[i]),
-      m_angularVelocity: 0,
-      m_force: new b2Vec2(),
-      m_torque: 0,
-      m_invMass: s.dynamic[i] ? 1 : 0,
-      m_invI: 0,
-      m_linearDamping: 0,
-      m_angularDamping: 0,
-      m_gravityScale: 1,
-      m_sleepTime: 0,
-      m_jointList: null,
-      m_next: head,
-    };
-    body.m_fixtureList = {
-      m_shape: s.shape[i],
-      m_filter: { categoryBits: 1, maskBits: 0xffff, groupIndex: 0 },
-      m_isSensor: false,
-      m_friction: 0.2,
-      m_restitution: 0,
-      m_density: 1,
-      m_proxyCount: 1,
-      m_next: null,
-      m_body: body,
-    };
-    head = body;
+/** The scenario's bodies for syntheticWorld: one shape each. */
+function scenarioBodies(s: Scenario): SyntheticBody[] {
+  const bodies: SyntheticBody[] = [];
+  for (let i = 0; i < s.n; ++i) {
+    bodies.push({ x: s.x[i], y: s.y[i], angle: 0, vx: s.vx[i], vy: s.vy[i], w: 0, dynamic: s.dynamic[i] !== 0, shapes: [s.shape[i]], sensor: false });
   }
-  // No change listener: the mirror syncs everything each time, which the benchmark does once.
-  return { m_bodyList: head, m_jointList: null, m_contactManager: { m_contactFilter: null }, SetChangeListener: () => {} } as unknown as b2World;
+  return bodies;
 }
+
 
 const MOVE_WGSL = `
 struct Params { count: u32, dt: f32, half: f32, cellSize: f32 }
@@ -239,7 +204,7 @@ interface GpuRow {
 }
 
 async function runGpu(ctx: GpuContext, s: Scenario, steps: number, check: boolean): Promise<GpuRow> {
-  const world = syntheticWorld(s);
+  const world = syntheticWorld(scenarioBodies(s));
   const mirror = new GpuWorld(ctx, world);
   const t0 = performance.now();
   mirror.sync();

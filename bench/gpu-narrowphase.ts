@@ -7,7 +7,7 @@
  *   node dist/bench-gpu-narrowphase.mjs [--contacts 1e3,1e4,1e5,1e6] [--mixes circles,boxes,mixed]
  *        [--steps 10] [--check-max 2e4] [--no-variants] [--quick] [--out DIR]
  *
- * Worlds (synthetic b2World fields, as bench/gpu-broadphase.ts, so that 250k bodies cost no
+ * Worlds (gpu-support.ts syntheticWorld: b2World fields, so that 250k bodies cost no
  * engine setup): bodies on a jittered 1 m grid, sized so that each overlaps its neighbours' AABBs
  * (about 4 pairs per body, about half of them touching), n = contacts / 4:
  *   circles  circles of radius 0.48-0.56 m (circle-circle only);
@@ -42,7 +42,6 @@ import { b2EdgeShape } from '../src/collision/shapes/b2EdgeShape';
 import { b2PolygonShape } from '../src/collision/shapes/b2PolygonShape';
 import type { b2Shape } from '../src/collision/shapes/b2Shape';
 import { b2Transform, b2Vec2 } from '../src/common/b2Math';
-import type { b2World } from '../src/dynamics/b2World';
 import { GpuBroadPhase } from '../src-gpu/broadPhase';
 import { requestGpu } from '../src-gpu/device';
 import type { GpuContext } from '../src-gpu/device';
@@ -50,21 +49,11 @@ import { BIN, BIN_NAMES, USAGE } from '../src-gpu/layout';
 import { GpuNarrowPhase } from '../src-gpu/narrowPhase';
 import type { NarrowPhaseResult } from '../src-gpu/narrowPhase';
 import { GpuWorld } from '../src-gpu/world';
-import { box, circle, fmt, median, rng } from './gpu-support';
+import { box, circle, fmt, median, rng, syntheticWorld } from './gpu-support';
+import type { SyntheticBody } from './gpu-support';
 
 const DT = 1 / 60;
 
-interface Body {
-  x: number;
-  y: number;
-  angle: number;
-  vx: number;
-  vy: number;
-  w: number;
-  dynamic: boolean;
-  shapes: b2Shape[];
-  sensor: boolean;
-}
 
 function hexagon(r: number): b2PolygonShape {
   const s = new b2PolygonShape();
@@ -75,11 +64,11 @@ function hexagon(r: number): b2PolygonShape {
 }
 
 /** The bodies of a mix with about `contacts` contacts. */
-function makeBodies(mix: string, contacts: number): Body[] {
+function makeBodies(mix: string, contacts: number): SyntheticBody[] {
   const r = rng(contacts * 7 + mix.length);
   const n = Math.max(16, Math.round(contacts / 4));
   const side = Math.ceil(Math.sqrt(n));
-  const bodies: Body[] = [];
+  const bodies: SyntheticBody[] = [];
   // A few shared shapes (each fixture is packed on its own by the mirror).
   const circles = Array.from({ length: 8 }, (_, k) => circle(0.48 + 0.01 * k));
   const boxes = Array.from({ length: 8 }, (_, k) => box(0.42 + 0.0125 * k, 0.45 + 0.01 * ((k * 3) % 8)));
@@ -137,53 +126,6 @@ function makeBodies(mix: string, contacts: number): Body[] {
   return bodies;
 }
 
-/** The bodies as the fields GpuWorld reads (see bench/gpu-broadphase.ts). */
-function syntheticWorld(bodies: Body[]): b2World {
-  let head: object | null = null;
-  for (let i = bodies.length - 1; i >= 0; --i) {
-    const b = bodies[i];
-    const xf = new b2Transform();
-    xf.p.Set(b.x, b.y);
-    xf.q.Set(b.angle);
-    const c = new b2Vec2(b.x, b.y);
-    const body: Record<string, unknown> = {
-      m_type: b.dynamic ? 2 : 0,
-      m_flags: 0x26,
-      m_xf: xf,
-      m_sweep: { localCenter: new b2Vec2(), c0: c, c, a0: b.angle, a: b.angle, alpha0: 0 },
-      m_linearVelocity: new b2Vec2(b.vx, b.vy),
-      m_angularVelocity: b.w,
-      m_force: new b2Vec2(),
-      m_torque: 0,
-      m_invMass: b.dynamic ? 1 : 0,
-      m_invI: b.dynamic ? 1 : 0,
-      m_linearDamping: 0,
-      m_angularDamping: 0,
-      m_gravityScale: 1,
-      m_sleepTime: 0,
-      m_jointList: null,
-      m_next: head,
-    };
-    let next: object | null = null;
-    for (let k = b.shapes.length - 1; k >= 0; --k) {
-      const shape = b.shapes[k];
-      next = {
-        m_shape: shape,
-        m_filter: { categoryBits: 1, maskBits: 0xffff, groupIndex: 0 },
-        m_isSensor: b.sensor,
-        m_friction: 0.2,
-        m_restitution: 0,
-        m_density: 1,
-        m_proxyCount: shape.m_type === 3 ? (shape as b2ChainShape).m_count - 1 : 1,
-        m_next: next,
-        m_body: body,
-      };
-    }
-    body.m_fixtureList = next;
-    head = body;
-  }
-  return { m_bodyList: head, m_jointList: null, m_contactManager: { m_contactFilter: null, m_contactList: null }, SetChangeListener: () => {} } as unknown as b2World;
-}
 
 // Moves and turns every dynamic body (static ones have zero velocity): p += v dt, q *= rot(w dt),
 // velocities reversed every 60 steps so the grid keeps its shape.

@@ -1,10 +1,14 @@
 /*
  * Helpers shared by the GPU benchmarks (gpu-broadphase.ts, gpu-narrowphase.ts, gpu-step.ts): a
- * seeded random generator, medians, number formatting for the tables, and the shapes they build.
+ * seeded random generator, medians, number formatting for the tables, the shapes they build, the
+ * log-log chart, and a synthetic world of bodies for GpuWorld.
  */
+import type { b2ChainShape } from '../src/collision/shapes/b2ChainShape';
 import { b2CircleShape } from '../src/collision/shapes/b2CircleShape';
 import { b2PolygonShape } from '../src/collision/shapes/b2PolygonShape';
-import type { b2Vec2 } from '../src/common/b2Math';
+import type { b2Shape } from '../src/collision/shapes/b2Shape';
+import { b2Transform, b2Vec2 } from '../src/common/b2Math';
+import type { b2World } from '../src/dynamics/b2World';
 
 /** mulberry32: a small seeded generator, so every run builds the same scene. */
 export function rng(seed: number): () => number {
@@ -111,4 +115,69 @@ export function logLogChart<R>(rows: R[], chart: LogLogChart<R>): string {
   }
   out.push('</svg>');
   return out.join('\n');
+}
+
+/** A body of syntheticWorld: one fixture per shape. */
+export interface SyntheticBody {
+  x: number;
+  y: number;
+  angle: number;
+  vx: number;
+  vy: number;
+  w: number;
+  dynamic: boolean;
+  shapes: b2Shape[];
+  sensor: boolean;
+}
+
+/**
+ * The bodies as the fields GpuWorld reads (a b2World's bodies, fixtures and shapes): building a
+ * real b2World of a million bodies would also build its dynamic tree, which is not measured here.
+ * No change listener: the mirror walks everything at each sync.
+ */
+export function syntheticWorld(bodies: SyntheticBody[]): b2World {
+  let head: object | null = null;
+  for (let i = bodies.length - 1; i >= 0; --i) {
+    const b = bodies[i];
+    const xf = new b2Transform();
+    xf.p.Set(b.x, b.y);
+    xf.q.Set(b.angle);
+    const c = new b2Vec2(b.x, b.y);
+    const body: Record<string, unknown> = {
+      m_type: b.dynamic ? 2 : 0,
+      m_flags: 0x26,
+      m_xf: xf,
+      m_sweep: { localCenter: new b2Vec2(), c0: c, c, a0: b.angle, a: b.angle, alpha0: 0 },
+      m_linearVelocity: new b2Vec2(b.vx, b.vy),
+      m_angularVelocity: b.w,
+      m_force: new b2Vec2(),
+      m_torque: 0,
+      m_invMass: b.dynamic ? 1 : 0,
+      m_invI: b.dynamic ? 1 : 0,
+      m_linearDamping: 0,
+      m_angularDamping: 0,
+      m_gravityScale: 1,
+      m_sleepTime: 0,
+      m_jointList: null,
+      m_next: head,
+    };
+    let next: object | null = null;
+    for (let k = b.shapes.length - 1; k >= 0; --k) {
+      const shape = b.shapes[k];
+      next = {
+        m_shape: shape,
+        m_filter: { categoryBits: 1, maskBits: 0xffff, groupIndex: 0 },
+        m_isSensor: b.sensor,
+        m_friction: 0.2,
+        m_restitution: 0,
+        m_density: 1,
+        m_proxyCount: shape.m_type === 3 ? (shape as b2ChainShape).m_count - 1 : 1,
+        m_next: next,
+        m_body: body,
+      };
+    }
+    body.m_fixtureList = next;
+    head = body;
+  }
+  return { m_bodyList: head, m_jointList: null, m_contactManager: { m_contactFilter: null, m_contactList: null }, SetChangeListener: () => {} } as unknown as b2World;
 }
