@@ -106,6 +106,16 @@ function put4(record: Float32Array, at: number, a: number, b: number, c: number,
 /** A fixture slot without proxies. */
 const EMPTY_SLOTS: number[] = [];
 
+/** `array`, or a copy of it with its length doubled until `index` fits. */
+function withRoom<T extends Int32Array | Uint32Array>(array: T, index: number): T {
+  if (index < array.length) return array;
+  let size = array.length;
+  while (size <= index) size *= 2;
+  const grown = new (array.constructor as new (length: number) => T)(size);
+  grown.set(array);
+  return grown;
+}
+
 /**
  * What the API changed since the last sync: the world's b2ChangeListener while a GpuWorld mirrors
  * it (structurally one: src-gpu imports only types from the engine).
@@ -118,7 +128,8 @@ class ChangeLog {
   readonly fixtures = new Set<b2Fixture>();
 
   BodyChanged(body: b2Body, motion: boolean): void {
-    if (motion || !this.bodies.has(body)) this.bodies.set(body, motion || this.bodies.get(body) === true);
+    if (motion) this.bodies.set(body, true);
+    else if (!this.bodies.has(body)) this.bodies.set(body, false);
   }
 
   FixtureChanged(fixture: b2Fixture): void {
@@ -179,13 +190,7 @@ class SlotAllocator<T> {
 
   /** Marks `slot` as seen in `generation`. */
   mark(slot: number, generation: number): void {
-    if (slot >= this.gen.length) {
-      let n = this.gen.length;
-      while (n <= slot) n *= 2;
-      const gen = new Uint32Array(n);
-      gen.set(this.gen);
-      this.gen = gen;
-    }
+    this.gen = withRoom(this.gen, slot);
     this.gen[slot] = generation;
   }
 
@@ -615,11 +620,7 @@ export class GpuWorld {
       const slot = this.bodySlots.acquire(b, gen, walked < this.walkCount ? this.walkSlots[walked] : -1);
       if (this.bodySlots.created) stats.bodies.created++;
       this.packBody(slot, b, this.bodySlots.created);
-      if (walked === this.walkSlots.length) {
-        const grown = new Int32Array(2 * this.walkSlots.length);
-        grown.set(this.walkSlots);
-        this.walkSlots = grown;
-      }
+      this.walkSlots = withRoom(this.walkSlots, walked);
       this.walkSlots[walked++] = slot;
     }
     this.walkCount = walked;
@@ -639,11 +640,7 @@ export class GpuWorld {
       for (let f = b.m_fixtureList; f; f = f.m_next) {
         const hint = fixtureWalked < this.fixtureWalkCount ? this.fixtureWalk[fixtureWalked] : -1;
         const slot = this.fixtureSlots.acquire(f, gen, hint);
-        if (fixtureWalked === this.fixtureWalk.length) {
-          const grown = new Int32Array(2 * this.fixtureWalk.length);
-          grown.set(this.fixtureWalk);
-          this.fixtureWalk = grown;
-        }
+        this.fixtureWalk = withRoom(this.fixtureWalk, fixtureWalked);
         this.fixtureWalk[fixtureWalked++] = slot;
         if (this.fixtureSlots.created) stats.fixtures.created++;
         this.packFixture(slot, f, bodySlot, this.fixtureSlots.created);
@@ -1060,13 +1057,7 @@ export class GpuWorld {
       // deactivated and reactivated between syncs), gets a new generation.
       const engineId = engineProxies?.[child]?.proxyId;
       const order = typeof engineId === 'number' && engineId >= 0 ? engineId : slot;
-      if (slot >= this.proxyGeneration.length) {
-        let size = this.proxyGeneration.length;
-        while (size <= slot) size *= 2;
-        const grown = new Uint32Array(size);
-        grown.set(this.proxyGeneration);
-        this.proxyGeneration = grown;
-      }
+      this.proxyGeneration = withRoom(this.proxyGeneration, slot);
       if (fresh || this.proxyKey.u32[2 * slot] !== order) this.proxyGeneration[slot] = (this.proxyGeneration[slot] + 1) >>> 0;
       this.proxyKey.commitWords(slot, order, this.proxyGeneration[slot]);
     }
