@@ -21,6 +21,8 @@ import type { ColourPassInputs } from './warmStart';
 
 export class SolvePositionStage {
   private readonly kernel: Kernel;
+  /** Per colour (and the overflow set): this step's bind group. */
+  private readonly groups: GPUBindGroup[] = [];
   private readonly check: Kernel;
 
   constructor(ctx: GpuContext) {
@@ -30,20 +32,23 @@ export class SolvePositionStage {
 
   encode(rec: Recorder, io: ColourPassInputs, bodySweep: GPUBuffer, iterations: number): void {
     const check = this.check.bind({ 1: io.solverState, 6: io.solverIndirect });
+    // The colours' bind groups once, for every iteration.
+    for (let c = 0; c <= COLOUR_CAP; ++c) {
+      this.groups[c] = this.kernel.bind({
+        0: io.colours[c].buffer,
+        1: io.solverState,
+        2: io.colourKeys,
+        3: io.contactBodies,
+        4: io.constraints,
+        5: bodySweep,
+        10: io.jointBodies,
+        11: io.jointParams,
+        12: io.jointConstraints,
+      });
+    }
     for (let it = 0; it < iterations; ++it) {
       for (let c = 0; c <= COLOUR_CAP; ++c) {
-        const group = this.kernel.bind({
-          0: io.colours[c].buffer,
-          1: io.solverState,
-          2: io.colourKeys,
-          3: io.contactBodies,
-          4: io.constraints,
-          5: bodySweep,
-          10: io.jointBodies,
-          11: io.jointParams,
-          12: io.jointConstraints,
-        });
-        rec.dispatchIndirect(this.kernel, group, io.solverIndirect, (SV_ARGS.POSITION + 3 * c) * 4);
+        rec.dispatchIndirect(this.kernel, this.groups[c], io.solverIndirect, (SV_ARGS.POSITION + 3 * c) * 4);
       }
       rec.dispatch(this.check, check, 1);
     }

@@ -19,27 +19,32 @@ import type { ColourPassInputs } from './warmStart';
 
 export class SolveVelocityStage {
   private readonly kernel: Kernel;
+  /** Per colour (and the overflow set): this step's bind group. */
+  private readonly groups: GPUBindGroup[] = [];
 
   constructor(ctx: GpuContext) {
     this.kernel = new Kernel(ctx, 'solveVelocity', 'main');
   }
 
   encode(rec: Recorder, io: ColourPassInputs, bodyVel: GPUBuffer, iterations: number): void {
+    // The colours' bind groups once, for every iteration.
+    for (let c = 0; c <= COLOUR_CAP; ++c) {
+      this.groups[c] = this.kernel.bind({
+        0: io.colours[c].buffer,
+        1: io.solverState,
+        2: io.colourKeys,
+        3: io.contactBodies,
+        4: io.constraints,
+        5: bodyVel,
+        9: io.params,
+        10: io.jointBodies,
+        11: io.jointParams,
+        12: io.jointConstraints,
+      });
+    }
     for (let it = 0; it < iterations; ++it) {
       for (let c = 0; c <= COLOUR_CAP; ++c) {
-        const group = this.kernel.bind({
-          0: io.colours[c].buffer,
-          1: io.solverState,
-          2: io.colourKeys,
-          3: io.contactBodies,
-          4: io.constraints,
-          5: bodyVel,
-          9: io.params,
-          10: io.jointBodies,
-          11: io.jointParams,
-          12: io.jointConstraints,
-        });
-        rec.dispatchIndirect(this.kernel, group, io.solverIndirect, (SV_ARGS.COLOURS + 3 * c) * 4);
+        rec.dispatchIndirect(this.kernel, this.groups[c], io.solverIndirect, (SV_ARGS.COLOURS + 3 * c) * 4);
       }
     }
   }
