@@ -1,35 +1,45 @@
 // colour.wgsl: solver stage 3, the graph colouring of the solver's items, joints and contacts
-// together (hashed-priority Jones-Plassmann), and the colour lists.
+// together (hashed-priority Jones-Plassmann), and the colour lists; the last colouring is reused
+// while every item has the same dynamic bodies.
 //
 // Items: joint slots 0 .. SV_JOINTS - 1 (jointBodies, solveJoints.wgsl: up to four bodies, a
 // gear's four), then solver contacts k as items SV_JOINTS + k (contactBodies, prepareContacts.wgsl).
 // In:  params (joint slots), the broad phase's state (overflow), npState (NP_SOLVER, NP_OVERFLOW),
-//      contactBodies and jointBodies (bodies, which are dynamic).
+//      contactBodies and jointBodies (bodies, which are dynamic), signatures (the last colouring's
+//      items).
 // Out: `begin` (one invocation): solverState SV_SKIP, SV_COUNT, SV_JOINTS, SV_ITEMS, the
-//      position-iteration words, the indirect sizes of per-contact and per-item passes and of the
-//      colour sort.
+//      position-iteration words, SV_COLOUR_CHANGED = 0, the indirect sizes of per-contact and
+//      per-item passes.
+//      `invalidate` (one invocation, recorded when the host replaced a buffer that holds the last
+//      colouring): SV_COLOUR_CHANGED = 1.
+//      `compare` (per item): SV_COLOUR_CHANGED = 1 when the item's signature (its dynamic bodies,
+//      NO_BODY for the others) differs from signatures[item]. `decide` (one invocation): a
+//      different item or joint count is a change too; without a change the rounds and the sort
+//      get zero-sized dispatches and the last colouring's colours and sorted keys stand.
 //      `mark` / `pick` (per item, round r = round.colour, rounds 0 .. COLOUR_CAP - 1): each
 //      uncoloured item posts its priority (a bijective hash of the item: unique, the same every
 //      run) to its dynamic bodies with atomicMax; an item whose priority is the maximum on all its
 //      dynamic bodies takes colour r. The items of one colour share no dynamic body; static
 //      and kinematic bodies (never written by the solver) block nothing. The last `pick`
-//      (round COLOUR_CAP) puts what is left in the overflow set (colour COLOUR_CAP) and writes
+//      (round COLOUR_CAP) puts what is left in the overflow set (colour COLOUR_CAP), writes
 //      colourKeys[i] = (colour, i) for the sort (radixSort.wgsl, stable: items ascending per
-//      colour, so each colour lists its joints, then its contacts).
-//      `offsets` (one workgroup): SV_COLOUR_START (first entry of each colour in the sorted
-//      keys), the indirect size of each colour's warm-start, velocity and position passes (one
-//      invocation for the overflow set, which is solved in order).
+//      colour, so each colour lists its joints, then its contacts) and the item's signature.
+//      `offsets` (one workgroup, every step: the early exit zeroes the position passes' sizes):
+//      SV_COLOUR_START (first entry of each colour in the sorted keys), the indirect size of each
+//      colour's warm-start, velocity and position passes (one invocation for the overflow set,
+//      which is solved in order).
 // Invariants: bodyMark holds two words per body (round parity); round r posts to parity r & 1
 //      and clears parity (r - 1) & 1 for the items that posted there in round r - 1, so both
-//      are zero again after the last round, and colours depend on nothing but the items and
-//      their order: the same bits on every run. Priorities are compared with atomicMax, whose
-//      result does not depend on the order of the atomics. A joint that is not solved this step
-//      (dead slot, inactive body) has no dynamic body and takes colour 0; its passes return.
+//      are zero again after the last round, and colours depend on nothing but the items' dynamic
+//      bodies and their order: the same bits on every run, and reusing a colouring gives the bits
+//      colouring again would. Priorities are compared with atomicMax, whose result does not
+//      depend on the order of the atomics. A joint that is not solved this step (dead slot,
+//      inactive body) has no dynamic body and takes colour 0; its passes return.
 
 @group(0) @binding(0) var<uniform> round: ColourParams;
 @group(0) @binding(1) var<storage, read> broadState: array<u32>;
 @group(0) @binding(2) var<storage, read> npState: array<u32>;
-@group(0) @binding(3) var<storage, read_write> solverState: array<u32>;
+@group(0) @binding(3) var<storage, read_write> solverState: array<atomic<u32>>;
 @group(0) @binding(4) var<storage, read_write> solverIndirect: array<u32>;
 @group(0) @binding(5) var<storage, read> contactBodies: array<vec4<u32>>;
 @group(0) @binding(6) var<storage, read_write> colours: array<u32>;
@@ -37,6 +47,9 @@
 @group(0) @binding(8) var<storage, read_write> colourKeys: array<vec2<u32>>;
 @group(0) @binding(9) var<uniform> params: SolverParams;
 @group(0) @binding(10) var<storage, read> jointBodies: array<vec4<u32>>;
+@group(0) @binding(11) var<storage, read_write> signatures: array<vec4<u32>>;
+
+const NO_BODY: u32 = 0xffffffffu;
 
 fn write_args(offset: u32, size: vec3<u32>) {
   solverIndirect[offset] = size.x;
@@ -49,17 +62,37 @@ fn begin() {
   let skip = broadState[STATE_OVERFLOW] != 0u || npState[NP_OVERFLOW] != 0u;
   let count = select(npState[NP_SOLVER], 0u, skip);
   let items = select(params.jointSlots + count, 0u, skip);
-  solverState[SV_SKIP] = select(0u, 1u, skip);
-  solverState[SV_COUNT] = count;
-  solverState[SV_JOINTS] = params.jointSlots;
-  solverState[SV_ITEMS] = items;
-  solverState[SV_POSITION_ITERATIONS] = 0u;
-  solverState[SV_POSITION_DONE] = 0u;
-  solverState[SV_JOINT_ERROR] = 0u;
-  solverState[SV_MIN_SEPARATION] = sortable_key(0.0);
+  atomicStore(&solverState[SV_SKIP], select(0u, 1u, skip));
+  atomicStore(&solverState[SV_COUNT], count);
+  atomicStore(&solverState[SV_JOINTS], params.jointSlots);
+  atomicStore(&solverState[SV_ITEMS], items);
+  atomicStore(&solverState[SV_POSITION_ITERATIONS], 0u);
+  atomicStore(&solverState[SV_POSITION_DONE], 0u);
+  atomicStore(&solverState[SV_JOINT_ERROR], 0u);
+  atomicStore(&solverState[SV_MIN_SEPARATION], sortable_key(0.0));
+  atomicStore(&solverState[SV_COLOUR_CHANGED], 0u);
   write_args(SV_ARGS_CONTACTS, dispatch_size(count, WORKGROUP_SIZE));
   write_args(SV_ARGS_ITEMS, dispatch_size(items, WORKGROUP_SIZE));
-  write_args(SV_ARGS_TILES, dispatch_size(items, 1024u));
+}
+
+@compute @workgroup_size(1)
+fn invalidate() {
+  atomicStore(&solverState[SV_COLOUR_CHANGED], 1u);
+}
+
+@compute @workgroup_size(1)
+fn decide() {
+  let items = atomicLoad(&solverState[SV_ITEMS]);
+  let joints = atomicLoad(&solverState[SV_JOINTS]);
+  let changed = atomicLoad(&solverState[SV_COLOUR_CHANGED]) != 0u || items != atomicLoad(&solverState[SV_COLOURED_ITEMS]) ||
+    joints != atomicLoad(&solverState[SV_COLOURED_JOINTS]);
+  let colouring = select(0u, items, changed);
+  atomicStore(&solverState[SV_COLOUR_CHANGED], select(0u, 1u, changed));
+  atomicStore(&solverState[SV_COLOURED_ITEMS], items);
+  atomicStore(&solverState[SV_COLOURED_JOINTS], joints);
+  atomicStore(&solverState[SV_COLOUR_SORT_COUNT], colouring);
+  write_args(SV_ARGS_ROUNDS, dispatch_size(colouring, WORKGROUP_SIZE));
+  write_args(SV_ARGS_TILES, dispatch_size(colouring, 1024u));
 }
 
 // lowbias32 (C. Wellons): every step is a bijection of u32, so distinct items get distinct
@@ -76,7 +109,7 @@ fn priority(k: u32) -> u32 {
 
 fn item_index(wid: vec3<u32>, nwg: vec3<u32>, lid: u32) -> u32 {
   let i = group_index(wid, nwg) * WORKGROUP_SIZE + lid;
-  if (i >= solverState[SV_ITEMS]) {
+  if (i >= atomicLoad(&solverState[SV_ITEMS])) {
     return NO_CONTACT;
   }
   return i;
@@ -89,7 +122,7 @@ struct ItemBodies {
 }
 
 fn item_bodies(i: u32) -> ItemBodies {
-  let joints = solverState[SV_JOINTS];
+  let joints = atomicLoad(&solverState[SV_JOINTS]);
   if (i < joints) {
     return ItemBodies(jointBodies[2u * i], jointBodies[2u * i + 1u].y);
   }
@@ -102,6 +135,29 @@ fn item_bodies(i: u32) -> ItemBodies {
     dynamic = dynamic | 2u;
   }
   return ItemBodies(vec4<u32>(cb.x, cb.y, 0u, 0u), dynamic);
+}
+
+// What the colouring reads of an item: its dynamic bodies, NO_BODY in place of the others.
+fn signature(bodies: ItemBodies) -> vec4<u32> {
+  var s = vec4<u32>(NO_BODY);
+  for (var n = 0u; n < 4u; n = n + 1u) {
+    if ((bodies.dynamic & (1u << n)) != 0u) {
+      s[n] = bodies.list[n];
+    }
+  }
+  return s;
+}
+
+@compute @workgroup_size(256)
+fn compare(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: vec3<u32>,
+           @builtin(local_invocation_index) lid: u32) {
+  let i = item_index(wid, nwg, lid);
+  if (i == NO_CONTACT) {
+    return;
+  }
+  if (any(signature(item_bodies(i)) != signatures[i])) {
+    atomicStore(&solverState[SV_COLOUR_CHANGED], 1u);
+  }
 }
 
 @compute @workgroup_size(256)
@@ -135,6 +191,9 @@ fn pick(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: vec
   }
   let r = round.colour;
   let bodies = item_bodies(i);
+  if (r == COLOUR_CAP) {
+    signatures[i] = signature(bodies);
+  }
   var colour = colours[i];
   // Clear what this item posted in the previous round (the other parity).
   if (r > 0u && (colour == UNCOLOURED || colour == r - 1u)) {
@@ -189,9 +248,9 @@ fn offsets(@builtin(local_invocation_index) lid: u32) {
   if (lid > COLOUR_CAP + 1u) {
     return;
   }
-  let count = solverState[SV_ITEMS];
+  let count = atomicLoad(&solverState[SV_ITEMS]);
   let start = colour_start(lid, count);
-  solverState[SV_COLOUR_START + lid] = start;
+  atomicStore(&solverState[SV_COLOUR_START + lid], start);
   if (lid > COLOUR_CAP) {
     return;
   }

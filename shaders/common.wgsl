@@ -217,6 +217,10 @@ const SV_JOINT_ERROR: u32 = 5u;        // 1 when a joint of this position iterat
 const SV_JOINTS: u32 = 6u;             // joint slots: the colouring's items are joint slots, then solver contacts (k + SV_JOINTS)
 const SV_ITEMS: u32 = 7u;              // items to colour and solve: SV_JOINTS + SV_COUNT, or 0 when skipping
 const SV_COLOUR_START: u32 = 8u;       // COLOUR_CAP + 2 words: first entry of colour c in colourKeys, then the end
+const SV_COLOUR_CHANGED: u32 = 34u;    // 1 when an item's dynamic bodies differ from the last colouring's: colour again
+const SV_COLOURED_ITEMS: u32 = 35u;    // SV_ITEMS of the last colouring
+const SV_COLOURED_JOINTS: u32 = 36u;   // SV_JOINTS of the last colouring
+const SV_COLOUR_SORT_COUNT: u32 = 37u; // items the colour sort sorts: SV_ITEMS when colouring again, else 0
 
 // Colours of the graph colouring; colour COLOUR_CAP is the overflow set (solved in order by one invocation).
 const COLOUR_CAP: u32 = 24u;
@@ -227,7 +231,8 @@ const SV_ARGS_CONTACTS: u32 = 0u;      // one invocation per solver contact
 const SV_ARGS_TILES: u32 = 3u;         // the colour sort, one workgroup per 1024 items
 const SV_ARGS_COLOURS: u32 = 6u;       // + 3 * colour: the velocity passes over one colour (COLOUR_CAP + 1 triples)
 const SV_ARGS_POSITION: u32 = 81u;     // + 3 * colour: the position passes (zeroed by the early exit)
-const SV_ARGS_ITEMS: u32 = 156u;       // one invocation per item (the colouring's rounds)
+const SV_ARGS_ITEMS: u32 = 156u;       // one invocation per item (the comparison with the last colouring)
+const SV_ARGS_ROUNDS: u32 = 159u;      // one invocation per item when colouring again, else none (the rounds)
 
 // vec4s per solver contact in the constraint buffer (solverCommon.wgsl lists them).
 const CONSTRAINT_VEC4: u32 = 13u;

@@ -17,6 +17,12 @@
  * Rounds: COLOUR_CAP rounds of two dispatches (post priorities with atomicMax, then pick the
  *      local maxima), whatever the contact count: no read-back decides when to stop. A round
  *      with nothing left to colour costs two empty-ish dispatches.
+ * Reuse: a colouring depends only on each item's dynamic bodies, so while the items and their
+ *      dynamic bodies are those of the last colouring (a resting pile: same contacts in the same
+ *      order), `compare` finds no change and the rounds and the sort are dispatched with zero
+ *      workgroups; the last colours and sorted keys stand, bit for bit what colouring again would
+ *      give. Decided on the GPU (no read-back); the host only forces a colouring when it replaced
+ *      a buffer that holds the last one.
  */
 
 import type { GpuContext } from './device';
@@ -43,6 +49,9 @@ export interface ColourInputs {
 
 export class ColourStage {
   private readonly beginKernel: Kernel;
+  private readonly invalidate: Kernel;
+  private readonly compare: Kernel;
+  private readonly decide: Kernel;
   private readonly mark: Kernel;
   private readonly pick: Kernel;
   private readonly offsets: Kernel;
@@ -55,9 +64,16 @@ export class ColourStage {
   private readonly keysTmp: GpuArray;
   /** Two words per body slot (round parity), zero between steps. */
   private readonly bodyMark: GpuArray;
+  /** Per item, the dynamic bodies the last colouring saw. */
+  private readonly signatures: GpuArray;
+  /** A buffer holding the last colouring was replaced: the next step colours again. */
+  private stale = true;
 
   constructor(ctx: GpuContext) {
     this.beginKernel = new Kernel(ctx, 'colour', 'begin');
+    this.invalidate = new Kernel(ctx, 'colour', 'invalidate');
+    this.compare = new Kernel(ctx, 'colour', 'compare');
+    this.decide = new Kernel(ctx, 'colour', 'decide');
     this.mark = new Kernel(ctx, 'colour', 'mark');
     this.pick = new Kernel(ctx, 'colour', 'pick');
     this.offsets = new Kernel(ctx, 'colour', 'offsets');
@@ -66,12 +82,15 @@ export class ColourStage {
     this.keys = new GpuArray(ctx, 'colour keys', 8, 64);
     this.keysTmp = new GpuArray(ctx, 'colour keys tmp', 8, 64);
     this.bodyMark = new GpuArray(ctx, 'colour body marks', 8, 64);
+    this.signatures = new GpuArray(ctx, 'colour signatures', 16, 64);
   }
 
   /** Makes room for `items` items (joint slots and solver contacts) and `bodies` body slots. */
   reserve(items: number, bodies: number): void {
-    this.colours.ensure(items);
-    this.keys.ensure(items);
+    let replaced = this.colours.ensure(items);
+    replaced = this.keys.ensure(items) || replaced;
+    replaced = this.signatures.ensure(items) || replaced;
+    if (replaced) this.stale = true;
     this.keysTmp.ensure(items);
     this.sort.reserve(items);
     // A new buffer is zero: the marks' invariant holds without copying.
@@ -83,7 +102,14 @@ export class ColourStage {
   }
 
   encode(rec: Recorder, io: ColourInputs): void {
-    const args = SV_ARGS.ITEMS * 4;
+    if (this.stale) {
+      rec.dispatch(this.invalidate, this.invalidate.bind({ 3: io.solverState }), 1);
+      this.stale = false;
+    }
+    const compare = this.compare.bind({ 3: io.solverState, 5: io.contactBodies, 10: io.jointBodies, 11: this.signatures.buffer });
+    rec.dispatchIndirect(this.compare, compare, io.solverIndirect, SV_ARGS.ITEMS * 4);
+    rec.dispatch(this.decide, this.decide.bind({ 3: io.solverState, 4: io.solverIndirect }), 1);
+    const args = SV_ARGS.ROUNDS * 4;
     for (let round = 0; round <= COLOUR_CAP; ++round) {
       const u = io.rounds[round].buffer;
       if (round < COLOUR_CAP) {
@@ -98,10 +124,11 @@ export class ColourStage {
         7: this.bodyMark.buffer,
         8: this.keys.buffer,
         10: io.jointBodies,
+        11: this.signatures.buffer,
       });
       rec.dispatchIndirect(this.pick, group, io.solverIndirect, args);
     }
-    const sorted = this.sort.encode(rec, this.keys.buffer, this.keysTmp.buffer, this.sortPasses, io.solverState, SV.ITEMS, {
+    const sorted = this.sort.encode(rec, this.keys.buffer, this.keysTmp.buffer, this.sortPasses, io.solverState, SV.COLOUR_SORT_COUNT, {
       indirect: io.solverIndirect,
       offset: SV_ARGS.TILES * 4,
     });
@@ -110,6 +137,6 @@ export class ColourStage {
   }
 
   destroy(): void {
-    for (const a of [this.colours, this.keys, this.keysTmp, this.bodyMark]) a.destroy();
+    for (const a of [this.colours, this.keys, this.keysTmp, this.bodyMark, this.signatures]) a.destroy();
   }
 }

@@ -271,6 +271,10 @@ export const SV = {
   JOINTS: 6,
   ITEMS: 7,
   COLOUR_START: 8,
+  COLOUR_CHANGED: 34,
+  COLOURED_ITEMS: 35,
+  COLOURED_JOINTS: 36,
+  COLOUR_SORT_COUNT: 37,
 } as const;
 export const SV_STATE_WORDS = 40;
 
@@ -285,8 +289,9 @@ export const SV_ARGS = {
   COLOURS: 6,
   POSITION: 81,
   ITEMS: 156,
+  ROUNDS: 159,
 } as const;
-export const SV_INDIRECT_WORDS = 160;
+export const SV_INDIRECT_WORDS = 164;
 
 /** u32 words per body slot in the islands buffer, and the label of a body in no island (shaders/islands.wgsl). */
 export const ISLAND_WORDS = 4;

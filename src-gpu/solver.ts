@@ -9,7 +9,8 @@
  *   prepare             solver contacts: masses, world manifold, K, restitution bias    prepareContacts.ts
  *   joints: prepare     the ten joint types' InitVelocityConstraints (no velocity update) solveJoints.ts
  *   colour              Jones-Plassmann colouring of joints and contacts together, colour
- *                       lists (+ overflow set)                                           colour.ts
+ *                       lists (+ overflow set); the last one reused while every item has
+ *                       the same dynamic bodies                                          colour.ts
  *   warm start          per colour: its joints' and contacts' impulses x dtRatio          warmStart.ts
  *   velocity            iterations: per colour, its joints, then its contacts (friction,
  *                       then normal: block solver)                                       solveVelocity.ts
@@ -95,6 +96,8 @@ export interface SolverState {
   positionSolved: boolean;
   /** First entry of each colour in the sorted list (COLOUR_CAP + 2 words, the last is the end). */
   colourStart: number[];
+  /** The items were coloured this step (false: the last colouring was reused, colour.ts). */
+  recoloured: boolean;
 }
 
 export class GpuSolver {
@@ -335,6 +338,7 @@ export class GpuSolver {
       positionIterations: w[SV.POSITION_ITERATIONS],
       positionSolved: w[SV.POSITION_DONE] !== 0,
       colourStart: Array.from(w.subarray(SV.COLOUR_START, SV.COLOUR_START + COLOUR_CAP + 2)),
+      recoloured: w[SV.COLOUR_CHANGED] !== 0,
     };
   }
 

@@ -109,9 +109,11 @@ it("declares the solver's state words, indirect offsets, colour cap and 2.2.1's 
   expect(c.get('COLOUR_CAP')).toBe(layout.COLOUR_CAP);
   expect(c.get('UNCOLOURED')).toBe(layout.UNCOLOURED);
   expect(c.get('CONSTRAINT_VEC4')).toBe(layout.CONSTRAINT_VEC4);
-  expect(layout.SV.COLOUR_START + layout.COLOUR_CAP + 2).toBeLessThanOrEqual(layout.SV_STATE_WORDS);
+  expect(layout.SV.COLOUR_START + layout.COLOUR_CAP + 2).toBeLessThanOrEqual(layout.SV.COLOUR_CHANGED);
+  expect(layout.SV.COLOUR_SORT_COUNT).toBeLessThan(layout.SV_STATE_WORDS);
   expect(layout.SV_ARGS.COLOURS + 3 * (layout.COLOUR_CAP + 1)).toBeLessThanOrEqual(layout.SV_ARGS.POSITION);
-  expect(layout.SV_ARGS.POSITION + 3 * (layout.COLOUR_CAP + 1)).toBeLessThanOrEqual(layout.SV_INDIRECT_WORDS);
+  expect(layout.SV_ARGS.POSITION + 3 * (layout.COLOUR_CAP + 1)).toBeLessThanOrEqual(layout.SV_ARGS.ITEMS);
+  expect(layout.SV_ARGS.ROUNDS + 3).toBeLessThanOrEqual(layout.SV_INDIRECT_WORDS);
   // The colour sort's digits (radix passes of 4 bits) hold every colour and the overflow set.
   expect(layout.COLOUR_CAP).toBeLessThan(256);
   const s = constants(wgsl('solverCommon'));

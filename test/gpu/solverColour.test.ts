@@ -6,7 +6,10 @@
  * items of a colour share a dynamic body, static bodies block nothing, the colour lists are the
  * items sorted by (colour, item) (a colour's joints, then its contacts), the overflow set is solved
  * (not dropped: contacts keep their circles on the plate, joints keep their lengths), and the
- * colouring and the solved bodies are the same bits run to run.
+ * colouring and the solved bodies are the same bits run to run. The colours equal a CPU
+ * Jones-Plassmann over the same items every step, whether the GPU coloured them again or reused
+ * the last colouring (it reuses it while every item keeps its dynamic bodies, colours again when
+ * one changes or when its buffers were replaced).
  */
 
 import { expect, it } from 'vitest';
@@ -262,6 +265,35 @@ function checkColouring(c: Colouring, label: string): { overflow: number; overfl
   return { overflow, overflowJoints, sharedStatic, used };
 }
 
+/** colour.wgsl's priority: lowbias32 (C. Wellons). */
+function priority(item: number): number {
+  let x = item >>> 0;
+  x ^= x >>> 16;
+  x = Math.imul(x, 0x7feb352d) >>> 0;
+  x ^= x >>> 15;
+  x = Math.imul(x, 0x846ca68b) >>> 0;
+  x ^= x >>> 16;
+  return x >>> 0;
+}
+
+/** Jones-Plassmann as colour.wgsl states it, on the CPU: per round, local maxima of the priority. */
+function referenceColours(c: Colouring): number[] {
+  const n = c.colours.length;
+  const colours = new Array<number>(n).fill(-1);
+  const dynamicBodies = Array.from({ length: n }, (_, k) => itemBodies(c, k).filter(([, dynamic]) => dynamic).map(([body]) => body));
+  for (let round = 0; round < COLOUR_CAP; ++round) {
+    const best = new Map<number, number>();
+    for (let k = 0; k < n; ++k) {
+      if (colours[k] >= 0) continue;
+      for (const body of dynamicBodies[k]) best.set(body, Math.max(best.get(body) ?? 0, priority(k)));
+    }
+    const winners: number[] = [];
+    for (let k = 0; k < n; ++k) if (colours[k] < 0 && dynamicBodies[k].every((body) => best.get(body) === priority(k))) winners.push(k);
+    for (const k of winners) colours[k] = round;
+  }
+  return colours.map((colour) => (colour < 0 ? COLOUR_CAP : colour));
+}
+
 async function colouringAfter(ctx: Parameters<Parameters<typeof describeGpu>[1]>[0], build: () => b2World, steps: number) {
   const world = build();
   const stepper = new GpuStepper(ctx, world);
@@ -345,6 +377,45 @@ describeGpu('GPU solver: graph colouring', (ctx) => {
     }
     console.log(`hub: largest length error ${worst.toExponential(2)} m`);
     expect(worst).toBeLessThan(0.01);
+  }, 600_000);
+
+  it('reuses the colouring while the pile keeps its contacts and colours again when they change, each step equal to a CPU Jones-Plassmann', async () => {
+    const world = pyramid(8);
+    const stepper = new GpuStepper(ctx, world);
+    const reused: boolean[] = [];
+    const check = async (label: string) => {
+      const c = await stepper.solver.readColouring();
+      const colouring = { joints: c.joints, colours: c.colours, bodies: c.bodies, jointBodies: c.jointBodies, keys: c.keys, colourStart: c.state.colourStart };
+      checkColouring(colouring, label);
+      expect(Array.from(c.colours), label).toEqual(referenceColours(colouring));
+      return c.state.recoloured;
+    };
+    for (let i = 0; i < 40; ++i) {
+      await stepper.step(DT, 8, 3);
+      reused.push(!(await check(`step ${i}`)));
+    }
+    // The first step colours; once the pyramid rests its contact list stops changing.
+    expect(reused[0]).toBe(false);
+    const reusedCount = reused.filter(Boolean).length;
+    console.log(`pyramid of 8 rows: colouring reused in ${reusedCount} of ${reused.length} steps`);
+    expect(reusedCount).toBeGreaterThan(20);
+    expect(reused.slice(-5)).toEqual([true, true, true, true, true]);
+
+    // A box lifted off the top ends its contacts: the items change, so the GPU colours again.
+    await stepper.readBodies();
+    let top = world.m_bodyList!;
+    for (let b = world.m_bodyList; b; b = b.m_next) if (b.m_xf.p.y > top.m_xf.p.y) top = b;
+    top.SetTransform(new b2Vec2(top.m_xf.p.x + 20, 10), 0);
+    await stepper.step(DT, 8, 3);
+    expect(await check('after the lift')).toBe(true);
+    await stepper.step(DT, 8, 3);
+    expect(await check('the step after')).toBe(false);
+
+    // Buffers replaced on the host (room for more items): the last colouring is gone, colour again.
+    stepper.solver.colouring.reserve(4 * (await stepper.solver.readState()).contacts + 1024, world.GetBodyCount());
+    await stepper.step(DT, 8, 3);
+    expect(await check('after the buffers grew')).toBe(true);
+    stepper.destroy();
   }, 600_000);
 
   it('gives the same colours, lists and solved bodies, bit for bit, run to run (contacts, and joints with contacts)', async () => {
