@@ -361,6 +361,9 @@ export class GpuWorld {
   private walkCount = 0;
   /** The fixture slots in walk order, as hints for the next sync. */
   private fixtureWalk = new Int32Array(64);
+  /** Slots whose uploaded force or torque may be non-zero (every such slot is listed): clearForces() zeroes them. */
+  private forcedSlots = new Int32Array(64);
+  private forcedCount = 0;
   private fixtureWalkCount = 0;
   private readonly pool = new PoolAllocator();
   private fixturePoolOffset: number[] = [];
@@ -597,13 +600,12 @@ export class GpuWorld {
    * b2World::ClearForces for a world the GPU steps (GpuStepper calls it after each step, as
    * b2World::Step does): zeroes the forces of the bodies whose uploaded force is not zero (every
    * other body's force is zero already, unless written to m_force directly) and leaves the zeros
-   * for the next upload.
+   * for the next upload. Those bodies are listed as their force is packed: a million bodies
+   * without forces cost nothing here.
    */
   clearForces(): void {
-    const f = this.bodyForce.f32;
-    const n = this.bodyForce.count;
-    for (let slot = 0; slot < n; ++slot) {
-      if (f[4 * slot] === 0 && f[4 * slot + 1] === 0 && f[4 * slot + 2] === 0) continue;
+    for (let i = 0; i < this.forcedCount; ++i) {
+      const slot = this.forcedSlots[i];
       const b = this.bodyAt(slot);
       if (b !== null) {
         b.m_force.SetZero();
@@ -611,6 +613,7 @@ export class GpuWorld {
       }
       this.bodyForce.commitF4(slot, 0, 0, 0, 0);
     }
+    this.forcedCount = 0;
   }
 
   /** Step 1 of sync: bodies, their slots kept in walk order for syncFixtures and as the next sync's hints. */
@@ -666,7 +669,13 @@ export class GpuWorld {
   private packBody(slot: number, b: b2Body, created: boolean): void {
     if (!this.ownsMotion || created) this.packMotion(slot, b, created && this.ownsMotion);
 
+    const f = this.bodyForce.f32;
+    const unforced = slot >= this.bodyForce.count || (f[4 * slot] === 0 && f[4 * slot + 1] === 0 && f[4 * slot + 2] === 0);
     this.bodyForce.commitF4(slot, b.m_force.x, b.m_force.y, b.m_torque, 0);
+    if (unforced && (b.m_force.x !== 0 || b.m_force.y !== 0 || b.m_torque !== 0)) {
+      this.forcedSlots = withRoom(this.forcedSlots, this.forcedCount);
+      this.forcedSlots[this.forcedCount++] = slot;
+    }
     this.bodyMass.commitF4(slot, b.m_invMass, b.m_invI, b.m_sweep.localCenter.x, b.m_sweep.localCenter.y);
     this.bodyParams.commitF4(slot, b.m_linearDamping, b.m_angularDamping, b.m_gravityScale, 0);
 

@@ -191,6 +191,40 @@ describeGpu('GpuWorld: the world mirrored on the GPU', (ctx) => {
     mirror.destroy();
   });
 
+  it('clearForces zeroes every force and torque uploaded since the last clear, in the world and the mirror, and no other body', () => {
+    const world = new b2World(new b2Vec2(0, -10));
+    const bodies = Array.from({ length: 20 }, (_, i) => box(world, (i % 5) * 2, Math.floor(i / 5) * 2));
+    // A force present at the first (full) sync, before the GPU owns the motion.
+    bodies[0].ApplyForceToCenter(new b2Vec2(1, 2));
+    const mirror = new GpuWorld(ctx, world);
+    mirror.sync();
+    mirror.gpuOwnsMotion = true;
+    // A torque alone, a force applied in two syncs, and a force on a body created later.
+    bodies[4].ApplyTorque(3);
+    mirror.sync();
+    bodies[9].ApplyForceToCenter(new b2Vec2(-4, 0));
+    mirror.sync();
+    bodies[9].ApplyForceToCenter(new b2Vec2(-4, 0));
+    const late = box(world, 30, 0);
+    late.ApplyForceToCenter(new b2Vec2(0, 7));
+    mirror.sync();
+    const force = (b: b2Body) => Array.from(mirror.bodyForce.f32.subarray(4 * mirror.bodySlot(b), 4 * mirror.bodySlot(b) + 3));
+    expect(force(bodies[0])).toEqual([1, 2, 0]);
+    expect(force(bodies[4])).toEqual([0, 0, 3]);
+    expect(force(bodies[9])).toEqual([-8, 0, 0]);
+    expect(force(late)).toEqual([0, 7, 0]);
+    mirror.clearForces();
+    for (const b of [...bodies, late]) {
+      expect(b.m_force.x === 0 && b.m_force.y === 0 && b.m_torque === 0).toBe(true);
+      expect(force(b)).toEqual([0, 0, 0]);
+    }
+    // The four cleared records are uploaded; a second clear finds nothing to do.
+    expect(mirror.sync().upload.elements).toBe(4);
+    mirror.clearForces();
+    expect(mirror.sync().upload.elements).toBe(0);
+    mirror.destroy();
+  });
+
   it('once the GPU owns the motion, uploads only what the API changed (b2ChangeListener), and everything after a structural change', () => {
     const world = new b2World(new b2Vec2(0, -10));
     const bodies = Array.from({ length: 50 }, (_, i) => box(world, (i % 10) * 2, Math.floor(i / 10) * 2));
