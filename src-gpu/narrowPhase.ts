@@ -122,7 +122,10 @@ export interface NarrowPhaseResult {
   dispatches: number;
   /** GPU milliseconds per pass (timestamp queries), null when unavailable. */
   gpuTime: Record<string, number> | null;
-  /** Host milliseconds: recording, the submit call, and the wait for the read-back. */
+  /**
+   * Host milliseconds: recording, the submit call, and the wait for the read-back (with
+   * { wait: false }: the wait for a free read-back buffer, i.e. for the oldest step in flight).
+   */
   hostMs: { encode: number; submit: number; wait: number };
   /** The step ran out of room and its lists are truncated (only with { wait: false }). */
   overflowed: boolean;
@@ -607,6 +610,7 @@ export class GpuNarrowPhase {
   private async runDeferred(mirror: GpuWorld, bp: GpuBroadPhase, after: NarrowPhaseUpdateOptions['after']): Promise<NarrowPhaseResult> {
     await this.ctx.checkErrors();
     this.absorbSettled(bp);
+    const tr = performance.now();
     const rb = await this.ring.next();
     this.absorbSettled(bp);
     const t0 = performance.now();
@@ -645,14 +649,14 @@ export class GpuNarrowPhase {
     this.cur = 1 - this.cur;
     const last = this.lastResult;
     const base: NarrowPhaseResult = last
-      ? { ...last, hostMs: { encode: t1 - t0, submit: t2 - t1, wait: 0 }, dispatches }
+      ? { ...last, hostMs: { encode: t1 - t0, submit: t2 - t1, wait: t0 - tr }, dispatches }
       : this.result(
           { pairCount: 0, axis: 0, strips: 0, entries: 0, workItems: 0, regrows: 0, pairCapacity: bp.pairCapacity, dispatches, gpuTime: null },
           new Uint32Array(NP_STATE_WORDS),
           0,
           dispatches,
           null,
-          { encode: t1 - t0, submit: t2 - t1, wait: 0 },
+          { encode: t1 - t0, submit: t2 - t1, wait: t0 - tr },
           true,
         );
     return { ...base, pending: true, settled: entry.settled };
