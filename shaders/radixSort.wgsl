@@ -5,13 +5,18 @@
 // In:  src[0, n), n = state[params.countWord]; the key of an element is element.x
 //      (keyComponent 0), element.y (1), or (x, y) as one 64-bit key x << lowBits | y (2, for
 //      y < 2^lowBits, 0 < lowBits < 32); the digit is (key >> params.shift) & (2^digitBits - 1).
-// Out: dst[0, n): src stably reordered by that digit; digitTotals[d] = elements of digit d.
-// Passes: `upsweep` (one workgroup per tile of TILE elements) counts digits per tile into
-//      tileHist[digit * numTiles + tile]; `scan` (one workgroup per digit value, or per several
-//      when rows are short, or one invocation per digit for at most SERIAL_TILES tiles) turns each
-//      digit's row into exclusive prefix sums across tiles and writes the digit's total to
-//      digitTotals; `downsweep` (4-bit digits) or `downsweep_wide` (8-bit) ranks its tile
-//      locally and scatters it.
+// Out: dst[0, n): src stably reordered by that digit; digitTotals[d] = elements of digit d;
+//      unless this is the last pass (params.nextBits 0), nextHist holds the next pass's digit
+//      counts per tile of dst, as `upsweep` would count them from dst.
+// Passes: `upsweep` (one workgroup per tile of TILE elements; the first pass only) counts digits
+//      per tile into tileHist[digit * numTiles + tile]; `scan` (one workgroup per digit value, or
+//      per several when rows are short, or one invocation per digit for at most SERIAL_TILES
+//      tiles) turns each digit's row into exclusive prefix sums across tiles, writes the digit's
+//      total to digitTotals and zeroes nextHist; `downsweep` (4-bit digits) or `downsweep_wide`
+//      (8-bit) ranks its tile locally, scatters it, and counts the next pass's digits per
+//      destination tile into nextHist (integer atomics: the counts, and so the sort, do not
+//      depend on their order). The host alternates two histogram buffers as tileHist and
+//      nextHist, so a sort of P passes is 2P + 1 dispatches (3P with an upsweep per pass).
 // Local ranking (downsweep): each invocation holds ITEMS consecutive elements; a split by 4 bits
 //      counts them in 16-bit counters packed two per u32 (8 words per invocation, in workgroup
 //      memory) and scans the counters across the workgroup, which gives each element its rank
@@ -19,7 +24,9 @@
 //      (elements of smaller digits) + (this digit in earlier tiles) + rank. An 8-bit pass orders
 //      the tile by the low nibble in workgroup memory, splits that order by the high nibble, and
 //      writes the ordered tile with consecutive invocations on consecutive addresses of each
-//      digit's run (+ the position in the tile - the digit's first position in the tile).
+//      digit's run (+ the position in the tile - the digit's first position in the tile, one
+//      exclusive scan over the digits that shares the first split's barriers): 8 barriers per
+//      tile (12 with that scan and the first positions found on their own).
 // Invariants: stable (equal digits keep their order), so running the passes from the least to
 // the most significant digit sorts by the whole key; a tile's counts stay below 2^16.
 
@@ -30,12 +37,17 @@ const INVALID: u32 = 0xffffffffu;
 // Tiles up to which `scan` runs one invocation per digit instead of one workgroup per digit.
 const SERIAL_TILES: u32 = 16u;
 
+// This pass's digit and the next pass's (nextBits 0: this is the last pass).
 struct SortParams {
   shift: u32,
   keyComponent: u32,
   countWord: u32,
   digitBits: u32,
   lowBits: u32,
+  nextShift: u32,
+  nextComponent: u32,
+  nextBits: u32,
+  nextLowBits: u32,
   pad0: u32,
   pad1: u32,
   pad2: u32,
@@ -47,39 +59,73 @@ struct SortParams {
 @group(0) @binding(3) var<storage, read_write> tileHist: array<u32>;
 @group(0) @binding(4) var<storage, read_write> digitTotals: array<u32>;
 @group(0) @binding(5) var<storage, read_write> dst: array<vec2<u32>>;
+@group(0) @binding(6) var<storage, read_write> nextHist: array<atomic<u32>>;
 
 var<workgroup> hist: array<atomic<u32>, MAX_RADIX>;
 // scan: the prefix where each of the workgroup's rows starts.
 var<workgroup> rowBase: array<u32, MAX_RADIX>;
-// Packed split counters: 8 words x 256 invocations, word-major, at counter_at.
-var<workgroup> scratch: array<u32, 2176>;
+// Split counters: 8 packed words and the value to scan (split's `value`) x 256 invocations,
+// word-major, at counter_at.
+var<workgroup> scratch: array<u32, 2448>;
 // Per split: each 16-invocation segment's counter sums (exclusive within its word row), and each
 // row's total (low half: nibble 2w, high half: nibble 2w + 1).
-var<workgroup> segTotals: array<u32, 128>;
-var<workgroup> rowTotals: array<u32, 8>;
-// An 8-bit pass's tile order: (tile-local index | digit << 16) at each position.
+var<workgroup> segTotals: array<u32, 144>;
+var<workgroup> rowTotals: array<u32, 9>;
+// An 8-bit pass's tile order: (tile-local index | next pass's digit << 16 | digit << 24) at each
+// position.
 var<workgroup> order: array<u32, TILE>;
 // Per digit: its first destination for this tile (minus its first position in the tile, for
 // an 8-bit pass).
 var<workgroup> digitOffset: array<u32, MAX_RADIX>;
 
-fn digit_of(e: vec2<u32>) -> u32 {
+// The `width`-bit digit at bit `s` of e's key (`component`, `lowBits`: SortParams.keyComponent).
+fn key_digit(e: vec2<u32>, component: u32, lowBits: u32, s: u32, width: u32) -> u32 {
   var lo = e.x;
   var hi = 0u;
-  if (params.keyComponent == 1u) {
+  if (component == 1u) {
     lo = e.y;
-  } else if (params.keyComponent == 2u) {
-    lo = (e.x << params.lowBits) | e.y;
-    hi = e.x >> (32u - params.lowBits);
+  } else if (component == 2u) {
+    lo = (e.x << lowBits) | e.y;
+    hi = e.x >> (32u - lowBits);
   }
-  let s = params.shift;
   var bits: u32;
   if (s >= 32u) {
     bits = hi >> (s - 32u);
   } else {
     bits = (lo >> s) | select(0u, hi << ((32u - s) & 31u), s != 0u);
   }
-  return bits & ((1u << params.digitBits) - 1u);
+  return bits & ((1u << width) - 1u);
+}
+
+fn digit_of(e: vec2<u32>) -> u32 {
+  return key_digit(e, params.keyComponent, params.lowBits, params.shift, params.digitBits);
+}
+
+// The next pass's digit (0 when there is none).
+fn next_digit_of(e: vec2<u32>) -> u32 {
+  return key_digit(e, params.nextComponent, params.nextLowBits, params.nextShift, params.nextBits);
+}
+
+// Counts one element for each entry of `at` (a nextHist index; INVALID: none), one atomicAdd per
+// run of equal neighbours. Random keys send a tile's elements to many (digit, tile) counters, so
+// an address takes few adds from each workgroup; equal keys send them all to one, and the runs
+// cut that from TILE adds per workgroup to TILE / ITEMS.
+fn count_next(at: array<u32, 4>) {
+  var cur = INVALID;
+  var count = 0u;
+  for (var k = 0u; k < ITEMS; k = k + 1u) {
+    if (at[k] != cur) {
+      if (cur != INVALID) {
+        atomicAdd(&nextHist[cur], count);
+      }
+      cur = at[k];
+      count = 0u;
+    }
+    count = count + 1u;
+  }
+  if (cur != INVALID) {
+    atomicAdd(&nextHist[cur], count);
+  }
 }
 
 // Where counter word f (word-major) lives: one pad word per 16, so that the 16 invocations
@@ -133,6 +179,15 @@ fn scan(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: vec
   let radix = 1u << params.digitBits;
   let numTiles = tile_count(state[params.countWord]);
   let d = group_index(wid, nwg);
+  // The next pass's counts start from zero: this pass's downsweep adds to them, and the previous
+  // pass's downsweep, which read this buffer's prefix sums, has finished.
+  if (params.nextBits != 0u) {
+    let words = (1u << params.nextBits) * numTiles;
+    let stride = nwg.x * nwg.y * WORKGROUP_SIZE;
+    for (var f = d * WORKGROUP_SIZE + lid; f < words; f = f + stride) {
+      atomicStore(&nextHist[f], 0u);
+    }
+  }
   if (numTiles <= SERIAL_TILES) {
     // Short rows: one invocation of workgroup 0 per digit, no barriers (a CPU implementation
     // such as SwiftShader pays for every workgroup and barrier, and small sorts are most steps;
@@ -198,15 +253,25 @@ fn scan(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: vec
   }
 }
 
+struct Split {
+  // Per element: the tile's elements before it with the same nibble.
+  ranks: array<u32, 4>,
+  // The sum of `value` over the invocations before this one.
+  before: u32,
+}
+
 // For each of this invocation's elements (ITEMS consecutive ones; INVALID: none), how many
-// elements of the tile before it have the same 4-bit value in `nibbles`. Every invocation must call
-// it; afterwards rowTotals holds the tile's count of each nibble (nibble_start). Raking, as the
-// 4-bit scatter always was: invocation r < 128 scans row r / 16 over the 16 invocations of
-// segment r % 16, then 8 invocations scan the segment sums of one row each. Three barriers.
-fn split(lid: u32, nibbles: array<u32, 4>) -> array<u32, 4> {
+// elements of the tile before it have the same 4-bit value in `nibbles`, and an exclusive scan of
+// `value` across the workgroup riding on the same barriers (a ninth counter row). Every invocation
+// must call it; afterwards rowTotals holds the tile's count of each nibble (nibble_start).
+// Raking, as the 4-bit scatter always was: invocation r < 144 scans row r / 16 over the 16
+// invocations of segment r % 16, then 9 invocations scan the segment sums of one row each. Three
+// barriers.
+fn split(lid: u32, nibbles: array<u32, 4>, value: u32) -> Split {
   for (var w = 0u; w < 8u; w = w + 1u) {
     scratch[counter_at(w * WORKGROUP_SIZE + lid)] = 0u;
   }
+  scratch[counter_at(8u * WORKGROUP_SIZE + lid)] = value;
   var ranks: array<u32, 4>;
   for (var k = 0u; k < ITEMS; k = k + 1u) {
     ranks[k] = 0u;
@@ -220,7 +285,7 @@ fn split(lid: u32, nibbles: array<u32, 4>) -> array<u32, 4> {
     }
   }
   workgroupBarrier();
-  if (lid < 128u) {
+  if (lid < 144u) {
     let at = counter_at((lid / 16u) * WORKGROUP_SIZE + (lid % 16u) * 16u);
     var sum = 0u;
     for (var i = 0u; i < 16u; i = i + 1u) {
@@ -231,7 +296,7 @@ fn split(lid: u32, nibbles: array<u32, 4>) -> array<u32, 4> {
     segTotals[lid] = sum;
   }
   workgroupBarrier();
-  if (lid < 8u) {
+  if (lid < 9u) {
     var sum = 0u;
     for (var i = 0u; i < 16u; i = i + 1u) {
       let v = segTotals[lid * 16u + i];
@@ -249,7 +314,8 @@ fn split(lid: u32, nibbles: array<u32, 4>) -> array<u32, 4> {
       ranks[k] = ranks[k] + ((before >> ((b & 1u) * 16u)) & 0xffffu);
     }
   }
-  return ranks;
+  let row = 8u * WORKGROUP_SIZE;
+  return Split(ranks, scratch[counter_at(row + lid)] + segTotals[8u * 16u + lid / 16u]);
 }
 
 // The first position of nibble b in the tile ordered by the last split's nibbles.
@@ -303,11 +369,18 @@ fn downsweep(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg
       digits[k] = digit_of(elems[k]);
     }
   }
-  let ranks = split(lid, digits);
+  let ranks = split(lid, digits, 0u).ranks;
+  var at: array<u32, 4>;
   for (var k = 0u; k < ITEMS; k = k + 1u) {
+    at[k] = INVALID;
     if (digits[k] != INVALID) {
-      dst[digitOffset[digits[k]] + ranks[k]] = elems[k];
+      let j = digitOffset[digits[k]] + ranks[k];
+      dst[j] = elems[k];
+      at[k] = next_digit_of(elems[k]) * numTiles + j / TILE;
     }
+  }
+  if (params.nextBits != 0u) {
+    count_next(at);
   }
 }
 
@@ -324,24 +397,35 @@ fn downsweep_wide(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups
   }
   let start = tile * TILE;
   let valid = min(TILE, n - start);
-  tile_offsets(lid, tile, numTiles, workgroup_exclusive_scan(lid, digitTotals[lid]));
+  // Digit lid's destination less its first position in the ordered tile: its elements in earlier
+  // tiles, plus the elements of smaller digits outside this tile (all smaller digits precede it
+  // in dst, but those of this tile also precede it in the tile). The scan of the latter rides on
+  // the first split.
+  let before = tileHist[lid * numTiles + tile];
+  var through = digitTotals[lid];
+  if (tile + 1u < numTiles) {
+    through = tileHist[lid * numTiles + tile + 1u];
+  }
+  let outside = digitTotals[lid] - (through - before);
 
-  var digits: array<u32, 4>;
-  var idx: array<u32, 4>;
+  // Each element travels as its order word.
+  var words: array<u32, 4>;
   var nibbles: array<u32, 4>;
   for (var k = 0u; k < ITEMS; k = k + 1u) {
     let i = lid * ITEMS + k;
     nibbles[k] = INVALID;
-    idx[k] = i;
     if (i < valid) {
-      digits[k] = digit_of(src[start + i]);
-      nibbles[k] = digits[k] & 15u;
+      let e = src[start + i];
+      let d = digit_of(e);
+      words[k] = i | (next_digit_of(e) << 16u) | (d << 24u);
+      nibbles[k] = d & 15u;
     }
   }
-  var ranks = split(lid, nibbles);
+  let low = split(lid, nibbles, outside);
+  digitOffset[lid] = before + low.before;
   for (var k = 0u; k < ITEMS; k = k + 1u) {
     if (nibbles[k] != INVALID) {
-      order[nibble_start(nibbles[k]) + ranks[k]] = idx[k] | (digits[k] << 16u);
+      order[nibble_start(nibbles[k]) + low.ranks[k]] = words[k];
     }
   }
   workgroupBarrier();
@@ -349,27 +433,14 @@ fn downsweep_wide(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups
     let p = lid * ITEMS + k;
     nibbles[k] = INVALID;
     if (p < valid) {
-      let v = order[p];
-      idx[k] = v & 0xffffu;
-      digits[k] = v >> 16u;
-      nibbles[k] = digits[k] >> 4u;
+      words[k] = order[p];
+      nibbles[k] = words[k] >> 28u;
     }
   }
-  ranks = split(lid, nibbles);
+  let high = split(lid, nibbles, 0u);
   for (var k = 0u; k < ITEMS; k = k + 1u) {
     if (nibbles[k] != INVALID) {
-      order[nibble_start(nibbles[k]) + ranks[k]] = idx[k] | (digits[k] << 16u);
-    }
-  }
-  workgroupBarrier();
-  // Each digit's first position in the tile turns digitOffset into (destination - position).
-  for (var k = 0u; k < ITEMS; k = k + 1u) {
-    let p = k * WORKGROUP_SIZE + lid;
-    if (p < valid) {
-      let d = order[p] >> 16u;
-      if (p == 0u || (order[p - 1u] >> 16u) != d) {
-        digitOffset[d] = digitOffset[d] - p;
-      }
+      order[nibble_start(nibbles[k]) + high.ranks[k]] = words[k];
     }
   }
   workgroupBarrier();
@@ -377,7 +448,21 @@ fn downsweep_wide(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups
     let p = k * WORKGROUP_SIZE + lid;
     if (p < valid) {
       let v = order[p];
-      dst[digitOffset[v >> 16u] + p] = src[start + (v & 0xffffu)];
+      dst[digitOffset[v >> 24u] + p] = src[start + (v & 0xffffu)];
     }
+  }
+  // The next pass's counts, over each invocation's ITEMS consecutive positions (consecutive
+  // destinations within a digit, so runs of one (digit, tile) merge in count_next).
+  if (params.nextBits != 0u) {
+    var at: array<u32, 4>;
+    for (var k = 0u; k < ITEMS; k = k + 1u) {
+      let p = lid * ITEMS + k;
+      at[k] = INVALID;
+      if (p < valid) {
+        let v = order[p];
+        at[k] = ((v >> 16u) & 0xffu) * numTiles + (digitOffset[v >> 24u] + p) / TILE;
+      }
+    }
+    count_next(at);
   }
 }

@@ -1,7 +1,9 @@
 /*
  * Radix sort (shaders/radixSort.wgsl): a stable LSD sort of vec2<u32> elements, 4 or 8 bits per
- * pass, three dispatches per pass (upsweep, scan, downsweep; reduce-then-scan, no decoupled
- * look-back).
+ * pass (reduce-then-scan, no decoupled look-back): an upsweep counting the first pass's digits per
+ * tile, then two dispatches per pass, scan and downsweep, the downsweep also counting the next
+ * pass's digits per tile of its output (2P + 1 dispatches for P passes: 7 for the entry sort, 11
+ * for the pair sort of 10^6 slots; 3P before).
  *
  * Used twice per broad-phase step, with 8-bit digits: the sweep entries by their 24-bit key (3
  * passes), and the pairs by (proxy a, proxy b) as one key a << slotBits | b (2 x slotBits bits:
@@ -73,7 +75,8 @@ export class RadixSort {
   private readonly scan: Kernel;
   private readonly downsweep: Kernel;
   private readonly downsweepWide: Kernel;
-  private readonly tileHist: GpuArray;
+  /** Tile histograms, alternating per pass: pass k's counts, then prefix sums, in hist[k % 2]. */
+  private readonly hist: [GpuArray, GpuArray];
   private readonly digitTotals: GpuArray;
   private readonly params = new Map<string, Uniform>();
 
@@ -83,7 +86,7 @@ export class RadixSort {
     this.scan = new Kernel(ctx, 'radixSort', 'scan');
     this.downsweep = new Kernel(ctx, 'radixSort', 'downsweep');
     this.downsweepWide = new Kernel(ctx, 'radixSort', 'downsweep_wide');
-    this.tileHist = new GpuArray(ctx, 'radix tileHist', 4, MAX_RADIX * 64);
+    this.hist = [new GpuArray(ctx, 'radix tileHist 0', 4, MAX_RADIX * 64), new GpuArray(ctx, 'radix tileHist 1', 4, MAX_RADIX * 64)];
     this.digitTotals = new GpuArray(ctx, 'radix digitTotals', 4, MAX_RADIX);
   }
 
@@ -92,24 +95,43 @@ export class RadixSort {
     return this.digitTotals.buffer;
   }
 
-  /** Makes room for sorting up to `n` elements. */
-  reserve(n: number): void {
-    this.tileHist.ensure(MAX_RADIX * Math.max(1, Math.ceil(n / SORT_TILE)));
+  /**
+   * The tile histograms after the last encoded sort (pass k's per-tile counts, turned into
+   * exclusive prefix sums over the tiles by its scan, are in histograms[k % 2], at
+   * digit * tiles + tile).
+   */
+  get histograms(): readonly [GPUBuffer, GPUBuffer] {
+    return [this.hist[0].buffer, this.hist[1].buffer];
   }
 
-  private uniform(pass: SortPass, countWord: number): Uniform {
+  /** Makes room for sorting up to `n` elements. */
+  reserve(n: number): void {
+    for (const h of this.hist) h.ensure(MAX_RADIX * Math.max(1, Math.ceil(n / SORT_TILE)));
+  }
+
+  /** The parameters of `pass`, followed by `next` (undefined: the last pass). */
+  private uniform(pass: SortPass, next: SortPass | undefined, countWord: number): Uniform {
     const bits = pass.bits ?? 4;
     const lowBits = pass.lowBits ?? 0;
-    const key = `${pass.shift}:${pass.component}:${countWord}:${bits}:${lowBits}`;
+    const nextBits = next ? (next.bits ?? 4) : 0;
+    const nextLowBits = next?.lowBits ?? 0;
+    const key = `${pass.shift}:${pass.component}:${countWord}:${bits}:${lowBits}>${next ? `${next.shift}:${next.component}:${nextBits}:${nextLowBits}` : 'last'}`;
     let u = this.params.get(key);
     if (!u) {
-      if (pass.component === 2 && !(lowBits >= 1 && lowBits <= 31)) throw new Error(`RadixSort: lowBits ${lowBits} is not in [1, 31]`);
-      u = new Uniform(this.ctx, `radix params ${key}`, 8);
+      for (const p of next ? [pass, next] : [pass]) {
+        const low = p.lowBits ?? 0;
+        if (p.component === 2 && !(low >= 1 && low <= 31)) throw new Error(`RadixSort: lowBits ${low} is not in [1, 31]`);
+      }
+      u = new Uniform(this.ctx, `radix params ${key}`, 12);
       u.u32[0] = pass.shift;
       u.u32[1] = pass.component;
       u.u32[2] = countWord;
       u.u32[3] = bits;
       u.u32[4] = lowBits;
+      u.u32[5] = next?.shift ?? 0;
+      u.u32[6] = next?.component ?? 0;
+      u.u32[7] = nextBits;
+      u.u32[8] = nextLowBits;
       u.upload();
       this.params.set(key, u);
     }
@@ -124,23 +146,25 @@ export class RadixSort {
     let src = a;
     let dst = b;
     const maxTiles = 'groups' in dispatch ? dispatch.groups : Math.ceil((dispatch.maxCount ?? Infinity) / SORT_TILE);
-    for (const pass of passes) {
-      const u = this.uniform(pass, countWord).buffer;
-      const up = this.upsweep.bind({ 0: u, 1: src, 2: state, 3: this.tileHist.buffer });
-      const sc = this.scan.bind({ 0: u, 2: state, 3: this.tileHist.buffer, 4: this.digitTotals.buffer });
+    for (let k = 0; k < passes.length; ++k) {
+      const pass = passes[k];
+      const u = this.uniform(pass, passes[k + 1], countWord).buffer;
+      const hist = this.hist[k % 2].buffer;
+      // The last pass counts nothing, but the binding is static: it gets the idle buffer too.
+      const nextHist = this.hist[(k + 1) % 2].buffer;
       const bits = pass.bits ?? 4;
       const downsweep = bits === 8 ? this.downsweepWide : this.downsweep;
       const scanGroups = maxTiles <= SERIAL_TILES ? 1 : (1 << bits) / rowsPerGroup(maxTiles, 1 << bits);
-      const down = downsweep.bind({ 0: u, 1: src, 2: state, 3: this.tileHist.buffer, 4: this.digitTotals.buffer, 5: dst });
-      if ('groups' in dispatch) {
-        rec.dispatch(this.upsweep, up, dispatch.groups);
-        rec.dispatch(this.scan, sc, scanGroups);
-        rec.dispatch(downsweep, down, dispatch.groups);
-      } else {
-        rec.dispatchIndirect(this.upsweep, up, dispatch.indirect, dispatch.offset);
-        rec.dispatch(this.scan, sc, scanGroups);
-        rec.dispatchIndirect(downsweep, down, dispatch.indirect, dispatch.offset);
+      const sc = this.scan.bind({ 0: u, 2: state, 3: hist, 4: this.digitTotals.buffer, 6: nextHist });
+      const down = downsweep.bind({ 0: u, 1: src, 2: state, 3: hist, 4: this.digitTotals.buffer, 5: dst, 6: nextHist });
+      if (k === 0) {
+        const up = this.upsweep.bind({ 0: u, 1: src, 2: state, 3: hist });
+        if ('groups' in dispatch) rec.dispatch(this.upsweep, up, dispatch.groups);
+        else rec.dispatchIndirect(this.upsweep, up, dispatch.indirect, dispatch.offset);
       }
+      rec.dispatch(this.scan, sc, scanGroups);
+      if ('groups' in dispatch) rec.dispatch(downsweep, down, dispatch.groups);
+      else rec.dispatchIndirect(downsweep, down, dispatch.indirect, dispatch.offset);
       const t = src;
       src = dst;
       dst = t;
