@@ -6,14 +6,22 @@
 // along the sweep axis.
 // In:  proxyAABB[p] for p in [0, count) (dead slots: lower > upper); the layout in the state
 //      buffer (STATE_AXIS, STATE_STRIPS, STATE_OTHER_*, STATE_AXIS_*); STATE_ENTRY_CAPACITY.
-// Out: items[0, E) = (key, slot), E = state[STATE_ENTRIES]; replicaOffset[p]; indirect sizes.
+//      proxyRef[p], proxyFilter[p] (body, flag word; category, mask, group).
+// Out: items[0, E) = (key, slot), E = state[STATE_ENTRIES]; replicaOffset[p]; indirect sizes;
+//      proxyRecords[2p, 2p + 1] for live proxies: what the sweep's gather reads of a proxy, in one
+//      32-byte sector (sweep.wgsl: reading three tables at the sorted entries' random slots cost
+//      twice as much at 10^6 proxies).
 // Passes:
 //   `replicas`  replicaOffset[p] = strips spanned by live proxy p (0 for a dead slot);
 //   (scan.wgsl makes them exclusive offsets; the total goes to state[STATE_ENTRY_TOTAL])
 //   `size_args` state[STATE_ENTRIES] = the total, or 0 and OVERFLOW_ENTRIES when it passes the
 //               host-given capacity (the host grows the entry buffers and redoes the update);
 //               the indirect sizes of the passes over the entries (ARGS_ENTRY_*);
-//   `entries`   items[replicaOffset[p] + i] = (key of strip lo + i, p).
+//   `entries`   items[replicaOffset[p] + i] = (key of strip lo + i, p); proxyRecords[2p] = the
+//               sortable keys of the AABB with the sweep axis first (min axis, min other, max
+//               axis, max other), proxyRecords[2p + 1] = (body, category | mask << 16, group
+//               (int16 bits) | flag word << 16, lo << QUANT_BITS | the quantised upper bound on
+//               the sweep axis).
 // Invariants: entries of a proxy are consecutive and in strip order; the quantisation and the
 // strip of a coordinate are monotone, so a <= b on floats gives key(a) <= key(b) in a strip.
 
@@ -30,6 +38,9 @@ struct KeysParams {
 @group(0) @binding(3) var<storage, read_write> replicaOffset: array<u32>;
 @group(0) @binding(4) var<storage, read_write> items: array<vec2<u32>>;
 @group(0) @binding(5) var<storage, read_write> indirect: array<u32>;
+@group(0) @binding(6) var<storage, read> proxyRef: array<vec4<u32>>;
+@group(0) @binding(7) var<storage, read> proxyFilter: array<vec2<u32>>;
+@group(0) @binding(8) var<storage, read_write> proxyRecords: array<vec4<u32>>;
 
 struct SweepLayout {
   axis: u32,
@@ -101,6 +112,13 @@ fn entries(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: 
   let hi = strip_of(box[2u + other], l.otherLo, l.invH, l.strips);
   let q = quantise(box[l.axis], l.axisLo, l.scale);
   let quantBits = key_quant_bits(l.strips);
+  let keys = vec4<u32>(sortable_key(box.x), sortable_key(box.y), sortable_key(box.z), sortable_key(box.w));
+  let proxy = proxyRef[p];
+  let filterBits = proxyFilter[p];
+  // lo < MAX_STRIPS = 2^STRIP_BITS and the bound <= QUANT_MAX: they share one word.
+  let upper = quantise(box[2u + l.axis], l.axisLo, l.scale);
+  proxyRecords[2u * p] = select(keys, keys.yxwz, l.axis == 1u);
+  proxyRecords[2u * p + 1u] = vec4<u32>(proxy.z, filterBits.x, (filterBits.y & 0xffffu) | (proxy.w << 16u), (lo << QUANT_BITS) | upper);
   let capacity = state[STATE_ENTRY_CAPACITY];
   let first = replicaOffset[p];
   for (var k = lo; k <= hi; k = k + 1u) {

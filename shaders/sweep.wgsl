@@ -2,7 +2,7 @@
 // split evenly however the intervals are distributed.
 //
 // In:  items[e] = (key, proxy slot) sorted by key (keys.wgsl, radixSort.wgsl), e in [0, E),
-//      E = state[STATE_ENTRIES]; proxyAABB, proxyRef, proxyFilter (per slot); jointRange[body] =
+//      E = state[STATE_ENTRIES]; proxyRecords (per slot, keys.wgsl); jointRange[body] =
 //      (start, count) into jointList: the bodies joined to `body` by a joint with
 //      collideConnected == false, ascending.
 // Out: pairs[0, min(found, capacity)) = (proxy a, proxy b), a < b, in no particular order;
@@ -14,6 +14,7 @@
 //               what each candidate test reads, side by side; sortedInfo[e] = (slot, body,
 //               category | mask << 16, group (int16 bits) | flag word << 16). Then the entry's
 //               candidates: the entries after it up to the first whose key passes its upper key
+//               (all of it from the proxy's 32-byte record: one sector read per entry)
 //               (a galloping, then binary search on the sorted keys); workOffset[e] = their number
 //               in chunks of CHUNK.
 //   (scan.wgsl turns workOffset into exclusive offsets and their total, state[STATE_WORK_TOTAL])
@@ -40,9 +41,7 @@ struct SweepParams {
 
 @group(0) @binding(0) var<uniform> params: SweepParams;
 @group(0) @binding(1) var<storage, read> items: array<vec2<u32>>;
-@group(0) @binding(2) var<storage, read> proxyAABB: array<vec4<f32>>;
-@group(0) @binding(3) var<storage, read> proxyRef: array<vec4<u32>>;
-@group(0) @binding(4) var<storage, read> proxyFilter: array<vec2<u32>>;
+@group(0) @binding(2) var<storage, read> proxyRecords: array<vec4<u32>>;
 @group(0) @binding(5) var<storage, read> state: array<u32>;
 @group(0) @binding(6) var<storage, read_write> sortedKeys: array<vec4<u32>>;
 @group(0) @binding(7) var<storage, read_write> sortedInfo: array<vec4<u32>>;
@@ -65,24 +64,13 @@ fn gather(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: v
   }
   let item = items[e];
   let slot = item.y;
-  let b = proxyAABB[slot];
-  let axis = state[STATE_AXIS];
-  var box = vec4<u32>(sortable_key(b.x), sortable_key(b.y), sortable_key(b.z), sortable_key(b.w));
-  var otherMin = b.y;
-  if (axis == 1u) {
-    box = box.yxwz;
-    otherMin = b.x;
-  }
-  let proxy = proxyRef[slot];
-  let filterBits = proxyFilter[slot];
-  sortedInfo[e] = vec4<u32>(slot, proxy.z, filterBits.x, (filterBits.y & 0xffffu) | (proxy.w << 16u));
-  let strips = state[STATE_STRIPS];
-  let stripLo = strip_of(otherMin, bitcast<f32>(state[STATE_OTHER_LO]), bitcast<f32>(state[STATE_OTHER_INV_H]), strips);
-  let quantBits = key_quant_bits(strips);
+  let info = proxyRecords[2u * slot + 1u];
+  sortedInfo[e] = vec4<u32>(slot, info.x, info.y, info.z);
+  let quantBits = key_quant_bits(state[STATE_STRIPS]);
   let strip = item.x >> quantBits;
-  let upper = sweep_key(strip, quantise(b[2u + axis], bitcast<f32>(state[STATE_AXIS_LO]), bitcast<f32>(state[STATE_AXIS_SCALE])), quantBits);
-  sortedKeys[2u * e] = box;
-  sortedKeys[2u * e + 1u] = vec4<u32>(item.x, upper, stripLo, strip);
+  let upper = sweep_key(strip, info.w & QUANT_MAX, quantBits);
+  sortedKeys[2u * e] = proxyRecords[2u * slot];
+  sortedKeys[2u * e + 1u] = vec4<u32>(item.x, upper, info.w >> QUANT_BITS, strip);
 
   // Gallop: find hi with items[hi].x > upper (or hi = n), lo just past the last known <= upper.
   var lo = e + 1u;

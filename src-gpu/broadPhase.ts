@@ -221,7 +221,7 @@ export class GpuBroadPhase {
     pass('axis', (rec) => this.axis.encode(rec, inputs.proxyAABB, n, this.state));
     let sorted: GPUBuffer = this.items.buffer;
     pass('sort', (rec) => {
-      this.keys.encode(rec, inputs.proxyAABB, n, this.state, this.items.buffer, this.indirect);
+      this.keys.encode(rec, inputs, this.state, this.items.buffer, this.indirect);
       sorted = this.sort.encode(rec, this.items.buffer, this.itemsTmp.buffer, ENTRY_SORT_PASSES, this.state, STATE.ENTRIES, {
         indirect: this.indirect,
         offset: ARGS.ENTRY_TILES * 4,
@@ -229,7 +229,7 @@ export class GpuBroadPhase {
       });
     });
     pass('sweep', (rec) => {
-      this.sweep.encodePrepare(rec, inputs, sorted, this.state, this.indirect);
+      this.sweep.encodePrepare(rec, this.keys.records.buffer, sorted, this.state, this.indirect);
       this.sweep.encodeEmit(rec, inputs, this.pairsA.buffer, this.state, this.indirect);
     });
     pass('pairs', (rec) => {

@@ -1,7 +1,8 @@
 /*
  * Stage 5, sweep (shaders/sweep.wgsl): sweep-and-prune over the sorted entries, strip by strip.
  *
- * In:  items[0, E) = (key, proxy slot) sorted by key; the proxy tables (SweepInputs).
+ * In:  items[0, E) = (key, proxy slot) sorted by key; the proxies' records (keys.ts), the joint
+ *      tables (SweepInputs).
  * Out: pairs[0, min(found, capacity)) = (a, b), a < b, unordered; state[STATE.PAIR_COUNT] = found.
  * Steps: gather (AABB keys, filter data and strip data in sorted order, and each entry's
  * candidate range in work items of SWEEP_CHUNK candidates), scan (work-item offsets; total in
@@ -65,16 +66,14 @@ export class SweepStage {
     this.params.upload();
   }
 
-  /** gather, scan, emit_args. */
-  encodePrepare(rec: Recorder, inputs: SweepInputs, items: GPUBuffer, state: GPUBuffer, indirect: GPUBuffer): void {
+  /** gather, scan, emit_args; `records`: the proxies' records (KeysStage.records). */
+  encodePrepare(rec: Recorder, records: GPUBuffer, items: GPUBuffer, state: GPUBuffer, indirect: GPUBuffer): void {
     const entryGroups = ARGS.ENTRY_GROUPS * 4;
     rec.dispatchIndirect(
       this.gather,
       this.gather.bind({
         1: items,
-        2: inputs.proxyAABB,
-        3: inputs.proxyRef,
-        4: inputs.proxyFilter,
+        2: records,
         5: state,
         6: this.sortedKeys.buffer,
         7: this.sortedInfo.buffer,

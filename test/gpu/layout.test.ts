@@ -73,6 +73,9 @@ it('declares the state words, indirect offsets and flags the host uses', () => {
   expect(c.get('OVERFLOW_ENTRIES')).toBe(layout.OVERFLOW_ENTRIES);
   expect(c.get('QUANT_BITS')).toBe(layout.QUANT_BITS);
   expect(c.get('MAX_STRIPS')).toBe(layout.MAX_STRIPS);
+  // A proxy record packs its first strip and its quantised upper bound into one word (keys.wgsl).
+  expect(c.get('MAX_STRIPS')! * (c.get('QUANT_MAX')! + 1)).toBeLessThanOrEqual(2 ** 32);
+  expect(c.get('QUANT_MAX')).toBe(2 ** c.get('QUANT_BITS')! - 1);
   expect(c.get('WORKGROUP_SIZE')).toBe(layout.WORKGROUP_SIZE);
   expect(Math.max(...Object.values(layout.STATE))).toBeLessThan(layout.STATE_WORDS);
   expect(Math.max(...Object.values(layout.ARGS)) + 3).toBeLessThanOrEqual(layout.INDIRECT_WORDS);
