@@ -200,6 +200,7 @@ const MF_BEGAN: u32 = 0x40u;           // BeginContact: touching now, not before
 const MF_ENDED: u32 = 0x80u;           // EndContact: touching before, not now
 const MF_WARM: u32 = 0x100u;           // matched a contact of the previous step
 const MF_SWAPPED: u32 = 0x200u;        // fixture A is the pair's second proxy (b2Contact::Create swapped)
+const MF_SOLVED: u32 = 0x400u;         // solved this step (an awake island's): b2Island::Report gives it PostSolve
 
 const NO_CONTACT: u32 = 0xffffffffu;
 const EVENT_BEGIN: u32 = 1u;

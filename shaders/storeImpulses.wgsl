@@ -4,7 +4,10 @@
 // In:  solverState[SV_COUNT], contactBodies (contact index, points used), constraints (impulses).
 // Out: manifolds[4i + 3] (normalImpulse, tangentImpulse of points 0 and 1) of each solver
 //      contact i; a point the velocity solver did not use (one point kept of an ill-conditioned
-//      pair) keeps the manifold's value, as in 2.2.1.
+//      pair) keeps the manifold's value, as in 2.2.1. MF_SOLVED in the header of each contact
+//      that was solved (one with a dynamic body left by prepareContacts: an awake island's), so
+//      that PostSolve skips sleeping contacts as b2Island::Report does (the narrow phase writes
+//      every header afresh each step).
 // Invariants: one invocation per solver contact, each writing its own manifold.
 
 @group(0) @binding(0) var<storage, read> solverState: array<u32>;
@@ -27,5 +30,8 @@ fn main(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: vec
   } else {
     let old = manifolds[slot];
     manifolds[slot] = vec4<u32>(bitcast<vec2<u32>>(impulses.xy), old.zw);
+  }
+  if ((cb.z & (CB_DYNAMIC_A | CB_DYNAMIC_B)) != 0u) {
+    manifolds[4u * cb.w].x = manifolds[4u * cb.w].x | MF_SOLVED;
   }
 }

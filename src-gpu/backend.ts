@@ -7,11 +7,12 @@
  *      Step(dt, vi, pi) from b2World.Step.
  * Out: Step submits a GpuStepper step without waiting. Synchronize() / StepAsync() wait for the
  *      steps in flight and read back, in one map (GpuStepper.readBodies with extra ranges), the
- *      body motion, the logged steps' contact events when the listener has BeginContact or
- *      EndContact, and the last step's contacts when the listener has any event method (their
- *      b2Contact objects' manifolds, PostSolve's impulses) or the world is handed back; then
- *      delivers the events (events.ts). Detach() reads everything, rebuilds the JavaScript
- *      engine's contacts with the GPU's manifolds and impulses, and moves its broad-phase proxies.
+ *      body motion, the logged steps' contact events (logged while the listener has BeginContact or
+ *      EndContact) and contacts (logged while it has PostSolve: each step's impulses and
+ *      manifolds), and the last step's contacts when the listener has any event method (their
+ *      b2Contact objects' manifolds) or the world is handed back; then delivers the events
+ *      (events.ts). Detach() reads everything, rebuilds the JavaScript engine's contacts with the
+ *      GPU's manifolds and impulses, and moves its broad-phase proxies.
  * Invariants: steps run in call order, each recorded after the previous one's submission; at most
  *      `maxQueuedSteps` wait to be recorded (Step throws beyond); the GPU holds at most four more
  *      (the narrow phase's read-back ring). A listener overriding PreSolve, or a custom contact
@@ -246,7 +247,9 @@ export class WebGPUBackend implements b2WorldBackend {
         () => undefined,
       );
       this.stepsSinceRead++;
-      if (wantsEvents(engine, world.m_contactManager.m_contactListener)) events.record(stepper.narrowPhase, settled);
+      // PostSolve follows a step's solve only (b2World::Step solves when dt > 0).
+      const listener = world.m_contactManager.m_contactListener;
+      events.record(stepper.narrowPhase, settled, wantsEvents(engine, listener), dt > 0 && engine.listenerOverrides(listener, 'PostSolve'));
     } catch (err) {
       this.failure = err;
     } finally {
@@ -277,9 +280,9 @@ export class WebGPUBackend implements b2WorldBackend {
   }
 
   /**
-   * Waits for every step called so far and reads back (one map) the bodies, the logged events and,
-   * when someone needs them (`carry`, or a listener), the last step's contacts; delivers the
-   * events. Returns the contact set read, if any.
+   * Waits for every step called so far and reads back (one map) the bodies, the logged events and
+   * contacts and, when someone needs them (`carry`, or a listener), the last step's contacts;
+   * delivers the events. Returns the last step's contact set read, if any.
    */
   private async read(world: b2World, carry: boolean): Promise<GpuContactSet | null> {
     const { engine, stepper, events } = this.attached('Synchronize');
@@ -304,7 +307,7 @@ export class WebGPUBackend implements b2WorldBackend {
     const broadPhase = world.m_contactManager.m_broadPhase;
     for (let b = world.m_bodyList; b; b = b.m_next) b.SynchronizeFixtures();
     broadPhase.m_moveCount = 0;
-    const set = GpuContactEvents.contactSet(plan);
+    const set = GpuContactEvents.contactSet(plan.last);
     events.deliver(world, stepper.mirror, plan, set);
     return set;
   }

@@ -1,21 +1,25 @@
 /*
  * Contacts and contact events of the WebGPU backend (backend.ts) on the host: the GPU's begin/end
- * lists of every step kept until the next synchronisation, then delivered to the world's
- * b2ContactListener with b2Contact objects this module keeps.
+ * lists and contacts of every step kept until the next synchronisation, then delivered to the
+ * world's b2ContactListener with b2Contact objects this module keeps.
  *
- * In:  record(): after a step's submission, a copy of its event list (the narrow phase's whole
- *      list buffer, 2 x contact capacity records: the count is known only from the step's
- *      read-back) appended to a log buffer on the GPU. plan(): the ranges a synchronisation copies
- *      in readBodies()'s one map: each logged step's events, and the last step's contact keys and
- *      manifolds when someone needs them (a listener, or the switch back to the JavaScript engine).
- * Out: deliver(): BeginContact / EndContact of every logged step, in step order, each step's in the
- *      GPU's event order (sorted by the pair's proxy slots, then the contacts gone with their pair,
- *      in the same order), then PostSolve for the last step's touching non-sensor contacts, in
- *      contact order, with the GPU's normal and tangent impulses.
+ * In:  record(): after a step's submission, appended to log buffers on the GPU (one submission):
+ *      a copy of its event list when asked (the narrow phase's whole list buffer, 2 x contact
+ *      capacity records), and of its contact keys and manifolds (with the solver's impulses) when
+ *      asked (for PostSolve: the whole buffers, contact capacity records); the counts are known
+ *      only from the step's read-back. plan(): the ranges a synchronisation copies in
+ *      readBodies()'s one map: each logged step's events and contacts, and the last step's contact
+ *      keys and manifolds when someone needs them (a listener, or the switch back to the
+ *      JavaScript engine): its logged ones when it logged them, else the narrow phase's.
+ * Out: deliver(): for every logged step, in step order, its BeginContact / EndContact in the GPU's
+ *      event order (sorted by the pair's proxy slots, then the contacts gone with their pair, in
+ *      the same order), then, when it logged its contacts, PostSolve for the contacts the solver
+ *      solved in it (touching, not sensors, in awake islands: MF.SOLVED), in contact order, with its normal and tangent impulses and its manifold in the
+ *      b2Contact.
  * Invariants: one b2Contact per GPU contact (pair of proxy slots, checked against the slots'
  *      fixtures) from its begin until its end or until it leaves the GPU's contact list: BeginContact
  *      and EndContact get the same object. These objects are not in the world's contact list.
- *      Their manifolds are the last synchronised step's.
+ *      After a synchronisation their manifolds are its last step's.
  */
 
 import type { b2Contact } from '../src/dynamics/contacts/b2Contact';
@@ -37,18 +41,25 @@ const EVENT_BYTES = 16;
 const KEY_BYTES = 16;
 const MANIFOLD_BYTES = 4 * MANIFOLD_WORDS;
 
-/** One step's events in the log. */
-interface Segment {
+/** Records of one step in a log. */
+interface LogRange {
   /** First record in the log. */
   offset: number;
-  /** Records copied (the step's list capacity). */
+  /** Records copied (the step's buffer capacity). */
   capacity: number;
-  /** The step's event count, once its read-back is in. */
+  /** The step's count, once its read-back is in. */
   count: number | null;
+}
+
+/** One step's entries in the logs (events, contacts: null when not logged). */
+interface Segment {
+  events: LogRange | null;
+  contacts: LogRange | null;
+  counted: boolean;
   settled: Promise<unknown>;
 }
 
-/** The GPU's contacts of the last synchronised step: keys and manifold records. */
+/** The GPU's contacts of one step: keys and manifold records. */
 export interface GpuContactSet {
   count: number;
   /** (proxy a, proxy b, generation a, generation b) per contact, a < b. */
@@ -57,12 +68,19 @@ export interface GpuContactSet {
   manifoldF32: Float32Array;
 }
 
+/** The first `count` contacts of a step, read: keys and manifold records. */
+export interface ContactRead {
+  keys: GpuReadRange;
+  manifolds: GpuReadRange;
+  count: number;
+}
+
 /** A synchronisation's read: readBodies() fills the ranges, then contactSet() decodes. */
 export interface EventPlan {
-  eventRanges: GpuReadRange[];
-  keys: GpuReadRange | null;
-  manifolds: GpuReadRange | null;
-  contactCount: number;
+  /** Every logged step, in step order. */
+  steps: { events: GpuReadRange | null; contacts: ContactRead | null }[];
+  /** The last step's contacts (the last logged step's own when they are its), null when not read. */
+  last: ContactRead | null;
 }
 
 /** Pair key of two proxy slots, a < b (slots stay far below 2^26). */
@@ -78,9 +96,14 @@ export function wantsEvents(engine: b2WorldBackendEngine, listener: b2ContactLis
 export class GpuContactEvents {
   private readonly ctx: GpuContext;
   private readonly engine: b2WorldBackendEngine;
-  private readonly log: GpuArray;
-  private used = 0;
+  private readonly eventLog: GpuArray;
+  private readonly keyLog: GpuArray;
+  private readonly manifoldLog: GpuArray;
+  private eventsUsed = 0;
+  private contactsUsed = 0;
   private segments: Segment[] = [];
+  /** The last step recorded, when it logged anything. */
+  private lastStep: Segment | null = null;
   /** The backend's b2Contact objects by pair key. */
   readonly contacts = new Map<number, b2Contact>();
   private readonly impulse: b2ContactImpulse;
@@ -88,7 +111,9 @@ export class GpuContactEvents {
   constructor(ctx: GpuContext, engine: b2WorldBackendEngine) {
     this.ctx = ctx;
     this.engine = engine;
-    this.log = new GpuArray(ctx, 'contact event log', EVENT_BYTES, 1024);
+    this.eventLog = new GpuArray(ctx, 'contact event log', EVENT_BYTES, 1024);
+    this.keyLog = new GpuArray(ctx, 'contact key log', KEY_BYTES, 1024);
+    this.manifoldLog = new GpuArray(ctx, 'contact manifold log', MANIFOLD_BYTES, 1024);
     this.impulse = engine.createImpulse();
   }
 
@@ -101,64 +126,121 @@ export class GpuContactEvents {
     }
   }
 
-  /** Appends the step just submitted's event list to the log (one copy on the GPU queue). */
-  record(np: GpuNarrowPhase, settled: Promise<NarrowPhaseResult>): void {
-    const events = np.events;
-    const capacity = Math.min(Math.floor(events.size / EVENT_BYTES), 2 * np.contactCapacity);
-    this.log.ensure(this.used + capacity, this.used);
+  /**
+   * Called after each step's submission: appends its event list (`events`) and its contact keys
+   * and manifolds (`contacts`) to the logs, with one submission on the GPU queue; nothing when
+   * neither is asked.
+   */
+  record(np: GpuNarrowPhase, settled: Promise<NarrowPhaseResult>, events: boolean, contacts: boolean): void {
+    if (!events && !contacts) {
+      this.lastStep = null;
+      return;
+    }
+    const segment: Segment = { events: null, contacts: null, counted: false, settled };
     const encoder = this.ctx.device.createCommandEncoder({ label: 'contact event log' });
-    encoder.copyBufferToBuffer(events, 0, this.log.buffer, EVENT_BYTES * this.used, EVENT_BYTES * capacity);
+    if (events) {
+      const capacity = Math.min(Math.floor(np.events.size / EVENT_BYTES), 2 * np.contactCapacity);
+      this.eventLog.ensure(this.eventsUsed + capacity, this.eventsUsed);
+      encoder.copyBufferToBuffer(np.events, 0, this.eventLog.buffer, EVENT_BYTES * this.eventsUsed, EVENT_BYTES * capacity);
+      segment.events = { offset: this.eventsUsed, capacity, count: null };
+      this.eventsUsed += capacity;
+    }
+    if (contacts) {
+      const keys = np.contactKeys;
+      const manifolds = np.manifolds;
+      const capacity = Math.min(Math.floor(keys.size / KEY_BYTES), Math.floor(manifolds.size / MANIFOLD_BYTES), np.contactCapacity);
+      const at = this.contactsUsed;
+      this.keyLog.ensure(at + capacity, at);
+      this.manifoldLog.ensure(at + capacity, at);
+      encoder.copyBufferToBuffer(keys, 0, this.keyLog.buffer, KEY_BYTES * at, KEY_BYTES * capacity);
+      encoder.copyBufferToBuffer(manifolds, 0, this.manifoldLog.buffer, MANIFOLD_BYTES * at, MANIFOLD_BYTES * capacity);
+      segment.contacts = { offset: at, capacity, count: null };
+      this.contactsUsed += capacity;
+    }
     this.ctx.device.queue.submit([encoder.finish()]);
-    const segment: Segment = { offset: this.used, capacity, count: null, settled };
     segment.settled = settled.then((r) => {
-      segment.count = Math.min(r.eventCount, capacity);
+      if (segment.events !== null) segment.events.count = Math.min(r.eventCount, segment.events.capacity);
+      if (segment.contacts !== null) segment.contacts.count = Math.min(r.contactCount, segment.contacts.capacity);
+      segment.counted = true;
     });
     this.segments.push(segment);
-    this.used += capacity;
+    this.lastStep = segment;
   }
 
-  /** Resolves once the logged steps' event counts are in (a step logged meanwhile is not waited for). */
+  /** Resolves once the logged steps' counts are in (a step logged meanwhile is not waited for). */
   async counted(): Promise<void> {
     await Promise.all(this.segments.map((s) => s.settled));
   }
 
-  /** Whether every logged step's event count is in. */
+  /** Whether every logged step's counts are in. */
   get allCounted(): boolean {
-    return this.segments.every((s) => s.count !== null);
+    return this.segments.every((s) => s.counted);
   }
 
   /**
    * The ranges of one synchronisation (every logged step counted: see counted()): the logged steps'
-   * events, and the last step's `contactCount` contacts (keys, manifolds) when `contacts`. The log
-   * is emptied: the next step logs from its start, after this read's copy on the queue.
+   * events and contacts, and the last step's `contactCount` contacts (keys, manifolds) when
+   * `contacts`. The logs are emptied: the next step logs from their start, after this read's
+   * copy on the queue.
    */
   plan(np: GpuNarrowPhase, contacts: boolean, contactCount: number): EventPlan {
-    const eventRanges: GpuReadRange[] = this.segments.map((s) => ({ buffer: this.log.buffer, offset: EVENT_BYTES * s.offset, size: EVENT_BYTES * s.count!, data: null }));
+    const steps = this.segments.map((s) => ({
+      events: s.events && { buffer: this.eventLog.buffer, offset: EVENT_BYTES * s.events.offset, size: EVENT_BYTES * s.events.count!, data: null },
+      contacts: s.contacts && {
+        keys: { buffer: this.keyLog.buffer, offset: KEY_BYTES * s.contacts.offset, size: KEY_BYTES * s.contacts.count!, data: null },
+        manifolds: { buffer: this.manifoldLog.buffer, offset: MANIFOLD_BYTES * s.contacts.offset, size: MANIFOLD_BYTES * s.contacts.count!, data: null },
+        count: s.contacts.count!,
+      },
+    }));
+    const logged = this.lastStep !== null ? steps[steps.length - 1].contacts : null;
     this.segments = [];
-    this.used = 0;
-    if (!contacts) return { eventRanges, keys: null, manifolds: null, contactCount: 0 };
+    this.lastStep = null;
+    this.eventsUsed = 0;
+    this.contactsUsed = 0;
+    if (!contacts) return { steps, last: null };
     return {
-      eventRanges,
-      keys: { buffer: np.contactKeys, offset: 0, size: KEY_BYTES * contactCount, data: null },
-      manifolds: { buffer: np.manifolds, offset: 0, size: MANIFOLD_BYTES * contactCount, data: null },
-      contactCount,
+      steps,
+      last: logged ?? {
+        keys: { buffer: np.contactKeys, offset: 0, size: KEY_BYTES * contactCount, data: null },
+        manifolds: { buffer: np.manifolds, offset: 0, size: MANIFOLD_BYTES * contactCount, data: null },
+        count: contactCount,
+      },
     };
   }
 
-  /** The ranges of a plan, for readBodies(). */
+  /** The ranges of a plan, for readBodies() (the last step's contacts once, when it logged them). */
   static ranges(plan: EventPlan): GpuReadRange[] {
-    return plan.keys && plan.manifolds ? [...plan.eventRanges, plan.keys, plan.manifolds] : plan.eventRanges;
+    const out: GpuReadRange[] = [];
+    for (const s of plan.steps) {
+      if (s.events !== null) out.push(s.events);
+      if (s.contacts !== null) out.push(s.contacts.keys, s.contacts.manifolds);
+    }
+    if (plan.last !== null && plan.last !== plan.steps[plan.steps.length - 1]?.contacts) out.push(plan.last.keys, plan.last.manifolds);
+    return out;
   }
 
-  /** The contact set a plan read (null when it read none). */
-  static contactSet(plan: EventPlan): GpuContactSet | null {
-    if (plan.keys === null || plan.manifolds === null) return null;
+  /** The contact set a read holds (null for none). */
+  static contactSet(read: ContactRead | null): GpuContactSet | null {
+    if (read === null) return null;
     return {
-      count: plan.contactCount,
-      keys: new Uint32Array(plan.keys.data!),
-      manifoldU32: new Uint32Array(plan.manifolds.data!),
-      manifoldF32: new Float32Array(plan.manifolds.data!),
+      count: read.count,
+      keys: new Uint32Array(read.keys.data!),
+      manifoldU32: new Uint32Array(read.manifolds.data!),
+      manifoldF32: new Float32Array(read.manifolds.data!),
     };
+  }
+
+  /** The index in `set` of the contact of proxy slots (a, b), a < b, or -1 (keys are sorted by a, then b). */
+  static find(set: GpuContactSet, a: number, b: number): number {
+    let lo = 0;
+    let hi = set.count;
+    while (lo < hi) {
+      const mid = (lo + hi) >>> 1;
+      const ka = set.keys[4 * mid];
+      if (ka < a || (ka === a && set.keys[4 * mid + 1] < b)) lo = mid + 1;
+      else hi = mid;
+    }
+    return lo < set.count && set.keys[4 * lo] === a && set.keys[4 * lo + 1] === b ? lo : -1;
   }
 
   /** Writes record i of `set` into a b2Contact's manifold and touching flag. */
@@ -215,8 +297,8 @@ export class GpuContactEvents {
 
   /**
    * Delivers a synchronisation's events to the world's listener (the world locked, as during
-   * b2World.Step) and updates the b2Contact objects from the last step's contacts. Contacts no
-   * longer on the GPU are forgotten.
+   * b2World.Step), step by step, and leaves the b2Contact objects with the last step's contacts
+   * (`set`, the plan's `last`). Contacts no longer on the GPU are forgotten.
    */
   deliver(world: b2World, mirror: GpuWorld, plan: EventPlan, set: GpuContactSet | null): void {
     const listener = world.m_contactManager.m_contactListener;
@@ -230,32 +312,39 @@ export class GpuContactEvents {
     }
     world.m_flags |= e_locked;
     try {
-      if (listener !== null && wantsEvents(this.engine, listener)) {
-        for (const r of plan.eventRanges) {
-          const w = new Uint32Array(r.data!);
-          for (let e = 0; 4 * e < w.length; ++e) {
-            const c = this.contactFor(mirror, w[4 * e], w[4 * e + 1]);
-            if (c === null) continue;
-            const key = pairKey(Math.min(w[4 * e], w[4 * e + 1]), Math.max(w[4 * e], w[4 * e + 1]));
-            if (w[4 * e + 2] === EVENT_BEGIN) {
-              const i = index.get(key);
-              if (set !== null && i !== undefined) GpuContactEvents.writeManifold(c, set, i);
-              c.m_flags |= e_touchingFlag;
-              listener.BeginContact(c);
-            } else {
-              c.m_flags &= ~e_touchingFlag;
-              listener.EndContact(c);
-            }
-          }
+      if (listener !== null) {
+        const events = wantsEvents(this.engine, listener);
+        const postSolve = this.engine.listenerOverrides(listener, 'PostSolve');
+        for (const step of plan.steps) {
+          const stepSet = step.contacts === null ? null : step.contacts === plan.last ? set : GpuContactEvents.contactSet(step.contacts);
+          if (events && step.events !== null) this.beginEnd(listener, mirror, step.events, stepSet ?? set);
+          if (postSolve && stepSet !== null) this.postSolve(listener, mirror, stepSet);
         }
       }
       if (set !== null) {
         for (const key of this.contacts.keys()) if (!index.has(key)) this.contacts.delete(key);
         for (const [key, c] of this.contacts) GpuContactEvents.writeManifold(c, set, index.get(key)!);
-        if (listener !== null && this.engine.listenerOverrides(listener, 'PostSolve')) this.postSolve(listener, mirror, set);
       }
     } finally {
       world.m_flags &= ~e_locked;
+    }
+  }
+
+  /** One step's BeginContact / EndContact; a begun contact gets its manifold from `set` (the step's, else the last step's). */
+  private beginEnd(listener: b2ContactListener, mirror: GpuWorld, events: GpuReadRange, set: GpuContactSet | null): void {
+    const w = new Uint32Array(events.data!);
+    for (let e = 0; 4 * e < w.length; ++e) {
+      const c = this.contactFor(mirror, w[4 * e], w[4 * e + 1]);
+      if (c === null) continue;
+      if (w[4 * e + 2] === EVENT_BEGIN) {
+        const i = set === null ? -1 : GpuContactEvents.find(set, Math.min(w[4 * e], w[4 * e + 1]), Math.max(w[4 * e], w[4 * e + 1]));
+        if (i >= 0) GpuContactEvents.writeManifold(c, set!, i);
+        c.m_flags |= e_touchingFlag;
+        listener.BeginContact(c);
+      } else {
+        c.m_flags &= ~e_touchingFlag;
+        listener.EndContact(c);
+      }
     }
   }
 
@@ -264,7 +353,8 @@ export class GpuContactEvents {
     for (let i = 0; i < set.count; ++i) {
       const o = MANIFOLD_WORDS * i;
       const h = set.manifoldU32[o];
-      if ((h & (MF.TOUCHING | MF.SENSOR)) !== MF.TOUCHING) continue;
+      // Solved this step: touching, not a sensor, in an awake island (b2Island::Report).
+      if ((h & MF.SOLVED) === 0) continue;
       const [pa, pb] = GpuContactEvents.oriented(set, i);
       const c = this.contactFor(mirror, pa, pb);
       if (c === null) continue;
@@ -279,6 +369,8 @@ export class GpuContactEvents {
   }
 
   destroy(): void {
-    this.log.destroy();
+    this.eventLog.destroy();
+    this.keyLog.destroy();
+    this.manifoldLog.destroy();
   }
 }

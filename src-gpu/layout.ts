@@ -253,6 +253,7 @@ export const MF = {
   ENDED: 0x80,
   WARM: 0x100,
   SWAPPED: 0x200,
+  SOLVED: 0x400,
 } as const;
 /** u32 words per contact in the manifold buffer. */
 export const MANIFOLD_WORDS = 16;

@@ -37,7 +37,8 @@
  * differs from the engine's.
  * Sleeping bodies are not integrated and their contacts are not solved (islands.ts), nor joints
  * with a sleeping dynamic body (solveJoints.ts).
- * Not yet: 2.2.1's TOI island solve and sub-steps (timeOfImpact.ts), PreSolve / PostSolve.
+ * Not yet: 2.2.1's TOI island solve and sub-steps (timeOfImpact.ts), PreSolve (PostSolve is
+ * delivered by WebGPUBackend from the impulses left in the manifolds: events.ts).
  */
 
 import type { GpuContext } from './device';
