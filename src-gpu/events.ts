@@ -14,8 +14,8 @@
  * Out: deliver(): for every logged step, in step order, its BeginContact / EndContact in the GPU's
  *      event order (sorted by the pair's proxy slots, then the contacts gone with their pair, in
  *      the same order), then, when it logged its contacts, PostSolve for the contacts the solver
- *      solved in it (touching, not sensors, in awake islands: MF.SOLVED), in contact order, with its normal and tangent impulses and its manifold in the
- *      b2Contact.
+ *      solved in it (touching, not sensors, in awake islands: MF.SOLVED), in contact order,
+ *      with its normal and tangent impulses and its manifold in the b2Contact.
  * Invariants: one b2Contact per GPU contact (pair of proxy slots, checked against the slots'
  *      fixtures) from its begin until its end or until it leaves the GPU's contact list: BeginContact
  *      and EndContact get the same object. These objects are not in the world's contact list.
