@@ -24,12 +24,12 @@
  * (resting pyramids would fall asleep and cost nothing: this measures the full step's work).
  * GPU: a device with Dawn's validation off (requestGpu skipValidation) and timestamp queries when
  * the adapter has them. Each world gets a GpuStepper; after GPU_WARMUP awaited steps (on the H100
- * the first five steps of 10^6 pyramids take 36 ms of device time, the sixth on 14.7: a warm-up
- * of 3 put those slow steps into the medians), `--steps` awaited
+ * the first five steps of 10^6 pyramids take 36 ms of device time, then 14.7: a warm-up of 3
+ * put those slow steps into the medians), `--steps` awaited
  * steps give the wall time of step() (mirror sync, recording, submit, wait for the 192-byte
  * read-back), its host split, the device time (timestamp span of the step's passes, and per part:
- * broad phase, narrow phase, solver) and the dispatches recorded; then, after 4 + 3 steps not
- * awaited (the stream's first read-backs grow the buffers to 1.5x the counts: that reallocation
+ * broad phase, narrow phase, solver) and the dispatches recorded; then, after STREAM_WARMUP steps
+ * not awaited (the stream's first read-backs grow the buffers to 1.5x the counts: that reallocation
  * is not a steady-state cost), `--steps` more steps not awaited ({ wait: false }, up to four in
  * flight) give the wall time per step of a stream of steps, and the host time each step spent
  * recording and waiting for a free read-back buffer (the GPU being the bottleneck).
@@ -62,6 +62,8 @@ const POSITION_ITERATIONS = 3;
 /** Steps before timing: the first creates every contact, the next ones grow the GPU buffers. */
 const WARMUP = 3;
 const GPU_WARMUP = 10;
+/** Steps not awaited before the stream is timed: four fill the read-back ring, three more settle. */
+const STREAM_WARMUP = 7;
 const SCENES = ['pyramids', 'rain'];
 const PYRAMID_ROWS = 20;
 const PYRAMID_PITCH = PYRAMID_ROWS + 2;
@@ -198,7 +200,7 @@ async function runGpu(ctx: GpuContext, world: b2World, steps: number): Promise<G
         parts.solve.push(sum.solve);
       }
     }
-    for (let i = 0; i < 4 + 3; ++i) await stepper.step(DT, VELOCITY_ITERATIONS, POSITION_ITERATIONS, { wait: false });
+    for (let i = 0; i < STREAM_WARMUP; ++i) await stepper.step(DT, VELOCITY_ITERATIONS, POSITION_ITERATIONS, { wait: false });
     await stepper.narrowPhase.settle(stepper.broadPhase);
     const deferredHost = { record: 0, wait: 0 };
     const d0 = performance.now();
