@@ -83,9 +83,9 @@ export interface EventPlan {
   last: ContactRead | null;
 }
 
-/** Pair key of two proxy slots, a < b (slots stay far below 2^26). */
+/** Pair key of two proxy slots in either order: min << 26 | max (slots stay far below 2^26). */
 function pairKey(a: number, b: number): number {
-  return a * 0x4000000 + b;
+  return Math.min(a, b) * 0x4000000 + Math.max(a, b);
 }
 
 /** Whether the listener wants BeginContact / EndContact events. */
@@ -122,7 +122,7 @@ export class GpuContactEvents {
     for (let c: b2Contact | null = world.m_contactManager.m_contactList; c; c = c.m_next) {
       const pa = mirror.proxySlot(c.m_fixtureA, c.m_indexA);
       const pb = mirror.proxySlot(c.m_fixtureB, c.m_indexB);
-      if (pa >= 0 && pb >= 0) this.contacts.set(pairKey(Math.min(pa, pb), Math.max(pa, pb)), c);
+      if (pa >= 0 && pb >= 0) this.contacts.set(pairKey(pa, pb), c);
     }
   }
 
@@ -230,8 +230,10 @@ export class GpuContactEvents {
     };
   }
 
-  /** The index in `set` of the contact of proxy slots (a, b), a < b, or -1 (keys are sorted by a, then b). */
-  static find(set: GpuContactSet, a: number, b: number): number {
+  /** The index in `set` of the contact with pair key `key`, or -1 (keys are sorted by a, then b). */
+  static find(set: GpuContactSet, key: number): number {
+    const a = Math.floor(key / 0x4000000);
+    const b = key - a * 0x4000000;
     let lo = 0;
     let hi = set.count;
     while (lo < hi) {
@@ -281,7 +283,7 @@ export class GpuContactEvents {
    * another fixture; null when a fixture is gone.
    */
   private contactFor(mirror: GpuWorld, proxyA: number, proxyB: number): b2Contact | null {
-    const key = pairKey(Math.min(proxyA, proxyB), Math.max(proxyA, proxyB));
+    const key = pairKey(proxyA, proxyB);
     const known = this.contacts.get(key);
     const A = mirror.proxyAt(proxyA);
     const B = mirror.proxyAt(proxyB);
@@ -302,12 +304,10 @@ export class GpuContactEvents {
    */
   deliver(world: b2World, mirror: GpuWorld, plan: EventPlan, set: GpuContactSet | null): void {
     const listener = world.m_contactManager.m_contactListener;
-    const index = new Map<number, number>();
     if (set !== null) {
-      for (let i = 0; i < set.count; ++i) index.set(pairKey(set.keys[4 * i], set.keys[4 * i + 1]), i);
       for (const [key, c] of this.contacts) {
-        const i = index.get(key);
-        if (i !== undefined) GpuContactEvents.writeManifold(c, set, i);
+        const i = GpuContactEvents.find(set, key);
+        if (i >= 0) GpuContactEvents.writeManifold(c, set, i);
       }
     }
     world.m_flags |= e_locked;
@@ -322,8 +322,11 @@ export class GpuContactEvents {
         }
       }
       if (set !== null) {
-        for (const key of this.contacts.keys()) if (!index.has(key)) this.contacts.delete(key);
-        for (const [key, c] of this.contacts) GpuContactEvents.writeManifold(c, set, index.get(key)!);
+        for (const [key, c] of this.contacts) {
+          const i = GpuContactEvents.find(set, key);
+          if (i < 0) this.contacts.delete(key);
+          else GpuContactEvents.writeManifold(c, set, i);
+        }
       }
     } finally {
       world.m_flags &= ~e_locked;
@@ -337,7 +340,7 @@ export class GpuContactEvents {
       const c = this.contactFor(mirror, w[4 * e], w[4 * e + 1]);
       if (c === null) continue;
       if (w[4 * e + 2] === EVENT_BEGIN) {
-        const i = set === null ? -1 : GpuContactEvents.find(set, Math.min(w[4 * e], w[4 * e + 1]), Math.max(w[4 * e], w[4 * e + 1]));
+        const i = set === null ? -1 : GpuContactEvents.find(set, pairKey(w[4 * e], w[4 * e + 1]));
         if (i >= 0) GpuContactEvents.writeManifold(c, set!, i);
         c.m_flags |= e_touchingFlag;
         listener.BeginContact(c);
