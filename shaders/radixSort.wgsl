@@ -384,6 +384,16 @@ fn downsweep(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg
   }
 }
 
+// Puts each of this invocation's order words at its place in the tile ordered by the last split's
+// nibbles (its nibble's first position + its rank).
+fn place(nibbles: array<u32, 4>, ranks: array<u32, 4>, words: array<u32, 4>) {
+  for (var k = 0u; k < ITEMS; k = k + 1u) {
+    if (nibbles[k] != INVALID) {
+      order[nibble_start(nibbles[k]) + ranks[k]] = words[k];
+    }
+  }
+}
+
 // An 8-bit pass: the tile ordered by the low nibble in workgroup memory, that order split stably
 // by the high nibble, then written out position by position.
 @compute @workgroup_size(256)
@@ -423,11 +433,7 @@ fn downsweep_wide(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups
   }
   let low = split(lid, nibbles, outside);
   digitOffset[lid] = before + low.before;
-  for (var k = 0u; k < ITEMS; k = k + 1u) {
-    if (nibbles[k] != INVALID) {
-      order[nibble_start(nibbles[k]) + low.ranks[k]] = words[k];
-    }
-  }
+  place(nibbles, low.ranks, words);
   workgroupBarrier();
   for (var k = 0u; k < ITEMS; k = k + 1u) {
     let p = lid * ITEMS + k;
@@ -438,11 +444,7 @@ fn downsweep_wide(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups
     }
   }
   let high = split(lid, nibbles, 0u);
-  for (var k = 0u; k < ITEMS; k = k + 1u) {
-    if (nibbles[k] != INVALID) {
-      order[nibble_start(nibbles[k]) + high.ranks[k]] = words[k];
-    }
-  }
+  place(nibbles, high.ranks, words);
   workgroupBarrier();
   for (var k = 0u; k < ITEMS; k = k + 1u) {
     let p = k * WORKGROUP_SIZE + lid;
