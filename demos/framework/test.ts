@@ -122,6 +122,8 @@ export class Test extends b2ContactListener {
     this.m_world.SetDestructionListener(this.m_destructionListener);
     this.m_world.SetContactListener(this);
     this.m_world.SetDebugDraw(this.m_debugDraw);
+    // The testbed shows the step's times (GetProfile), which the engine measures only on request.
+    this.m_world.SetProfiling(true);
 
     const bodyDef = new b2BodyDef();
     this.m_groundBody = this.m_world.CreateBody(bodyDef);

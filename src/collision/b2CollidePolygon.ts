@@ -41,7 +41,7 @@ function b2EdgeSeparation(
 
   // Find support vertex on poly2 for -normal.
   let index = 0;
-  let minDot = +b2_maxFloat; // unary plus: see docs/PORTING.md, "Allocation-free hot paths"
+  let minDot = +b2_maxFloat; // unary plus: docs/PORTING.md
 
   for (let i = 0; i < count2; ++i) {
     const dot = vertices2[i].x * normal1X + vertices2[i].y * normal1Y;
@@ -171,7 +171,7 @@ function b2FindIncidentEdge(
 
   // Find the incident edge on poly2.
   let index = 0;
-  let minDot = +b2_maxFloat; // unary plus: see docs/PORTING.md, "Allocation-free hot paths"
+  let minDot = +b2_maxFloat; // unary plus: docs/PORTING.md
   for (let i = 0; i < count2; ++i) {
     const dot = normal1X * normals2[i].x + normal1Y * normals2[i].y;
     if (dot < minDot) {

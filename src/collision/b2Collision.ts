@@ -3,7 +3,7 @@
  * (b2Collision.h, b2Collision.cpp).
  */
 
-import { b2Abs, b2Dot, b2Max, b2Min, b2MulRV, b2MulXV, b2Vec2 } from '../common/b2Math';
+import { b2Abs, b2Max, b2Min, b2MulRV, b2MulXV, b2Vec2 } from '../common/b2Math';
 import type { b2Transform } from '../common/b2Math';
 import { b2_epsilon, b2_maxFloat, b2_maxManifoldPoints } from '../common/b2Settings';
 import { b2Distance, b2DistanceInput, b2DistanceOutput, b2SimplexCache } from './b2Distance';
@@ -445,7 +445,7 @@ export class b2AABB {
   /** From Real-time Collision Detection, p179. */
   RayCast(output: b2RayCastOutput, input: Readonly<b2RayCastInput>): boolean {
     let tmin = -b2_maxFloat;
-    let tmax = +b2_maxFloat; // unary plus: see docs/PORTING.md, "Allocation-free hot paths"
+    let tmax = +b2_maxFloat; // unary plus: docs/PORTING.md
 
     const px = input.p1.x;
     const py = input.p1.y;
@@ -547,9 +547,10 @@ export function b2ClipSegment(
   // Start with no output points
   let numOut = 0;
 
-  // Calculate the distance of end points to the line
-  const distance0 = b2Dot(normal, vIn0.v) - offset;
-  const distance1 = b2Dot(normal, vIn1.v) - offset;
+  // Calculate the distance of end points to the line (b2Dot written out: a double returned from a
+  // call V8 leaves out of line is boxed, and this runs for every polygon contact of every step)
+  const distance0 = normal.x * vIn0.v.x + normal.y * vIn0.v.y - offset;
+  const distance1 = normal.x * vIn1.v.x + normal.y * vIn1.v.y - offset;
 
   // If the points are behind the plane
   if (distance0 <= 0.0) vOut[numOut++].Assign(vIn0);

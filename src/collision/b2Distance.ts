@@ -6,7 +6,6 @@
 
 import {
   b2Cross,
-  b2Dot,
   b2Max,
   b2MulTRV,
   b2MulXV,
@@ -134,9 +133,11 @@ export class b2DistanceProxy {
   GetSupport(d: Readonly<b2Vec2>): number {
     const vertices = this.m_vertices;
     let bestIndex = 0;
-    let bestValue = b2Dot(vertices[0], d);
+    // b2Dot written out: GJK and the time of impact call this where V8 has no inlining budget
+    // left, and a double returned from a call that is not inlined is boxed.
+    let bestValue = vertices[0].x * d.x + vertices[0].y * d.y;
     for (let i = 1; i < this.m_count; ++i) {
-      const value = b2Dot(vertices[i], d);
+      const value = vertices[i].x * d.x + vertices[i].y * d.y;
       if (value > bestValue) {
         bestIndex = i;
         bestValue = value;
@@ -647,7 +648,9 @@ export function b2Distance(output: b2DistanceOutput, cache: b2SimplexCache, inpu
     const d = simplex.GetSearchDirection(s_d);
 
     // Ensure the search direction is numerically fit.
-    if (d.LengthSquared() < b2_epsilon * b2_epsilon) {
+    // d.LengthSquared() written out, and s_negD filled field by field below, for the reason
+    // GetSupport gives.
+    if (d.x * d.x + d.y * d.y < b2_epsilon * b2_epsilon) {
       // The origin is probably contained by a line segment
       // or triangle. Thus the shapes are overlapped.
 
@@ -659,7 +662,8 @@ export function b2Distance(output: b2DistanceOutput, cache: b2SimplexCache, inpu
 
     // Compute a tentative new simplex vertex using support points.
     const vertex = vertices[simplex.m_count];
-    s_negD.Set(-d.x, -d.y);
+    s_negD.x = -d.x;
+    s_negD.y = -d.y;
     vertex.indexA = proxyA.GetSupport(b2MulTRV(transformA.q, s_negD, s_axis));
     b2MulXV(transformA, proxyA.GetVertex(vertex.indexA), vertex.wA);
     vertex.indexB = proxyB.GetSupport(b2MulTRV(transformB.q, d, s_axis));

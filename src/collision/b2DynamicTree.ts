@@ -930,7 +930,7 @@ export class b2DynamicTree {
     }
 
     while (count > 1) {
-      let minCost = +b2_maxFloat; // unary plus: see docs/PORTING.md, "Allocation-free hot paths"
+      let minCost = +b2_maxFloat; // unary plus: docs/PORTING.md
       let iMin = -1;
       let jMin = -1;
       for (let i = 0; i < count; ++i) {

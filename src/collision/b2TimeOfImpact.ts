@@ -3,7 +3,7 @@
  * b2TimeOfImpact.cpp).
  */
 
-import { b2Abs, b2Max, b2MulRV, b2MulTRV, b2MulXV, b2Sweep, b2Transform, b2Vec2 } from '../common/b2Math';
+import { b2Abs, b2Max, b2MulRV, b2MulTRV, b2MulXV, b2Sweep, b2SweepTime, b2Transform, b2Vec2 } from '../common/b2Math';
 import { b2Assert, b2_linearSlop, b2_maxPolygonVertices } from '../common/b2Settings';
 import { b2Distance, b2DistanceInput, b2DistanceOutput, b2DistanceProxy, b2SimplexCache } from './b2Distance';
 
@@ -122,8 +122,9 @@ class b2SeparationFunction {
     this.m_sweepA.Assign(sweepA);
     this.m_sweepB.Assign(sweepB);
 
-    const xfA = this.m_sweepA.GetTransform(s_xfA, t1);
-    const xfB = this.m_sweepB.GetTransform(s_xfB, t1);
+    b2SweepTime[0] = t1;
+    const xfA = this.m_sweepA.GetTransformAt(s_xfA);
+    const xfB = this.m_sweepB.GetTransformAt(s_xfB);
 
     const axis = this.m_axis;
     if (count === 1) {
@@ -184,14 +185,16 @@ class b2SeparationFunction {
 
   FindMinSeparation(indices: b2SeparationIndices): void {
     const t = s_separationIo[0];
-    const xfA = this.m_sweepA.GetTransform(s_xfA, t);
-    const xfB = this.m_sweepB.GetTransform(s_xfB, t);
+    b2SweepTime[0] = t;
+    const xfA = this.m_sweepA.GetTransformAt(s_xfA);
+    const xfB = this.m_sweepB.GetTransformAt(s_xfB);
     const axis = this.m_axis;
 
     switch (this.m_type) {
       case b2SeparationFunction.e_points: {
         indices.indexA = this.m_proxyA.GetSupport(b2MulTRV(xfA.q, axis, s_axis));
-        s_negNormal.Set(-axis.x, -axis.y);
+        s_negNormal.x = -axis.x;
+        s_negNormal.y = -axis.y;
         indices.indexB = this.m_proxyB.GetSupport(b2MulTRV(xfB.q, s_negNormal, s_axis));
 
         const pointA = b2MulXV(xfA, this.m_proxyA.GetVertex(indices.indexA), s_pointA);
@@ -206,7 +209,8 @@ class b2SeparationFunction {
         const normal = b2MulRV(xfA.q, axis, s_normal);
         const pointA = b2MulXV(xfA, this.m_localPoint, s_pointA);
 
-        s_negNormal.Set(-normal.x, -normal.y);
+        s_negNormal.x = -normal.x;
+        s_negNormal.y = -normal.y;
 
         indices.indexA = -1;
         indices.indexB = this.m_proxyB.GetSupport(b2MulTRV(xfB.q, s_negNormal, s_axis));
@@ -222,7 +226,8 @@ class b2SeparationFunction {
         const normal = b2MulRV(xfB.q, axis, s_normal);
         const pointB = b2MulXV(xfB, this.m_localPoint, s_pointB);
 
-        s_negNormal.Set(-normal.x, -normal.y);
+        s_negNormal.x = -normal.x;
+        s_negNormal.y = -normal.y;
 
         indices.indexB = -1;
         indices.indexA = this.m_proxyA.GetSupport(b2MulTRV(xfA.q, s_negNormal, s_axis));
@@ -242,8 +247,9 @@ class b2SeparationFunction {
   // The C++ also computes the support axes here; they decide nothing, so they are not computed.
   Evaluate(indexA: number, indexB: number): void {
     const t = s_separationIo[0];
-    const xfA = this.m_sweepA.GetTransform(s_xfA, t);
-    const xfB = this.m_sweepB.GetTransform(s_xfB, t);
+    b2SweepTime[0] = t;
+    const xfA = this.m_sweepA.GetTransformAt(s_xfA);
+    const xfB = this.m_sweepB.GetTransformAt(s_xfB);
     const axis = this.m_axis;
 
     switch (this.m_type) {
@@ -320,7 +326,7 @@ export function b2TimeOfImpact(output: b2TOIOutput, input: Readonly<b2TOIInput>)
   const tMax = input.tMax;
 
   const totalRadius = proxyA.m_radius + proxyB.m_radius;
-  const target = b2Max(b2_linearSlop, totalRadius - 3.0 * b2_linearSlop);
+  const target = b2Max(+b2_linearSlop, totalRadius - 3.0 * b2_linearSlop); // unary plus: docs/PORTING.md
   const tolerance = 0.25 * b2_linearSlop;
   b2Assert(target > tolerance);
 
@@ -344,8 +350,9 @@ export function b2TimeOfImpact(output: b2TOIOutput, input: Readonly<b2TOIInput>)
   for (;;) {
     // Get the distance between shapes. We can also use the results
     // to get a separating axis.
-    sweepA.GetTransform(distanceInput.transformA, t1);
-    sweepB.GetTransform(distanceInput.transformB, t1);
+    b2SweepTime[0] = t1;
+    sweepA.GetTransformAt(distanceInput.transformA);
+    sweepB.GetTransformAt(distanceInput.transformB);
     b2Distance(distanceOutput, cache, distanceInput);
 
     // If the shapes are overlapped, we give up on continuous collision.

@@ -529,6 +529,13 @@ export class b2Transform {
 }
 
 /**
+ * The time argument of b2Sweep.GetTransformAt and AdvanceAt, and of b2Body.AdvanceAt: V8 boxes a
+ * double passed to a call it leaves out of line, and the time of impact code makes these calls
+ * on paths too rare for V8 to inline them.
+ */
+export const b2SweepTime = new Float64Array(1);
+
+/**
  * The motion of a body/shape for TOI computation. Shapes are defined with respect to the body
  * origin, which may not coincide with the center of mass, but dynamics interpolates the center
  * of mass position.
@@ -563,10 +570,20 @@ export class b2Sweep {
 
   /** The interpolated transform at beta in [0,1], where 0 is alpha0. */
   GetTransform(xf: b2Transform, beta: number): b2Transform {
+    b2SweepTime[0] = beta;
+    return this.GetTransformAt(xf);
+  }
+
+  /** Not in the C++: GetTransform at beta = b2SweepTime[0]. */
+  GetTransformAt(xf: b2Transform): b2Transform {
+    const beta = b2SweepTime[0];
     xf.p.x = (1.0 - beta) * this.c0.x + beta * this.c.x;
     xf.p.y = (1.0 - beta) * this.c0.y + beta * this.c.y;
     const angle = (1.0 - beta) * this.a0 + beta * this.a;
-    xf.q.Set(angle);
+    // xf.q.Set(angle) written out: the time of impact code inlines this method into functions
+    // where V8 has no inlining budget left for Set, which would box the angle.
+    b2SinCosArg[0] = angle;
+    b2SinCos(xf.q);
 
     // Shift to origin
     const q = xf.q;
@@ -578,6 +595,13 @@ export class b2Sweep {
 
   /** Advance the sweep forward, yielding a new initial state at time alpha. */
   Advance(alpha: number): void {
+    b2SweepTime[0] = alpha;
+    this.AdvanceAt();
+  }
+
+  /** Not in the C++: Advance to alpha = b2SweepTime[0]. */
+  AdvanceAt(): void {
+    const alpha = b2SweepTime[0];
     const beta = (alpha - this.alpha0) / (1.0 - this.alpha0);
     this.c0.x = (1.0 - beta) * this.c0.x + beta * this.c.x;
     this.c0.y = (1.0 - beta) * this.c0.y + beta * this.c.y;

@@ -6,7 +6,7 @@
  */
 
 import { b2Assert, b2Log } from '../common/b2Settings';
-import { b2Transform, b2Sweep, b2Vec2 } from '../common/b2Math';
+import { b2Transform, b2Sweep, b2SweepTime, b2Vec2 } from '../common/b2Math';
 import {
   b2ArgumentError,
   b2CheckFinite,
@@ -1195,7 +1195,13 @@ export class b2Body {
 
   /** Advance to the new safe time. This doesn't sync the broad-phase. */
   Advance(alpha: number): void {
-    this.m_sweep.Advance(alpha);
+    b2SweepTime[0] = alpha;
+    this.AdvanceAt();
+  }
+
+  /** Not in the C++: Advance to alpha = b2SweepTime[0] (see there). */
+  AdvanceAt(): void {
+    this.m_sweep.AdvanceAt();
     this.m_sweep.c.Assign(this.m_sweep.c0);
     this.m_sweep.a = this.m_sweep.a0;
     this.SynchronizeTransform();

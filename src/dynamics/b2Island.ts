@@ -96,9 +96,10 @@ export class b2Island {
     this.m_jointCount = 0;
   }
 
-  Solve(profile: b2Profile, step: Readonly<b2TimeStep>, gravity: Readonly<b2Vec2>, allowSleep: boolean): void {
+  /** profile: null when the world is not timing its steps (b2World.SetProfiling). */
+  Solve(profile: b2Profile | null, step: Readonly<b2TimeStep>, gravity: Readonly<b2Vec2>, allowSleep: boolean): void {
     const timer = this.m_timer;
-    timer.Reset();
+    if (profile !== null) timer.Reset();
 
     const h = step.dt;
     const positions = this.m_positions;
@@ -147,7 +148,7 @@ export class b2Island {
       velocities[3 * i + 2] = w;
     }
 
-    timer.Reset();
+    if (profile !== null) timer.Reset();
 
     // Solver data
     const solverData = this.m_solverData;
@@ -165,10 +166,10 @@ export class b2Island {
       this.m_joints[i].InitVelocityConstraints(solverData);
     }
 
-    profile.solveInit = timer.GetMilliseconds();
+    if (profile !== null) profile.solveInit = timer.GetMilliseconds();
 
     // Solve velocity constraints
-    timer.Reset();
+    if (profile !== null) timer.Reset();
     for (let i = 0; i < step.velocityIterations; ++i) {
       for (let j = 0; j < this.m_jointCount; ++j) {
         this.m_joints[j].SolveVelocityConstraints(solverData);
@@ -182,7 +183,7 @@ export class b2Island {
       this.m_joints[j].StoreImpulses();
     }
     contactSolver.StoreImpulses();
-    profile.solveVelocity = timer.GetMilliseconds();
+    if (profile !== null) profile.solveVelocity = timer.GetMilliseconds();
 
     // Integrate positions
     for (let i = 0; i < this.m_bodyCount; ++i) {
@@ -190,7 +191,7 @@ export class b2Island {
     }
 
     // Solve position constraints
-    timer.Reset();
+    if (profile !== null) timer.Reset();
     let positionSolved = false;
     for (let i = 0; i < step.positionIterations; ++i) {
       const contactsOkay = contactSolver.SolvePositionConstraints();
@@ -220,12 +221,12 @@ export class b2Island {
       body.SynchronizeTransform();
     }
 
-    profile.solvePosition = timer.GetMilliseconds();
+    if (profile !== null) profile.solvePosition = timer.GetMilliseconds();
 
     this.ReportSolver(contactSolver);
 
     if (allowSleep) {
-      let minSleepTime = +b2_maxFloat; // unary plus: see docs/PORTING.md, "Allocation-free hot paths"
+      let minSleepTime = +b2_maxFloat; // unary plus: docs/PORTING.md
 
       const linTolSqr = b2_linearSleepTolerance * b2_linearSleepTolerance;
       const angTolSqr = b2_angularSleepTolerance * b2_angularSleepTolerance;

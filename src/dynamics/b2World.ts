@@ -17,7 +17,7 @@ import type { b2PolygonShape } from '../collision/shapes/b2PolygonShape';
 import { b2Shape } from '../collision/shapes/b2Shape';
 import { b2TOIInput, b2TOIOutput, b2TimeOfImpact } from '../collision/b2TimeOfImpact';
 import { b2Color, b2Draw } from '../common/b2Draw';
-import { b2Min, b2MulRV, b2MulXV, b2Sweep, b2Transform, b2Vec2 } from '../common/b2Math';
+import { b2MulRV, b2MulXV, b2Sweep, b2SweepTime, b2Transform, b2Vec2 } from '../common/b2Math';
 import { b2Assert, b2Log, b2_epsilon, b2_maxPolygonVertices, b2_maxSubSteps, b2_maxTOIContacts } from '../common/b2Settings';
 import { b2Timer } from '../common/b2Timer';
 import {
@@ -173,6 +173,8 @@ export class b2World {
   m_stepComplete = true;
 
   readonly m_profile = new b2Profile();
+  /** Not in the C++: whether Step times itself into m_profile (SetProfiling). */
+  m_profiling = false;
 
   /** Not in the C++: the backend that steps this world (SetBackend), null for this engine. */
   private m_backend: b2WorldBackend | null = null;
@@ -540,8 +542,9 @@ export class b2World {
       return;
     }
 
+    const profiling = this.m_profiling;
     const stepTimer = this.m_stepTimer;
-    stepTimer.Reset();
+    if (profiling) stepTimer.Reset();
 
     // If new fixtures were added, we need to find the new contacts.
     if (this.m_flags & b2World.e_newFixture) {
@@ -570,22 +573,22 @@ export class b2World {
       const timer = this.m_timer;
 
       // Update contacts. This is where some contacts are destroyed.
-      timer.Reset();
+      if (profiling) timer.Reset();
       this.m_contactManager.Collide();
-      this.m_profile.collide = timer.GetMilliseconds();
+      if (profiling) this.m_profile.collide = timer.GetMilliseconds();
 
       // Integrate velocities, solve velocity constraints, and integrate positions.
       if (this.m_stepComplete && step.dt > 0.0) {
-        timer.Reset();
+        if (profiling) timer.Reset();
         this.Solve(step);
-        this.m_profile.solve = timer.GetMilliseconds();
+        if (profiling) this.m_profile.solve = timer.GetMilliseconds();
       }
 
       // Handle TOI events.
       if (this.m_continuousPhysics && step.dt > 0.0) {
-        timer.Reset();
+        if (profiling) timer.Reset();
         this.SolveTOI(step);
-        this.m_profile.solveTOI = timer.GetMilliseconds();
+        if (profiling) this.m_profile.solveTOI = timer.GetMilliseconds();
       }
 
       if (step.dt > 0.0) {
@@ -599,7 +602,7 @@ export class b2World {
       this.m_flags &= ~b2World.e_locked;
     }
 
-    this.m_profile.step = stepTimer.GetMilliseconds();
+    if (profiling) this.m_profile.step = stepTimer.GetMilliseconds();
   }
 
   /**
@@ -955,9 +958,25 @@ export class b2World {
     return this.m_contactManager;
   }
 
-  /** Get the current profile. */
+  /**
+   * Get the current profile: the times of the last step, in milliseconds. Not in the C++: they are
+   * measured only while SetProfiling(true) is in force, and stay zero otherwise.
+   */
   GetProfile(): Readonly<b2Profile> {
     return this.m_profile;
+  }
+
+  /**
+   * Not in the C++: enable/disable the step's timing into GetProfile (off by default). Each reading
+   * of the host clock (performance.now) allocates a number on the JavaScript heap, about twenty per
+   * step; with timing off a steady-state step allocates nothing.
+   */
+  SetProfiling(flag: boolean): void {
+    this.m_profiling = flag;
+  }
+
+  GetProfiling(): boolean {
+    return this.m_profiling;
   }
 
   /**
@@ -1142,11 +1161,15 @@ export class b2World {
         }
       }
 
-      const profile = this.m_islandProfile;
-      island.Solve(profile, step, this.m_gravity, this.m_allowSleep);
-      this.m_profile.solveInit += profile.solveInit;
-      this.m_profile.solveVelocity += profile.solveVelocity;
-      this.m_profile.solvePosition += profile.solvePosition;
+      if (this.m_profiling) {
+        const profile = this.m_islandProfile;
+        island.Solve(profile, step, this.m_gravity, this.m_allowSleep);
+        this.m_profile.solveInit += profile.solveInit;
+        this.m_profile.solveVelocity += profile.solveVelocity;
+        this.m_profile.solvePosition += profile.solvePosition;
+      } else {
+        island.Solve(null, step, this.m_gravity, this.m_allowSleep);
+      }
 
       // Post solve cleanup.
       for (let i = 0; i < island.m_bodyCount; ++i) {
@@ -1160,7 +1183,7 @@ export class b2World {
 
     {
       const timer = this.m_broadphaseTimer;
-      timer.Reset();
+      if (this.m_profiling) timer.Reset();
       // Synchronize fixtures, check for out of range bodies.
       for (let b = this.m_bodyList; b; b = b.GetNext()) {
         // If a body was not in an island then it did not move.
@@ -1178,7 +1201,7 @@ export class b2World {
 
       // Look for new contacts.
       this.m_contactManager.FindNewContacts();
-      this.m_profile.broadphase = timer.GetMilliseconds();
+      if (this.m_profiling) this.m_profile.broadphase = timer.GetMilliseconds();
     }
   }
 
@@ -1244,10 +1267,12 @@ export class b2World {
 
       if (bA.m_sweep.alpha0 < bB.m_sweep.alpha0) {
         alpha0 = bB.m_sweep.alpha0;
-        bA.m_sweep.Advance(alpha0);
+        b2SweepTime[0] = alpha0;
+        bA.m_sweep.AdvanceAt();
       } else if (bB.m_sweep.alpha0 < bA.m_sweep.alpha0) {
         alpha0 = bA.m_sweep.alpha0;
-        bB.m_sweep.Advance(alpha0);
+        b2SweepTime[0] = alpha0;
+        bB.m_sweep.AdvanceAt();
       }
 
       b2Assert(alpha0 < 1.0);
@@ -1267,7 +1292,11 @@ export class b2World {
       // Beta is the fraction of the remaining portion of the .
       const beta = output.t;
       if (output.state === b2TOIOutput.e_touching) {
-        alpha = b2Min(alpha0 + (1.0 - alpha0) * beta, 1.0);
+        // b2Min(alpha0 + (1.0 - alpha0) * beta, 1.0) written out: most calls of this function take
+        // the cached TOI above, and V8 does not inline calls on a path that rare, so the helper's
+        // double result would keep alpha boxed on every path (docs/PORTING.md).
+        const t = alpha0 + (1.0 - alpha0) * beta;
+        alpha = t < 1.0 ? t : 1.0;
       } else {
         alpha = 1.0;
       }
@@ -1395,8 +1424,10 @@ export class b2World {
       backup1.Assign(bA.m_sweep);
       backup2.Assign(bB.m_sweep);
 
-      bA.Advance(minAlpha);
-      bB.Advance(minAlpha);
+      b2SweepTime[0] = minAlpha;
+      bA.AdvanceAt();
+      b2SweepTime[0] = minAlpha;
+      bB.AdvanceAt();
 
       // The TOI contact likely has some new contact points.
       minContact.Update(this.m_contactManager.m_contactListener);
@@ -1465,7 +1496,8 @@ export class b2World {
             // Tentatively advance the body to the TOI.
             backup.Assign(other.m_sweep);
             if ((other.m_flags & b2Body.e_islandFlag) === 0) {
-              other.Advance(minAlpha);
+              b2SweepTime[0] = minAlpha;
+              other.AdvanceAt();
             }
 
             // Update the contact points

@@ -868,8 +868,20 @@ describe('b2World contacts, listener and profile', () => {
     expect(last.normal[0] + last.normal[1]).toBeCloseTo(box.GetMass() * 10.0 * h, 3);
   });
 
-  it('fills every profile field with a non-negative time', () => {
+  it('leaves the profile at zero unless profiling is on (each clock reading allocates)', () => {
     const { world } = restingBox();
+    expect(world.GetProfiling()).toBe(false);
+    for (let i = 0; i < 5; ++i) world.Step(h, 8, 3);
+    const profile = world.GetProfile();
+    for (const key of Object.keys(profile) as (keyof typeof profile)[]) {
+      if (typeof profile[key] === 'number') expect(profile[key], key).toBe(0.0);
+    }
+  });
+
+  it('fills every profile field with a non-negative time while profiling is on', () => {
+    const { world } = restingBox();
+    world.SetProfiling(true);
+    expect(world.GetProfiling()).toBe(true);
     for (let i = 0; i < 5; ++i) world.Step(h, 8, 3);
     const profile = world.GetProfile();
     for (const key of [

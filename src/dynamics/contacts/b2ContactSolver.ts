@@ -892,7 +892,11 @@ export class b2ContactSolver {
 
         // b2Clamp the accumulated impulse
         const normalImpulse = vf[op + VcP.normalImpulse];
-        const newImpulse = b2Max(normalImpulse + lambda, 0.0);
+        // b2Max(normalImpulse + lambda, 0.0) written out: V8 may compile this function before a
+        // scene's first one-point manifold, and a call it has never seen run is not inlined, so its
+        // doubles would be boxed on every call (docs/PORTING.md).
+        const sum = normalImpulse + lambda;
+        const newImpulse = sum > 0.0 ? sum : 0.0;
         lambda = newImpulse - normalImpulse;
         vf[op + VcP.normalImpulse] = newImpulse;
 
