@@ -69,6 +69,7 @@ export function resolveOptions(opts = {}) {
     rounds: opts.rounds ?? null,
     preroll: opts.preroll ?? null,
     allocSteps: opts.allocSteps ?? null,
+    allocPreroll: opts.allocPreroll ?? 0,
     ours: opts.ours ?? null,
     baseline: opts.baseline ?? null,
     // Quick runs print only, unless told where to write.
@@ -174,6 +175,7 @@ function runRound(engine, api, scene, sleep, protocol, last) {
 
   let extra = null;
   if (last) {
+    for (let i = 0; i < protocol.allocPreroll; i++) doStep();
     fullGC();
     const alloc = measureAllocation(() => {
       for (let i = 0; i < protocol.allocSteps; i++) doStep();
@@ -256,6 +258,7 @@ export async function runBench(options = {}) {
       rounds: o.rounds,
       preroll: o.preroll,
       allocSteps: o.allocSteps,
+      allocPreroll: o.allocPreroll,
       ours: oursBundle ? (built ? 'built from the working tree (scripts/build.mjs)' : oursBundle) : null,
       baseline: o.baseline,
     },
@@ -286,6 +289,7 @@ export async function runBench(options = {}) {
       rounds: o.rounds ?? base.rounds,
     };
     protocol.allocSteps = o.allocSteps ?? (o.quick ? null : base.allocSteps) ?? Math.min(protocol.steps, 32);
+    protocol.allocPreroll = o.allocPreroll;
     const sceneOut = {
       id: scene.id,
       title: scene.title,

@@ -12,6 +12,8 @@ export interface BenchOptions {
   rounds?: number;
   preroll?: number;
   allocSteps?: number;
+  /** Untimed steps run after the timed rounds, before the allocation window (default 0). */
+  allocPreroll?: number;
   /** A prebuilt webphysics.mjs to run instead of building the working tree. */
   ours?: string;
   write?: boolean;
@@ -62,7 +64,7 @@ export interface SceneResult {
   bodies: number;
   joints: number;
   settings: { dt: number; velocityIterations: number; positionIterations: number };
-  protocol: { preroll: number; steps: number; rounds: number; allocSteps: number };
+  protocol: { preroll: number; steps: number; rounds: number; allocSteps: number; allocPreroll: number };
   results: EngineResult[];
   skipped?: string;
 }

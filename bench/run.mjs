@@ -24,6 +24,7 @@ export const USAGE = `usage: node bench/run.mjs [options]   (npm run bench -- [o
   --rounds N       rounds, each on a fresh world (default: per scene, 3)
   --preroll N      untimed steps before timing (default: per scene)
   --alloc-steps N  steps in the allocation-counting window (default: min(steps, 32))
+  --alloc-preroll N  untimed steps between the timed rounds and that window (default 0)
   --quick          tiny protocol for smoke tests (prints only, unless --out is given)
   --out DIR        folder for the JSON and SVG files (default bench/results)
   --no-write       print the tables only
@@ -51,6 +52,7 @@ export async function main(argv = process.argv.slice(2)) {
         rounds: { type: 'string' },
         preroll: { type: 'string' },
         'alloc-steps': { type: 'string' },
+        'alloc-preroll': { type: 'string' },
         quick: { type: 'boolean' },
         out: { type: 'string' },
         'no-write': { type: 'boolean' },
@@ -104,6 +106,7 @@ export async function main(argv = process.argv.slice(2)) {
       rounds: int(values.rounds, 'rounds'),
       preroll: values.preroll === '0' ? 0 : int(values.preroll, 'preroll'),
       allocSteps: int(values['alloc-steps'], 'alloc-steps'),
+      allocPreroll: values['alloc-preroll'] === '0' ? 0 : int(values['alloc-preroll'], 'alloc-preroll'),
       quick: values.quick,
       outDir: values.out,
       write: values['no-write'] ? false : undefined,

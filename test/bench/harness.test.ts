@@ -20,6 +20,7 @@ beforeAll(async () => {
     scenes: ['bench2d'],
     engines: ['webphysics', 'planck'],
     sleep: 'off',
+    allocPreroll: 5,
     outDir,
     log: null,
     print: null,
@@ -81,7 +82,9 @@ describe('runBench in quick mode', () => {
     for (const r of results.scenes[0].results) {
       expect(r.check, r.engine).not.toBeNull();
       expect(r.check!.ok, `${r.engine}: ${r.check!.detail}`).toBe(true);
-      expect(r.counts!.steps).toBe(preroll.preroll + preroll.steps + preroll.allocSteps);
+      // --alloc-preroll's steps run between the timed rounds and the allocation window.
+      expect(preroll.allocPreroll).toBe(5);
+      expect(r.counts!.steps).toBe(preroll.preroll + preroll.steps + preroll.allocPreroll + preroll.allocSteps);
     }
   });
 });
