@@ -32,6 +32,7 @@ export type { b2WorldBackend, b2WorldBackendEngine, b2OverridableCallback } from
 export * from './dynamics/b2ContactManager';
 export * from './dynamics/b2Island';
 export * from './dynamics/contacts/b2Contact';
+export * from './dynamics/contacts/b2ContactAllocator';
 export * from './dynamics/contacts/b2ContactRegistry';
 export * from './dynamics/contacts/b2CircleContact';
 export * from './dynamics/contacts/b2PolygonAndCircleContact';

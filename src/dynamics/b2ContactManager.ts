@@ -6,6 +6,7 @@
 
 import { b2BroadPhase } from '../collision/b2BroadPhase';
 import { b2Contact } from './contacts/b2Contact';
+import { b2ContactAllocator } from './contacts/b2ContactAllocator';
 import { b2InitializeContactRegisters } from './contacts/b2ContactRegistry';
 import { b2BodyType } from './b2Body';
 import type { b2FixtureProxy } from './b2Fixture';
@@ -23,6 +24,8 @@ export class b2ContactManager {
   m_contactCount = 0;
   m_contactFilter: b2ContactFilter | null = b2_defaultFilter;
   m_contactListener: b2ContactListener | null = b2_defaultListener;
+  /** The C++ passes the world's block allocator to b2Contact::Create and Destroy; see there. */
+  readonly m_allocator = new b2ContactAllocator();
 
   constructor() {
     // The C++ fills the contact registry lazily in b2Contact::Create; see b2ContactRegistry.ts.
@@ -82,7 +85,7 @@ export class b2ContactManager {
     }
 
     // Call the factory.
-    const c = b2Contact.Create(fixtureA, indexA, fixtureB, indexB);
+    const c = b2Contact.Create(fixtureA, indexA, fixtureB, indexB, this.m_allocator);
     if (c === null) {
       return;
     }
@@ -200,7 +203,7 @@ export class b2ContactManager {
     c.m_nodeB.next = null;
 
     // Call the factory.
-    b2Contact.Destroy(c);
+    b2Contact.Destroy(c, this.m_allocator);
     --this.m_contactCount;
   }
 

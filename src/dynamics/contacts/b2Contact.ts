@@ -15,6 +15,7 @@ import { b2Assert } from '../../common/b2Settings';
 import type { b2Body } from '../b2Body';
 import type { b2Fixture } from '../b2Fixture';
 import { b2ContactListener } from '../b2WorldCallbacks';
+import type { b2ContactAllocator } from './b2ContactAllocator';
 
 /**
  * Friction mixing law. The idea is to allow either fixture to drive the restitution to zero.
@@ -66,6 +67,9 @@ export class b2ContactEdge {
   }
 }
 
+/** A manifold as constructed, which b2Contact.Init copies into a reused contact's. */
+const s_newManifold = new b2Manifold();
+
 /** The zero-initialised static table of the C++: no create function for any pair. */
 function b2MakeRegisters(): b2ContactRegister[][] {
   const registers: b2ContactRegister[][] = [];
@@ -107,7 +111,7 @@ export abstract class b2Contact {
   static readonly s_registers: b2ContactRegister[][] = b2MakeRegisters();
   static s_initialized = false;
 
-  m_flags: number;
+  m_flags = 0;
 
   // World pool and list pointers.
   m_prev: b2Contact | null = null;
@@ -117,22 +121,34 @@ export abstract class b2Contact {
   readonly m_nodeA: b2ContactEdge;
   readonly m_nodeB: b2ContactEdge;
 
-  m_fixtureA: b2Fixture;
-  m_fixtureB: b2Fixture;
+  m_fixtureA!: b2Fixture;
+  m_fixtureB!: b2Fixture;
 
-  m_indexA: number;
-  m_indexB: number;
+  m_indexA = 0;
+  m_indexB = 0;
 
   readonly m_manifold = new b2Manifold();
 
-  m_toiCount: number;
+  m_toiCount = 0;
   // The C++ leaves m_toi uninitialised; b2World.SolveTOI writes it before any read.
   m_toi = 1.0;
 
-  m_friction: number;
-  m_restitution: number;
+  m_friction = 0.0;
+  m_restitution = 0.0;
 
   constructor(fixtureA: b2Fixture, indexA: number, fixtureB: b2Fixture, indexB: number) {
+    this.m_nodeA = new b2ContactEdge(this, fixtureB.GetBody());
+    this.m_nodeB = new b2ContactEdge(this, fixtureA.GetBody());
+    this.Init(fixtureA, indexA, fixtureB, indexB);
+  }
+
+  /**
+   * Not in the C++ as a method: the constructor's work, also done to a contact that b2Contact.Create
+   * takes back from the world's b2ContactAllocator (the C++ constructs it anew in the block
+   * allocator's memory). The concrete contacts pass their fixtures' child indices, which are 0 for
+   * every shape but a chain.
+   */
+  Init(fixtureA: b2Fixture, indexA: number, fixtureB: b2Fixture, indexB: number): void {
     this.m_flags = b2Contact.e_enabledFlag;
 
     this.m_fixtureA = fixtureA;
@@ -141,12 +157,25 @@ export abstract class b2Contact {
     this.m_indexA = indexA;
     this.m_indexB = indexB;
 
-    this.m_manifold.pointCount = 0;
+    // The C++ sets only pointCount; a reused contact's manifold is reset whole, so that it reads
+    // as a new contact's (type, normal and points are read back by the state digest and writers).
+    this.m_manifold.Assign(s_newManifold);
 
-    this.m_nodeA = new b2ContactEdge(this, fixtureB.GetBody());
-    this.m_nodeB = new b2ContactEdge(this, fixtureA.GetBody());
+    this.m_prev = null;
+    this.m_next = null;
+
+    this.m_nodeA.contact = this;
+    this.m_nodeA.prev = null;
+    this.m_nodeA.next = null;
+    this.m_nodeA.other = fixtureB.GetBody();
+
+    this.m_nodeB.contact = this;
+    this.m_nodeB.prev = null;
+    this.m_nodeB.next = null;
+    this.m_nodeB.other = fixtureA.GetBody();
 
     this.m_toiCount = 0;
+    this.m_toi = 1.0;
 
     this.m_friction = b2MixFriction(this.m_fixtureA.m_friction, this.m_fixtureB.m_friction);
     this.m_restitution = b2MixRestitution(this.m_fixtureA.m_restitution, this.m_fixtureB.m_restitution);
@@ -281,9 +310,16 @@ export abstract class b2Contact {
   /**
    * Create the contact for a pair of fixture children, or null when the shape types do not
    * collide (edge and chain pairs). A reverse-order registration swaps A and B, so fixture A is
-   * always the polygon, edge or chain side.
+   * always the polygon, edge or chain side. With an allocator (the world's), a contact it stores
+   * for the same shape types is reinitialised instead of a new one constructed.
    */
-  static Create(fixtureA: b2Fixture, indexA: number, fixtureB: b2Fixture, indexB: number): b2Contact | null {
+  static Create(
+    fixtureA: b2Fixture,
+    indexA: number,
+    fixtureB: b2Fixture,
+    indexB: number,
+    allocator: b2ContactAllocator | null = null,
+  ): b2Contact | null {
     // The C++ fills the registry lazily here; this port fills it from b2ContactManager's
     // constructor (see the file header).
     b2Assert(b2Contact.s_initialized, 'b2InitializeContactRegisters() must run before b2Contact.Create');
@@ -298,16 +334,34 @@ export abstract class b2Contact {
     const createFcn = register.createFcn;
     if (createFcn) {
       if (register.primary) {
-        return createFcn(fixtureA, indexA, fixtureB, indexB);
+        return b2Contact.Construct(createFcn, fixtureA, indexA, fixtureB, indexB, allocator);
       } else {
-        return createFcn(fixtureB, indexB, fixtureA, indexA);
+        return b2Contact.Construct(createFcn, fixtureB, indexB, fixtureA, indexA, allocator);
       }
     } else {
       return null;
     }
   }
 
-  static Destroy(contact: b2Contact): void {
+  /** The create function's contact, or the allocator's for the same shape types reinitialised. */
+  private static Construct(
+    createFcn: b2ContactCreateFcn,
+    fixtureA: b2Fixture,
+    indexA: number,
+    fixtureB: b2Fixture,
+    indexB: number,
+    allocator: b2ContactAllocator | null,
+  ): b2Contact {
+    const contact = allocator !== null ? allocator.Allocate(fixtureA.GetType(), fixtureB.GetType()) : null;
+    if (contact === null) {
+      return createFcn(fixtureA, indexA, fixtureB, indexB);
+    }
+    contact.Init(fixtureA, indexA, fixtureB, indexB);
+    return contact;
+  }
+
+  /** Destroy a contact the world has unlinked; with an allocator, store it there for reuse. */
+  static Destroy(contact: b2Contact, allocator: b2ContactAllocator | null = null): void {
     b2Assert(b2Contact.s_initialized);
 
     if (contact.m_manifold.pointCount > 0) {
@@ -323,6 +377,12 @@ export abstract class b2Contact {
 
     const destroyFcn = b2Contact.s_registers[typeA][typeB].destroyFcn;
     destroyFcn!(contact);
+    if (allocator !== null) {
+      // A stored contact keeps nothing alive: its fixtures and bodies may be on their way out.
+      contact.m_fixtureA = contact.m_fixtureB = null as unknown as b2Fixture;
+      contact.m_nodeA.other = contact.m_nodeB.other = null as unknown as b2Body;
+      allocator.Free(contact, typeA, typeB);
+    }
   }
 
   /**
