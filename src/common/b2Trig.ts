@@ -279,14 +279,19 @@ function remPio2(y: Float64Array): number {
     } else {
       const j = ix >> 20;
       y[0] = r - w;
-      let i = j - ((highWord(y[0]) >> 20) & 0x7ff);
+      // highWord(y[0]) written out here and below: this branch (angles past 32 * pi/2, as in a
+      // spinning body) may first run after V8 compiled remPio2, and a call it has not seen run
+      // is not inlined, so the double argument would be boxed on every call.
+      f64[0] = y[0];
+      let i = j - ((i32[HI] >> 20) & 0x7ff);
       if (i > 16) {
         t = r;
         w = fn * pio2_2;
         r = t - w;
         w = fn * pio2_2t - (t - r - w);
         y[0] = r - w;
-        i = j - ((highWord(y[0]) >> 20) & 0x7ff);
+        f64[0] = y[0];
+        i = j - ((i32[HI] >> 20) & 0x7ff);
         if (i > 49) {
           t = r;
           w = fn * pio2_3;
