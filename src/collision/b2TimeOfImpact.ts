@@ -193,6 +193,7 @@ class b2SeparationFunction {
     switch (this.m_type) {
       case b2SeparationFunction.e_points: {
         indices.indexA = this.m_proxyA.GetSupport(b2MulTRV(xfA.q, axis, s_axis));
+        // -axis field by field rather than through Set: see s_negD in b2Distance.
         s_negNormal.x = -axis.x;
         s_negNormal.y = -axis.y;
         indices.indexB = this.m_proxyB.GetSupport(b2MulTRV(xfB.q, s_negNormal, s_axis));

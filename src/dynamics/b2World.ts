@@ -199,6 +199,13 @@ export class b2World {
   private readonly m_toiCandidates: b2Contact[] = [];
   private m_toiCandidateCount = 0;
   private m_toiListHead: b2Contact | null = null;
+  /**
+   * Not in the C++: the contacts whose island flag this world has set since Solve last cleared
+   * the flags (FlagContact), the first m_flaggedContactCount entries. Destroyed ones may remain:
+   * clearing the flag of a contact in the world's store, or reused since, changes nothing.
+   */
+  private readonly m_flaggedContacts: b2Contact[] = [];
+  private m_flaggedContactCount = 0;
   /** ComputeContactTOI's result. */
   private m_contactAlpha = 0.0;
   /** Set by b2Body.SetBullet and b2Fixture.SetSensor: SolveTOI's candidates may be out of date. */
@@ -1053,9 +1060,13 @@ export class b2World {
     for (let b = this.m_bodyList; b; b = b.m_next) {
       b.m_flags &= ~b2Body.e_islandFlag;
     }
-    for (let c = this.m_contactManager.m_contactList; c; c = c.m_next) {
-      c.m_flags &= ~b2Contact.e_islandFlag;
+    // The C++ walks the whole contact list here; only the contacts this world flagged can carry
+    // the flag, so clearing those leaves the same flags for an array read instead of a list walk.
+    const flagged = this.m_flaggedContacts;
+    for (let i = 0; i < this.m_flaggedContactCount; ++i) {
+      flagged[i].m_flags &= ~b2Contact.e_islandFlag;
     }
+    this.m_flaggedContactCount = 0;
     for (let j = this.m_jointList; j; j = j.m_next) {
       j.m_islandFlag = false;
     }
@@ -1121,7 +1132,7 @@ export class b2World {
           }
 
           island.AddContact(contact);
-          contact.m_flags |= b2Contact.e_islandFlag;
+          this.FlagContact(contact);
 
           const other = ce.other;
 
@@ -1161,14 +1172,12 @@ export class b2World {
         }
       }
 
-      if (this.m_profiling) {
-        const profile = this.m_islandProfile;
-        island.Solve(profile, step, this.m_gravity, this.m_allowSleep);
+      const profile = this.m_profiling ? this.m_islandProfile : null;
+      island.Solve(profile, step, this.m_gravity, this.m_allowSleep);
+      if (profile !== null) {
         this.m_profile.solveInit += profile.solveInit;
         this.m_profile.solveVelocity += profile.solveVelocity;
         this.m_profile.solvePosition += profile.solvePosition;
-      } else {
-        island.Solve(null, step, this.m_gravity, this.m_allowSleep);
       }
 
       // Post solve cleanup.
@@ -1203,6 +1212,15 @@ export class b2World {
       this.m_contactManager.FindNewContacts();
       if (this.m_profiling) this.m_profile.broadphase = timer.GetMilliseconds();
     }
+  }
+
+  /**
+   * Not in the C++: set contact c's island flag and note it for Solve's clearing
+   * (m_flaggedContacts). For the engine and for readers that restore a contact's flags.
+   */
+  FlagContact(c: b2Contact): void {
+    c.m_flags |= b2Contact.e_islandFlag;
+    this.m_flaggedContacts[this.m_flaggedContactCount++] = c;
   }
 
   /**
@@ -1456,7 +1474,7 @@ export class b2World {
 
       bA.m_flags |= b2Body.e_islandFlag;
       bB.m_flags |= b2Body.e_islandFlag;
-      minContact.m_flags |= b2Contact.e_islandFlag;
+      this.FlagContact(minContact);
 
       // Get contacts on bodyA and bodyB.
       bodies[0] = bA;
@@ -1518,7 +1536,7 @@ export class b2World {
             }
 
             // Add the contact to the island
-            contact.m_flags |= b2Contact.e_islandFlag;
+            this.FlagContact(contact);
             island.AddContact(contact);
 
             // Has the other body already been added to the island?

@@ -474,6 +474,9 @@ export function b2dJsonReadState(
     ++cm.m_contactCount;
 
     c.m_flags = int(cs.flags, `${p}.flags`, 0, 0xffff);
+    // A contact written between an island search and the next one carries its island flag,
+    // which the world's next Solve must clear (b2World.FlagContact).
+    if (c.m_flags & b2Contact.e_islandFlag) world.FlagContact(c);
     c.m_toiCount = int(cs.toiCount, `${p}.toiCount`, 0, 0x7fffffff);
     c.m_toi = num(cs.toi, `${p}.toi`);
     c.m_friction = num(cs.friction, `${p}.friction`);

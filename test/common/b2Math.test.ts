@@ -20,6 +20,7 @@ import {
   b2Rot,
   b2Swap,
   b2Sweep,
+  b2SweepTime,
   b2Transform,
   b2Vec2,
   b2Vec3,
@@ -191,5 +192,29 @@ describe('b2Sweep', () => {
     s.Normalize();
     expect(s.a0).toBe(7 - 2 * b2_pi);
     expect(s.a).toBe(8 - 2 * b2_pi);
+  });
+
+  it('GetTransformAt and AdvanceAt take their time from b2SweepTime and match GetTransform and Advance', () => {
+    const make = () => {
+      const s = new b2Sweep();
+      s.localCenter.Set(0.3, -0.2);
+      s.c0.Set(1, 2);
+      s.c.Set(3, -1);
+      s.a0 = 0.4;
+      s.a = 2.9;
+      s.alpha0 = 0.1;
+      return s;
+    };
+    const byArgument = make().GetTransform(new b2Transform(), 0.37);
+    b2SweepTime[0] = 0.37;
+    const bySlot = make().GetTransformAt(new b2Transform());
+    expect([bySlot.p.x, bySlot.p.y, bySlot.q.s, bySlot.q.c]).toEqual([byArgument.p.x, byArgument.p.y, byArgument.q.s, byArgument.q.c]);
+
+    const advanced = make();
+    advanced.Advance(0.6);
+    const advancedAt = make();
+    b2SweepTime[0] = 0.6;
+    advancedAt.AdvanceAt();
+    expect(advancedAt).toEqual(advanced);
   });
 });
