@@ -1246,7 +1246,7 @@ export class b2World {
     let alpha = 1.0;
     if (c.m_flags & b2Contact.e_toiFlag) {
       // This contact has a valid cached TOI.
-      alpha = c.m_toi;
+      alpha = c.m_scalars.toi;
     } else {
       const fA = c.GetFixtureA();
       const fB = c.GetFixtureB();
@@ -1319,7 +1319,7 @@ export class b2World {
         alpha = 1.0;
       }
 
-      c.m_toi = alpha;
+      c.m_scalars.toi = alpha;
       c.m_flags |= b2Contact.e_toiFlag;
     }
 
@@ -1391,7 +1391,7 @@ export class b2World {
             // Invalidate TOI
             c.m_flags &= ~(b2Contact.e_toiFlag | b2Contact.e_islandFlag);
             c.m_toiCount = 0;
-            c.m_toi = 1.0;
+            c.m_scalars.toi = 1.0;
           }
 
           if (b2World.IsTOICandidate(c)) {

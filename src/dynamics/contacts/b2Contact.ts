@@ -67,6 +67,19 @@ export class b2ContactEdge {
   }
 }
 
+/**
+ * Not in the C++: a contact's TOI, friction and restitution, in an object of one class. The solver
+ * and SolveTOI read them from contacts of every pair of shape types (seven classes, so seven object
+ * layouts), and V8 boxes a double read from or written to a field at a site that sees that many
+ * layouts: a heap allocation per contact and step. b2Contact.m_toi, m_friction and m_restitution
+ * are accessors to these fields.
+ */
+export class b2ContactScalars {
+  toi = 1.0;
+  friction = 0.0;
+  restitution = 0.0;
+}
+
 /** A manifold as constructed, which b2Contact.Init copies into a reused contact's. */
 const s_newManifold = new b2Manifold();
 
@@ -130,11 +143,31 @@ export abstract class b2Contact {
   readonly m_manifold = new b2Manifold();
 
   m_toiCount = 0;
-  // The C++ leaves m_toi uninitialised; b2World.SolveTOI writes it before any read.
-  m_toi = 1.0;
 
-  m_friction = 0.0;
-  m_restitution = 0.0;
+  /** Not in the C++: the storage of m_toi, m_friction and m_restitution (see b2ContactScalars). */
+  readonly m_scalars = new b2ContactScalars();
+
+  // The C++ leaves m_toi uninitialised; b2World.SolveTOI writes it before any read.
+  get m_toi(): number {
+    return this.m_scalars.toi;
+  }
+  set m_toi(toi: number) {
+    this.m_scalars.toi = toi;
+  }
+
+  get m_friction(): number {
+    return this.m_scalars.friction;
+  }
+  set m_friction(friction: number) {
+    this.m_scalars.friction = friction;
+  }
+
+  get m_restitution(): number {
+    return this.m_scalars.restitution;
+  }
+  set m_restitution(restitution: number) {
+    this.m_scalars.restitution = restitution;
+  }
 
   constructor(fixtureA: b2Fixture, indexA: number, fixtureB: b2Fixture, indexB: number) {
     this.m_nodeA = new b2ContactEdge(this, fixtureB.GetBody());
@@ -175,10 +208,11 @@ export abstract class b2Contact {
     this.m_nodeB.other = fixtureA.GetBody();
 
     this.m_toiCount = 0;
-    this.m_toi = 1.0;
+    const scalars = this.m_scalars;
+    scalars.toi = 1.0;
 
-    this.m_friction = b2MixFriction(this.m_fixtureA.m_friction, this.m_fixtureB.m_friction);
-    this.m_restitution = b2MixRestitution(this.m_fixtureA.m_restitution, this.m_fixtureB.m_restitution);
+    scalars.friction = b2MixFriction(this.m_fixtureA.m_friction, this.m_fixtureB.m_friction);
+    scalars.restitution = b2MixRestitution(this.m_fixtureA.m_restitution, this.m_fixtureB.m_restitution);
   }
 
   /**

@@ -402,8 +402,9 @@ export class b2ContactSolver {
 
       const o = i * VcF.stride;
       const oi = i * VcI.stride;
-      vf[o + VcF.friction] = contact.m_friction;
-      vf[o + VcF.restitution] = contact.m_restitution;
+      const scalars = contact.m_scalars;
+      vf[o + VcF.friction] = scalars.friction;
+      vf[o + VcF.restitution] = scalars.restitution;
       vi[oi + VcI.indexA] = bodyA.m_islandIndex;
       vi[oi + VcI.indexB] = bodyB.m_islandIndex;
       vf[o + VcF.invMassA] = bodyA.m_invMass;

@@ -181,6 +181,18 @@ describe('b2Contact construction', () => {
     expect(contact.GetRestitution()).toBe(0.7);
   });
 
+  it('keeps m_toi, m_friction and m_restitution in its b2ContactScalars (the fields are accessors to it)', () => {
+    const world = newWorld();
+    const contact = b2Contact.Create(addFixture(world, makeShape('polygon')), 0, addFixture(world, makeShape('circle'), { x: 3.0 }), 0)!;
+    contact.m_toi = 0.25;
+    contact.m_friction = 0.5;
+    contact.m_restitution = 0.75;
+    expect({ ...contact.m_scalars }).toEqual({ toi: 0.25, friction: 0.5, restitution: 0.75 });
+    contact.m_scalars.toi = 0.125;
+    expect(contact.m_toi).toBe(0.125);
+    expect(contact.GetFriction()).toBe(0.5);
+  });
+
   it('starts enabled, not touching, with an empty manifold, no TOI count and unlinked edges', () => {
     const world = newWorld();
     const fixtureA = addFixture(world, makeShape('polygon'));

@@ -60,8 +60,7 @@ function makeIsland(options: IslandOptions) {
   const contact = {
     m_fixtureA: { GetShape: () => shape, GetBody: () => bodyA },
     m_fixtureB: { GetShape: () => shape, GetBody: () => bodyB },
-    m_friction: options.friction ?? 0.0,
-    m_restitution: options.restitution ?? 0.0,
+    m_scalars: { toi: 1.0, friction: options.friction ?? 0.0, restitution: options.restitution ?? 0.0 },
     GetManifold: () => manifold,
   } as unknown as b2Contact;
 
