@@ -17,7 +17,8 @@ export class b2EdgeAndPolygonContact extends b2Contact {
     return new b2EdgeAndPolygonContact(fixtureA, fixtureB);
   }
 
-  // The block allocator of the C++ frees the memory here; the garbage collector does that now.
+  // The C++ frees the memory to the block allocator here; b2Contact.Destroy hands the contact to
+  // the world's b2ContactAllocator instead.
   static override Destroy(contact: b2Contact): void {}
 
   constructor(fixtureA: b2Fixture, fixtureB: b2Fixture) {
