@@ -976,7 +976,7 @@ export class b2World {
   /**
    * Not in the C++: enable/disable the step's timing into GetProfile (off by default). Each reading
    * of the host clock (performance.now) allocates a number on the JavaScript heap, about twenty per
-   * step; with timing off a steady-state step allocates nothing.
+   * step, which a game loop that never waits on the garbage collector does not want.
    */
   SetProfiling(flag: boolean): void {
     this.m_profiling = flag;
