@@ -206,13 +206,10 @@ function cutIntoSteps(engine: Recorder, calls: Call[]): { events: Call[]; posts:
 }
 
 /**
- * 24 steps of the scene on the GPU, synchronised every 4, with `listener` (null: the world's
- * default): the number of ranges each synchronisation reads besides the bodies, and the log
- * copies submitted (command encoders labelled 'contact event log').
+ * Hands `world` to a new WebGPU backend and returns the list that then gets, for each read-back of
+ * a synchronisation, the number of ranges it reads besides the bodies.
  */
-async function logged(ctx: GpuContext, listener: b2ContactListener | null): Promise<{ ranges: number[]; copies: number }> {
-  const { world } = scene();
-  if (listener !== null) world.SetContactListener(listener);
+async function onGpuCountingReads(ctx: GpuContext, world: b2World): Promise<number[]> {
   const backend = await WebGPUBackend.create({ context: ctx });
   await world.SetBackend(backend);
   const stepper = backend.stepper!;
@@ -222,6 +219,18 @@ async function logged(ctx: GpuContext, listener: b2ContactListener | null): Prom
     ranges.push(extras.length);
     return read(extras);
   };
+  return ranges;
+}
+
+/**
+ * 24 steps of the scene on the GPU, synchronised every 4, with `listener` (null: the world's
+ * default): the number of ranges each synchronisation reads besides the bodies, and the log
+ * copies submitted (command encoders labelled 'contact event log').
+ */
+async function logged(ctx: GpuContext, listener: b2ContactListener | null): Promise<{ ranges: number[]; copies: number }> {
+  const { world } = scene();
+  if (listener !== null) world.SetContactListener(listener);
+  const ranges = await onGpuCountingReads(ctx, world);
   const proto = Object.getPrototypeOf(ctx.device) as { createCommandEncoder: (d?: GPUCommandEncoderDescriptor) => GPUCommandEncoder };
   const create = proto.createCommandEncoder;
   let copies = 0;
@@ -449,15 +458,7 @@ describeGpu('WebGPUBackend: contact events after the step', (ctx) => {
     const { world } = scene();
     const listener = new PostSolveRecorder();
     world.SetContactListener(listener);
-    const backend = await WebGPUBackend.create({ context: ctx });
-    await world.SetBackend(backend);
-    const stepper = backend.stepper!;
-    const ranges: number[] = [];
-    const read = stepper.readBodies.bind(stepper);
-    stepper.readBodies = (extras: GpuReadRange[] = []) => {
-      ranges.push(extras.length);
-      return read(extras);
-    };
+    const ranges = await onGpuCountingReads(ctx, world);
     for (let step = 1; step <= 24; ++step) {
       world.Step(DT, 8, 3);
       if (step % 4 === 0 && step < 24) await world.Synchronize();
