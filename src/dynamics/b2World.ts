@@ -1444,7 +1444,6 @@ export class b2World {
 
       b2SweepTime[0] = minAlpha;
       bA.AdvanceAt();
-      b2SweepTime[0] = minAlpha;
       bB.AdvanceAt();
 
       // The TOI contact likely has some new contact points.
