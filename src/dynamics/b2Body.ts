@@ -897,6 +897,7 @@ export class b2Body {
     }
 
     this.m_type = type;
+    this.m_world.m_toiCandidatesStale = true;
 
     this.ResetMassData();
 

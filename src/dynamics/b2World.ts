@@ -195,10 +195,13 @@ export class b2World {
   private readonly m_backup1 = new b2Sweep();
   private readonly m_backup2 = new b2Sweep();
   private readonly m_toiBodies: b2Body[] = [];
-  /** Not in the C++: the contacts SolveTOI's search must visit after its first pass (IsTOICandidate). */
+  /**
+   * Not in the C++: the contacts SolveTOI's search visits (IsTOICandidate), the first
+   * m_toiCandidateCount entries, in the reverse of their contact list order. Kept from step to
+   * step (UpdateTOICandidates).
+   */
   private readonly m_toiCandidates: b2Contact[] = [];
   private m_toiCandidateCount = 0;
-  private m_toiListHead: b2Contact | null = null;
   /**
    * Not in the C++: the contacts whose island flag this world has set since Solve last cleared
    * the flags (FlagContact), the first m_flaggedContactCount entries. Destroyed ones may remain:
@@ -208,7 +211,11 @@ export class b2World {
   private m_flaggedContactCount = 0;
   /** ComputeContactTOI's result. */
   private m_contactAlpha = 0.0;
-  /** Set by b2Body.SetBullet and b2Fixture.SetSensor: SolveTOI's candidates may be out of date. */
+  /**
+   * Set by b2Body.SetBullet and SetType, b2Fixture.SetSensor, SetBackend and the solver-state
+   * reader: SolveTOI's candidates may be out of date, or contacts may carry TOI state it does not
+   * know of.
+   */
   m_toiCandidatesStale = false;
 
   // One query/ray-cast wrapper per nesting level, so a callback may query the world again.
@@ -664,6 +671,8 @@ export class b2World {
       }
     } finally {
       this.m_backendSwitching = false;
+      // A backend takes the contacts over and hands back contacts of its own.
+      this.m_toiCandidatesStale = true;
     }
   }
 
@@ -1060,13 +1069,8 @@ export class b2World {
     for (let b = this.m_bodyList; b; b = b.m_next) {
       b.m_flags &= ~b2Body.e_islandFlag;
     }
-    // The C++ walks the whole contact list here; only the contacts this world flagged can carry
-    // the flag, so clearing those leaves the same flags for an array read instead of a list walk.
-    const flagged = this.m_flaggedContacts;
-    for (let i = 0; i < this.m_flaggedContactCount; ++i) {
-      flagged[i].m_flags &= ~b2Contact.e_islandFlag;
-    }
-    this.m_flaggedContactCount = 0;
+    // The C++ walks the whole contact list here.
+    this.ClearFlaggedContacts();
     for (let j = this.m_jointList; j; j = j.m_next) {
       j.m_islandFlag = false;
     }
@@ -1224,6 +1228,18 @@ export class b2World {
   }
 
   /**
+   * Not in the C++: clears the island flag of every contact, which only the contacts this world
+   * flagged can carry: the same flags as a walk over the contact list, for an array read.
+   */
+  private ClearFlaggedContacts(): void {
+    const flagged = this.m_flaggedContacts;
+    for (let i = 0; i < this.m_flaggedContactCount; ++i) {
+      flagged[i].m_flags &= ~b2Contact.e_islandFlag;
+    }
+    this.m_flaggedContactCount = 0;
+  }
+
+  /**
    * One contact of SolveTOI's search for the first TOI, as the C++ loop body: false where the C++
    * skips the contact with `continue`, else true with the contact's TOI (computed and cached, or
    * the cached one) in m_contactAlpha, not returned: V8 boxes a double returned by a call it does
@@ -1328,13 +1344,11 @@ export class b2World {
   }
 
   /**
-   * Not in the C++: whether SolveTOI's search must look at contact c again after its first pass.
-   * A contact without a cached TOI whose fixtures include a sensor, or whose bodies are both
-   * dynamic and not bullets, is skipped by every pass, and nothing in a step changes that except
-   * b2Body.SetBullet and b2Fixture.SetSensor called from a callback, which set
-   * m_toiCandidatesStale for a full search again (b2Body.SetType, which would, is refused while
-   * the world is locked). In a pyramid of n boxes that leaves the few contacts with the ground, so
-   * the searches after the first cost those instead of every contact, with the same result.
+   * Not in the C++: whether SolveTOI's search must visit contact c. A contact without a cached TOI
+   * whose fixtures include a sensor, or whose bodies are both dynamic and not bullets, has no TOI
+   * (ComputeContactTOI returns false for it, changing nothing), and only b2Body.SetBullet and
+   * SetType and b2Fixture.SetSensor change that (they set m_toiCandidatesStale). In a pyramid of n
+   * boxes that leaves the few contacts with the ground.
    */
   private static IsTOICandidate(c: b2Contact): boolean {
     if (c.m_flags & b2Contact.e_toiFlag) {
@@ -1352,15 +1366,80 @@ export class b2World {
     return collideA || collideB;
   }
 
+  /**
+   * Not in the C++: brings SolveTOI's candidates up to date before a search, and with invalidateTOI
+   * does the C++'s invalidation of every contact's TOI and island flag. The C++ walks the whole
+   * contact list for both, every step. Here only a contact's creation or destruction, and the
+   * calls that set m_toiCandidatesStale, change the candidates:
+   * - a destroyed contact (m_toiSearch 0 again) is dropped from the array;
+   * - contacts created since the last search head the contact list (AddPair prepends them), so a
+   *   walk from the head up to the first contact seen before (m_toiSearch not 0) finds them all;
+   *   their candidates go on the end of the array, which keeps it in reverse list order;
+   * - a contact can hold a TOI flag, count or value only while it is a candidate (only the search
+   *   sets them), so invalidating the candidates resets the same state as the C++'s walk, and its
+   *   island flag is set only by FlagContact, so clearing the flagged contacts clears the rest.
+   * When stale, the walk covers the whole list, as the C++'s, and rebuilds the array.
+   */
+  private UpdateTOICandidates(invalidateTOI: boolean): void {
+    const candidates = this.m_toiCandidates;
+    const oldCount = this.m_toiCandidateCount;
+    const whole = this.m_toiCandidatesStale;
+    this.m_toiCandidatesStale = false;
+    let count = 0;
+    if (!whole) {
+      for (let i = 0; i < oldCount; ++i) {
+        const c = candidates[i];
+        if (c.m_toiSearch !== 2) {
+          continue;
+        }
+        if (invalidateTOI) {
+          b2World.InvalidateTOI(c);
+        }
+        candidates[count++] = c;
+      }
+      if (invalidateTOI) {
+        this.ClearFlaggedContacts();
+      }
+    } else if (invalidateTOI) {
+      this.m_flaggedContactCount = 0;
+    }
+
+    const first = count;
+    for (let c = this.m_contactManager.m_contactList; c !== null && (whole || c.m_toiSearch === 0); c = c.m_next) {
+      if (whole && invalidateTOI) {
+        b2World.InvalidateTOI(c);
+      }
+      if (b2World.IsTOICandidate(c)) {
+        c.m_toiSearch = 2;
+        candidates[count++] = c;
+      } else {
+        c.m_toiSearch = 1;
+      }
+    }
+    for (let i = first, j = count - 1; i < j; ++i, --j) {
+      const c = candidates[i];
+      candidates[i] = candidates[j];
+      candidates[j] = c;
+    }
+    // Let go of destroyed contacts.
+    for (let i = count; i < oldCount; ++i) {
+      candidates[i] = null as unknown as b2Contact;
+    }
+    this.m_toiCandidateCount = count;
+  }
+  /** The C++'s loop body that invalidates a contact's TOI (and island flag) in SolveTOI. */
+  private static InvalidateTOI(c: b2Contact): void {
+    c.m_flags &= ~(b2Contact.e_toiFlag | b2Contact.e_islandFlag);
+    c.m_toiCount = 0;
+    c.m_scalars.toi = 1.0;
+  }
+
+
   /** Find TOI contacts and solve them. */
   SolveTOI(step: Readonly<b2TimeStep>): void {
     const island = this.m_island;
     island.Initialize(2 * b2_maxTOIContacts, b2_maxTOIContacts, 0, this.m_contactManager.m_contactListener);
 
-    // The C++ invalidates every contact's TOI here, in a loop of its own over the contact list,
-    // when the step is complete. The first search below walks the whole list and reads nothing
-    // of a contact before reaching it, so the invalidation is done there, contact by contact:
-    // one pass over the contacts instead of two, the same state.
     let invalidateTOI = this.m_stepComplete;
     if (this.m_stepComplete) {
       for (let b = this.m_bodyList; b; b = b.m_next) {
@@ -1374,58 +1453,23 @@ export class b2World {
     const backup = this.m_backup;
     const bodies = this.m_toiBodies;
     const candidates = this.m_toiCandidates;
-    let fullSearch = true;
 
     // Find TOI events and solve them.
     for (;;) {
-      // Find the first TOI.
+      // Find the first TOI: the C++ walks the whole contact list; the candidates are the contacts
+      // of that walk with a TOI, in the same order.
+      this.UpdateTOICandidates(invalidateTOI);
+      invalidateTOI = false;
       let minContact: b2Contact | null = null;
       let minAlpha = 1.0;
-
-      if (fullSearch || this.m_toiCandidatesStale) {
-        fullSearch = false;
-        this.m_toiCandidatesStale = false;
-        let count = 0;
-        for (let c = this.m_contactManager.m_contactList; c; c = c.m_next) {
-          if (invalidateTOI) {
-            // Invalidate TOI
-            c.m_flags &= ~(b2Contact.e_toiFlag | b2Contact.e_islandFlag);
-            c.m_toiCount = 0;
-            c.m_scalars.toi = 1.0;
-          }
-
-          if (b2World.IsTOICandidate(c)) {
-            candidates[count++] = c;
-          }
-
-          if (this.ComputeContactTOI(c) && this.m_contactAlpha < minAlpha) {
-            // This is the minimum TOI found so far.
-            minContact = c;
-            minAlpha = this.m_contactAlpha;
-          }
-        }
-        this.m_toiCandidateCount = count;
-        this.m_toiListHead = this.m_contactManager.m_contactList;
-      } else {
-        // The same search over the same list order: first the contacts created since the full
-        // search (AddPair puts them at the head of the list), then the candidates it kept.
-        const head = this.m_toiListHead;
-        for (let c = this.m_contactManager.m_contactList; c !== head && c !== null; c = c.m_next) {
-          if (this.ComputeContactTOI(c) && this.m_contactAlpha < minAlpha) {
-            minContact = c;
-            minAlpha = this.m_contactAlpha;
-          }
-        }
-        const count = this.m_toiCandidateCount;
-        for (let i = 0; i < count; ++i) {
-          const c = candidates[i];
-          if (this.ComputeContactTOI(c) && this.m_contactAlpha < minAlpha) {
-            minContact = c;
-            minAlpha = this.m_contactAlpha;
-          }
+      for (let i = this.m_toiCandidateCount - 1; i >= 0; --i) {
+        const c = candidates[i];
+        if (this.ComputeContactTOI(c) && this.m_contactAlpha < minAlpha) {
+          // This is the minimum TOI found so far.
+          minContact = c;
+          minAlpha = this.m_contactAlpha;
         }
       }
-      invalidateTOI = false;
 
       if (minContact === null || 1.0 - 10.0 * b2_epsilon < minAlpha) {
         // No more TOI events. Done!

@@ -442,6 +442,8 @@ export function b2dJsonReadState(
     readJointState(joints[i], obj(jointStates[i], `${root}.joints[${i}]`), `${root}.joints[${i}]`);
   }
 
+  // The restored contacts carry TOI state that SolveTOI's next search must see (b2World.UpdateTOICandidates).
+  world.m_toiCandidatesStale = true;
   // Contacts, in creation order, linked as b2ContactManager.AddPair links them.
   const cm = world.m_contactManager;
   for (let i = 0; i < contactStates.length; ++i) {

@@ -657,6 +657,112 @@ describe('b2World continuous collision: bullets (2.2.1 SolveTOI rules)', () => {
   });
 });
 
+// SolveTOI keeps its candidates (the contacts b2World.IsTOICandidate lets through, which are the
+// only ones with a TOI) from step to step and brings them up to date before each search.
+describe('b2World SolveTOI candidates kept between steps', () => {
+  type CandidateState = { m_toiCandidates: b2Contact[]; m_toiCandidateCount: number };
+  const everyContactACandidate = () => true;
+  function withEveryContactACandidate<T>(run: () => T): T {
+    const statics = b2World as unknown as { IsTOICandidate: unknown };
+    const original = statics.IsTOICandidate;
+    statics.IsTOICandidate = everyContactACandidate;
+    try {
+      return run();
+    } finally {
+      statics.IsTOICandidate = original;
+    }
+  }
+
+  // A ball resting close above a thin plate (their contact exists after one step), then shot
+  // through it after `change`: the plate's type, the ball's bullet flag or its sensor flag.
+  function shootThroughPlate(change: 'none' | 'SetType' | 'SetBullet' | 'SetSensor') {
+    const world = new b2World(new b2Vec2(0.0, 0.0));
+    const plate = createBody(world, change === 'SetSensor' ? b2BodyType.b2_staticBody : b2BodyType.b2_dynamicBody, 0.0, 0.0);
+    addBox(plate, 2.0, 0.05, 1.0);
+    const ball = createBody(world, b2BodyType.b2_dynamicBody, 0.0, 0.25);
+    const fixture = addCircle(ball, 0.1, 1.0);
+    if (change === 'SetSensor' || change === 'none') fixture.SetSensor(change === 'SetSensor');
+    world.Step(h, 8, 3);
+    expect(world.GetContactCount()).toBe(1);
+    if (change === 'SetType') plate.SetType(b2BodyType.b2_staticBody);
+    if (change === 'SetBullet') ball.SetBullet(true);
+    if (change === 'SetSensor') fixture.SetSensor(false);
+    ball.SetLinearVelocity(new b2Vec2(0.0, -120.0));
+    world.Step(h, 8, 3);
+    return { y: ball.GetPosition().y, plateY: plate.GetPosition().y };
+  }
+
+  it('sees a contact that SetType, SetBullet or SetSensor made a TOI contact between steps', () => {
+    // Unchanged, the ball tunnels through the dynamic plate.
+    expect(shootThroughPlate('none').y).toBe(0.25 + h * -120.0);
+    for (const change of ['SetType', 'SetBullet', 'SetSensor'] as const) {
+      const { y, plateY } = shootThroughPlate(change);
+      expect(y, change).toBeGreaterThan(plateY + 0.05 + 0.1 - 3.0 * 0.005);
+      expect(y, change).toBeLessThan(plateY + 0.25);
+    }
+  });
+
+  // Bullets and balls bouncing on a static floor and a dynamic shelf: contacts with a TOI end and
+  // begin again every few steps, their objects reused by the contact allocator.
+  function bouncingRain(steps: number, check: (world: b2World) => void): string {
+    const world = new b2World(new b2Vec2(0.0, -10.0));
+    const floor = createBody(world, b2BodyType.b2_staticBody, 0.0, 0.0);
+    addBox(floor, 20.0, 0.1, 0.0);
+    const shelf = createBody(world, b2BodyType.b2_dynamicBody, 0.0, 3.0);
+    addBox(shelf, 4.0, 0.05, 1.0);
+    for (let i = 0; i < 24; ++i) {
+      const bd = new b2BodyDef();
+      bd.type = b2BodyType.b2_dynamicBody;
+      bd.position.Set(-9.0 + 0.75 * i, 6.0 + (i % 5));
+      bd.linearVelocity.Set(i % 2 === 0 ? 3.0 : -3.0, -40.0 - i);
+      bd.bullet = i % 3 === 0;
+      const body = world.CreateBody(bd);
+      const fd = new b2FixtureDef();
+      if (i % 2 === 0) {
+        const circle = new b2CircleShape();
+        circle.m_radius = 0.15;
+        fd.shape = circle;
+      } else {
+        const box = new b2PolygonShape();
+        box.SetAsBox(0.15, 0.1);
+        fd.shape = box;
+      }
+      fd.density = 1.0;
+      fd.restitution = 0.8;
+      body.CreateFixture(fd);
+    }
+    for (let k = 0; k < steps; ++k) {
+      world.Step(h, 8, 3);
+      check(world);
+    }
+    return motionDigest(world);
+  }
+
+  it('keeps exactly the contacts with a TOI, in contact list order, as contacts end and begin', () => {
+    let checked = 0;
+    let ended = 0;
+    let previous = new Set<b2Contact>();
+    const digest = bouncingRain(240, (world) => {
+      const state = world as unknown as CandidateState;
+      const kept = state.m_toiCandidates.slice(0, state.m_toiCandidateCount).reverse();
+      const expected: b2Contact[] = [];
+      const now = new Set<b2Contact>();
+      for (let c = world.GetContactList(); c; c = c.GetNext()) {
+        now.add(c);
+        if ((b2World as unknown as { IsTOICandidate: (c: b2Contact) => boolean }).IsTOICandidate(c)) expected.push(c);
+      }
+      expect(kept).toEqual(expected);
+      for (const c of previous) if (!now.has(c)) ended++;
+      previous = now;
+      checked += expected.length;
+    });
+    expect(checked).toBeGreaterThan(0);
+    expect(ended).toBeGreaterThan(0);
+    // The same trajectory as a search over every contact, as the C++'s.
+    expect(withEveryContactACandidate(() => bouncingRain(240, () => {}))).toBe(digest);
+  });
+});
+
 describe('b2World bodies, joints and destruction', () => {
   it('prepends bodies and joints, counts them and unlinks them on destruction', () => {
     const world = new b2World(new b2Vec2(0.0, -10.0));

@@ -144,6 +144,13 @@ export abstract class b2Contact {
 
   m_toiCount = 0;
 
+  /**
+   * Not in the C++: where b2World.SolveTOI's search stands with this contact: 0 until the search
+   * first reaches it (and again once destroyed), 1 once it has, 2 if the search keeps it among
+   * its candidates (b2World.IsTOICandidate).
+   */
+  m_toiSearch = 0;
+
   /** Not in the C++: the storage of m_toi, m_friction and m_restitution (see b2ContactScalars). */
   readonly m_scalars = new b2ContactScalars();
 
@@ -208,6 +215,7 @@ export abstract class b2Contact {
     this.m_nodeB.other = fixtureA.GetBody();
 
     this.m_toiCount = 0;
+    this.m_toiSearch = 0;
     const scalars = this.m_scalars;
     scalars.toi = 1.0;
 
@@ -411,6 +419,7 @@ export abstract class b2Contact {
 
     const destroyFcn = b2Contact.s_registers[typeA][typeB].destroyFcn;
     destroyFcn!(contact);
+    contact.m_toiSearch = 0;
     if (allocator !== null) {
       // A stored contact keeps nothing alive: its fixtures and bodies may be on their way out.
       contact.m_fixtureA = contact.m_fixtureB = null as unknown as b2Fixture;
