@@ -10,7 +10,6 @@ import type { b2Vec2 } from '../common/b2Math';
 import { b2Max, b2Min } from '../common/b2Math';
 import { b2DynamicTree } from './b2DynamicTree';
 import type { b2TreeQueryCallback, b2TreeRayCastCallback } from './b2DynamicTree';
-import { b2TestOverlap } from './b2Collision';
 import type { b2AABB, b2RayCastInput } from './b2Collision';
 
 export class b2Pair {
@@ -123,9 +122,21 @@ export class b2BroadPhase implements b2TreeQueryCallback {
 
   /** Test overlap of fat AABBs. */
   TestOverlap(proxyIdA: number, proxyIdB: number): boolean {
-    const aabbA = this.m_tree.GetFatAABB(proxyIdA);
-    const aabbB = this.m_tree.GetFatAABB(proxyIdB);
-    return b2TestOverlap(aabbA, aabbB);
+    // b2TestOverlap(GetFatAABB(proxyIdA), GetFatAABB(proxyIdB)), on the tree's copy of the fat
+    // AABBs (b2DynamicTree.m_fatAABBs): the contact manager asks this for every contact each step.
+    const fat = this.m_tree.m_fatAABBs;
+    const a = 4 * proxyIdA;
+    const b = 4 * proxyIdB;
+    const d1x = fat[b] - fat[a + 2];
+    const d1y = fat[b + 1] - fat[a + 3];
+    const d2x = fat[a] - fat[b + 2];
+    const d2y = fat[a + 1] - fat[b + 3];
+
+    if (d1x > 0.0 || d1y > 0.0) return false;
+
+    if (d2x > 0.0 || d2y > 0.0) return false;
+
+    return true;
   }
 
   /** Get the number of proxies. */

@@ -114,11 +114,20 @@ export class b2DynamicTree {
 
   m_insertionCount: number;
 
+  /**
+   * Not in the C++: each leaf's fat AABB again (lower x, lower y, upper x, upper y at 4 * proxyId;
+   * other nodes' entries mean nothing), for the broad-phase's per-step reads (MoveProxy's
+   * containment test, b2BroadPhase.TestOverlap for every contact): one typed array, where the
+   * node's aabb is a node, an AABB, two vectors and four boxed coordinates to load.
+   */
+  m_fatAABBs: Float64Array;
+
   /** Constructing the tree initializes the node pool. */
   constructor() {
     this.m_root = b2_nullNode;
 
     this.m_nodeCapacity = 16;
+    this.m_fatAABBs = new Float64Array(4 * this.m_nodeCapacity);
     this.m_nodeCount = 0;
     this.m_nodes = [];
     for (let i = 0; i < this.m_nodeCapacity; ++i) {
@@ -150,6 +159,9 @@ export class b2DynamicTree {
       for (let i = this.m_nodeCount; i < this.m_nodeCapacity; ++i) {
         this.m_nodes.push(new b2TreeNode());
       }
+      const fatAABBs = new Float64Array(4 * this.m_nodeCapacity);
+      fatAABBs.set(this.m_fatAABBs);
+      this.m_fatAABBs = fatAABBs;
 
       // Build a linked list for the free list. The parent
       // pointer becomes the "next" pointer.
@@ -202,6 +214,7 @@ export class b2DynamicTree {
     node.aabb.lowerBound.y = aabb.lowerBound.y - r;
     node.aabb.upperBound.x = aabb.upperBound.x + r;
     node.aabb.upperBound.y = aabb.upperBound.y + r;
+    this.SetFatAABB(proxyId, node.aabb);
     node.userData = userData;
     node.height = 0;
 
@@ -231,7 +244,15 @@ export class b2DynamicTree {
     const node = this.m_nodes[proxyId];
     b2Assert(node.IsLeaf());
 
-    if (node.aabb.Contains(aabb)) {
+    // node.aabb.Contains(aabb), on the copy in m_fatAABBs.
+    const fat = this.m_fatAABBs;
+    const o = 4 * proxyId;
+    if (
+      fat[o] <= aabb.lowerBound.x &&
+      fat[o + 1] <= aabb.lowerBound.y &&
+      aabb.upperBound.x <= fat[o + 2] &&
+      aabb.upperBound.y <= fat[o + 3]
+    ) {
       return false;
     }
 
@@ -264,6 +285,7 @@ export class b2DynamicTree {
     node.aabb.lowerBound.y = lowerY;
     node.aabb.upperBound.x = upperX;
     node.aabb.upperBound.y = upperY;
+    this.SetFatAABB(proxyId, node.aabb);
 
     this.InsertLeaf(proxyId);
     return true;
@@ -282,6 +304,29 @@ export class b2DynamicTree {
   GetFatAABB(proxyId: number): Readonly<b2AABB> {
     b2Assert(0 <= proxyId && proxyId < this.m_nodeCapacity);
     return this.m_nodes[proxyId].aabb;
+  }
+
+  /** Not in the C++: copies a leaf's fat AABB into m_fatAABBs. */
+  private SetFatAABB(proxyId: number, aabb: Readonly<b2AABB>): void {
+    const fat = this.m_fatAABBs;
+    const o = 4 * proxyId;
+    fat[o] = aabb.lowerBound.x;
+    fat[o + 1] = aabb.lowerBound.y;
+    fat[o + 2] = aabb.upperBound.x;
+    fat[o + 3] = aabb.upperBound.y;
+  }
+
+  /**
+   * Not in the C++: refills m_fatAABBs from the leaves, for a reader that has set m_nodes and
+   * m_nodeCapacity itself.
+   */
+  SyncFatAABBs(): void {
+    this.m_fatAABBs = new Float64Array(4 * this.m_nodeCapacity);
+    for (let i = 0; i < this.m_nodeCapacity; ++i) {
+      if (this.m_nodes[i].height === 0) {
+        this.SetFatAABB(i, this.m_nodes[i].aabb);
+      }
+    }
   }
 
   /**

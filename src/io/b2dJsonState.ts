@@ -421,6 +421,7 @@ export function b2dJsonReadState(
 
   tree.m_nodes = nodes;
   tree.m_nodeCapacity = capacity;
+  tree.SyncFatAABBs();
   tree.m_root = int(treeState.root, `${root}.broadPhase.tree.root`, -1, capacity - 1);
   tree.m_nodeCount = int(treeState.nodeCount, `${root}.broadPhase.tree.nodeCount`, 0, capacity);
   tree.m_freeList = int(treeState.freeList, `${root}.broadPhase.tree.freeList`, -1, capacity - 1);

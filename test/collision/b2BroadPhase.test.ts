@@ -198,6 +198,11 @@ describe('b2BroadPhase', () => {
           if (got[got.length - 1] !== key) got.push(key);
         }
         expect(got).toEqual(want);
+        // TestOverlap (on the tree's copy of the fat AABBs) agrees with b2TestOverlap on the AABBs.
+        const disagree = live.flatMap((p) =>
+          live.filter((q) => bp.TestOverlap(p.id, q.id) !== b2TestOverlap(bp.GetFatAABB(p.id), bp.GetFatAABB(q.id))),
+        );
+        expect(disagree).toEqual([]);
       }
     }
     expect(bp.GetProxyCount()).toBe(live.length);
