@@ -4,7 +4,7 @@
  * Node ids are indices into a pool that grows exactly as the C++ one does (capacity 16, doubling,
  * LIFO free list), because proxy ids, and through them pair order, contact order and solver order,
  * are part of the result. Pool entries are objects that stay in place when the pool grows, so the
- * C++ memcpy has no counterpart here.
+ * C++ memcpy has no counterpart here, except for m_fatAABBs (the leaves' fat AABBs again, packed).
  */
 
 import { b2Abs, b2AbsV, b2CrossSV, b2Max, b2Min, b2Vec2, b2Vec2Equals } from '../common/b2Math';

@@ -445,6 +445,7 @@ export function b2dJsonReadState(
 
   // The restored contacts carry TOI state that SolveTOI's next search must see (b2World.UpdateTOICandidates).
   world.m_toiCandidatesStale = true;
+
   // Contacts, in creation order, linked as b2ContactManager.AddPair links them.
   const cm = world.m_contactManager;
   for (let i = 0; i < contactStates.length; ++i) {
