@@ -162,6 +162,7 @@ export class b2Island {
       contactSolver.WarmStart();
     }
 
+    solverData.jointRecordCount = 0;
     for (let i = 0; i < this.m_jointCount; ++i) {
       this.m_joints[i].InitVelocityConstraints(solverData);
     }

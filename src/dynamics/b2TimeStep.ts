@@ -109,6 +109,14 @@ export class b2SolverData {
   readonly step = new b2TimeStep();
   positions = new Float64Array(0);
   velocities = new Float64Array(0);
+  /**
+   * Not in the C++: the island's joint solver records (b2RevoluteJoint's), the first
+   * jointRecordCount doubles, one joint's after another in the order the island initialises them,
+   * so the solver's passes read them in one sweep through memory instead of one small array per
+   * joint. b2Island.Solve empties it before the joints' InitVelocityConstraints.
+   */
+  jointRecords = new Float64Array(0);
+  jointRecordCount = 0;
 
   Clone(): b2SolverData {
     return new b2SolverData().Assign(this);
@@ -118,6 +126,23 @@ export class b2SolverData {
     this.step.Assign(data.step);
     this.positions = data.positions;
     this.velocities = data.velocities;
+    this.jointRecords = data.jointRecords;
+    this.jointRecordCount = data.jointRecordCount;
     return this;
+  }
+
+  /**
+   * Not in the C++: the offset in jointRecords of `size` doubles for one joint. When they do not
+   * fit, jointRecords becomes a larger array; the joints given the old one keep it, so every
+   * record stays where its joint wrote it.
+   */
+  AllocateJointRecord(size: number): number {
+    const offset = this.jointRecordCount;
+    const end = offset + size;
+    if (end > this.jointRecords.length) {
+      this.jointRecords = new Float64Array(Math.max(2 * this.jointRecords.length, end, 64));
+    }
+    this.jointRecordCount = end;
+    return offset;
   }
 }

@@ -32,11 +32,14 @@ import { b2CheckFinite, b2CheckLimits, b2CheckNonNegative } from '../../common/b
 
 const s_qA = new b2Rot();
 const s_qB = new b2Rot();
+/** m_solverRecord before the joint's first InitVelocityConstraints. */
+const s_noRecord = new Float64Array(0);
 
 /**
  * The joint's solver record (m_solverRecord): what SolveVelocityConstraints and
- * SolvePositionConstraints read, copied by InitVelocityConstraints into one Float64Array, and the
- * impulses they accumulate. The fields remain the C++ ones (InitVelocityConstraints still sets
+ * SolvePositionConstraints read, copied by InitVelocityConstraints into the island's joint records
+ * (one Float64Array, the joints' records one after the other in solver order), and the impulses
+ * they accumulate. The fields remain the C++ ones (InitVelocityConstraints still sets
  * m_rA, m_mass...; StoreImpulses writes m_impulse and m_motorImpulse back after the velocity
  * iterations): the record only spares the solver's eight velocity and three position passes the
  * twenty-odd small heap objects those fields are (V8 boxes every double in an object field). In
@@ -163,8 +166,13 @@ export class b2RevoluteJoint extends b2Joint {
   m_motorMass = 0.0;
   m_limitState = b2LimitState.e_inactiveLimit;
 
-  /** The solver record (see RJ): valid from InitVelocityConstraints to the step's end. */
-  readonly m_solverRecord = new Float64Array(RJ.size);
+  /**
+   * The solver record (see RJ): RJ.size doubles from m_recordOffset in m_solverRecord, the island's
+   * joint records (b2SolverData.jointRecords); valid from InitVelocityConstraints to the end of the
+   * island's solve.
+   */
+  m_solverRecord = s_noRecord;
+  m_recordOffset = 0;
 
   constructor(def: b2RevoluteJointDef) {
     super(def);
@@ -294,38 +302,42 @@ export class b2RevoluteJoint extends b2Joint {
       this.m_motorImpulse = 0.0;
     }
 
-    const t = this.m_solverRecord;
-    t[RJ.rAx] = rA.x;
-    t[RJ.rAy] = rA.y;
-    t[RJ.rBx] = rB.x;
-    t[RJ.rBy] = rB.y;
-    t[RJ.invMassA] = mA;
-    t[RJ.invMassB] = mB;
-    t[RJ.invIA] = iA;
-    t[RJ.invIB] = iB;
-    t[RJ.massExX] = K.ex.x;
-    t[RJ.massExY] = K.ex.y;
-    t[RJ.massExZ] = K.ex.z;
-    t[RJ.massEyX] = K.ey.x;
-    t[RJ.massEyY] = K.ey.y;
-    t[RJ.massEyZ] = K.ey.z;
-    t[RJ.massEzX] = K.ez.x;
-    t[RJ.massEzY] = K.ez.y;
-    t[RJ.massEzZ] = K.ez.z;
-    t[RJ.motorMass] = this.m_motorMass;
-    t[RJ.impulseX] = this.m_impulse.x;
-    t[RJ.impulseY] = this.m_impulse.y;
-    t[RJ.impulseZ] = this.m_impulse.z;
-    t[RJ.motorImpulse] = this.m_motorImpulse;
-    t[RJ.motorSpeed] = this.m_motorSpeed;
-    t[RJ.maxMotorTorque] = this.m_maxMotorTorque;
-    t[RJ.referenceAngle] = this.m_referenceAngle;
-    t[RJ.lowerAngle] = this.m_lowerAngle;
-    t[RJ.upperAngle] = this.m_upperAngle;
-    t[RJ.localAnchorAX] = this.m_localAnchorA.x - this.m_localCenterA.x;
-    t[RJ.localAnchorAY] = this.m_localAnchorA.y - this.m_localCenterA.y;
-    t[RJ.localAnchorBX] = this.m_localAnchorB.x - this.m_localCenterB.x;
-    t[RJ.localAnchorBY] = this.m_localAnchorB.y - this.m_localCenterB.y;
+    // This joint's record, next to the island's other joint records (b2SolverData.AllocateJointRecord).
+    const rec = data.AllocateJointRecord(RJ.size);
+    const t = data.jointRecords;
+    this.m_solverRecord = t;
+    this.m_recordOffset = rec;
+    t[rec + RJ.rAx] = rA.x;
+    t[rec + RJ.rAy] = rA.y;
+    t[rec + RJ.rBx] = rB.x;
+    t[rec + RJ.rBy] = rB.y;
+    t[rec + RJ.invMassA] = mA;
+    t[rec + RJ.invMassB] = mB;
+    t[rec + RJ.invIA] = iA;
+    t[rec + RJ.invIB] = iB;
+    t[rec + RJ.massExX] = K.ex.x;
+    t[rec + RJ.massExY] = K.ex.y;
+    t[rec + RJ.massExZ] = K.ex.z;
+    t[rec + RJ.massEyX] = K.ey.x;
+    t[rec + RJ.massEyY] = K.ey.y;
+    t[rec + RJ.massEyZ] = K.ey.z;
+    t[rec + RJ.massEzX] = K.ez.x;
+    t[rec + RJ.massEzY] = K.ez.y;
+    t[rec + RJ.massEzZ] = K.ez.z;
+    t[rec + RJ.motorMass] = this.m_motorMass;
+    t[rec + RJ.impulseX] = this.m_impulse.x;
+    t[rec + RJ.impulseY] = this.m_impulse.y;
+    t[rec + RJ.impulseZ] = this.m_impulse.z;
+    t[rec + RJ.motorImpulse] = this.m_motorImpulse;
+    t[rec + RJ.motorSpeed] = this.m_motorSpeed;
+    t[rec + RJ.maxMotorTorque] = this.m_maxMotorTorque;
+    t[rec + RJ.referenceAngle] = this.m_referenceAngle;
+    t[rec + RJ.lowerAngle] = this.m_lowerAngle;
+    t[rec + RJ.upperAngle] = this.m_upperAngle;
+    t[rec + RJ.localAnchorAX] = this.m_localAnchorA.x - this.m_localCenterA.x;
+    t[rec + RJ.localAnchorAY] = this.m_localAnchorA.y - this.m_localCenterA.y;
+    t[rec + RJ.localAnchorBX] = this.m_localAnchorB.x - this.m_localCenterB.x;
+    t[rec + RJ.localAnchorBY] = this.m_localAnchorB.y - this.m_localCenterB.y;
 
     velocities[oA] = vAx;
     velocities[oA + 1] = vAy;
@@ -337,6 +349,7 @@ export class b2RevoluteJoint extends b2Joint {
 
   override SolveVelocityConstraints(data: b2SolverData): void {
     const t = this.m_solverRecord;
+    const rec = this.m_recordOffset;
     const oA = 3 * this.m_indexA;
     const velocities = data.velocities;
     const oB = 3 * this.m_indexB;
@@ -347,25 +360,25 @@ export class b2RevoluteJoint extends b2Joint {
     let vBy = velocities[oB + 1];
     let wB = velocities[oB + 2];
 
-    const mA = t[RJ.invMassA];
-    const mB = t[RJ.invMassB];
-    const iA = t[RJ.invIA];
-    const iB = t[RJ.invIB];
-    const rAx = t[RJ.rAx];
-    const rAy = t[RJ.rAy];
-    const rBx = t[RJ.rBx];
-    const rBy = t[RJ.rBy];
+    const mA = t[rec + RJ.invMassA];
+    const mB = t[rec + RJ.invMassB];
+    const iA = t[rec + RJ.invIA];
+    const iB = t[rec + RJ.invIB];
+    const rAx = t[rec + RJ.rAx];
+    const rAy = t[rec + RJ.rAy];
+    const rBx = t[rec + RJ.rBx];
+    const rBy = t[rec + RJ.rBy];
 
     const fixedRotation = iA + iB === 0.0;
 
     // Solve motor constraint.
     if (this.m_enableMotor && this.m_limitState !== b2LimitState.e_equalLimits && fixedRotation === false) {
-      const Cdot = wB - wA - t[RJ.motorSpeed];
-      let impulse = -t[RJ.motorMass] * Cdot;
-      const oldImpulse = t[RJ.motorImpulse];
-      const maxImpulse = data.step.dt * t[RJ.maxMotorTorque];
+      const Cdot = wB - wA - t[rec + RJ.motorSpeed];
+      let impulse = -t[rec + RJ.motorMass] * Cdot;
+      const oldImpulse = t[rec + RJ.motorImpulse];
+      const maxImpulse = data.step.dt * t[rec + RJ.maxMotorTorque];
       const motorImpulse = b2Clamp(oldImpulse + impulse, -maxImpulse, maxImpulse);
-      t[RJ.motorImpulse] = motorImpulse;
+      t[rec + RJ.motorImpulse] = motorImpulse;
       impulse = motorImpulse - oldImpulse;
 
       wA -= iA * impulse;
@@ -379,15 +392,15 @@ export class b2RevoluteJoint extends b2Joint {
       const Cdot2 = wB - wA;
 
       // impulse = -m_mass.Solve33(Cdot), as b2Mat33.Solve33 computes it
-      const exx = t[RJ.massExX];
-      const exy = t[RJ.massExY];
-      const exz = t[RJ.massExZ];
-      const eyx = t[RJ.massEyX];
-      const eyy = t[RJ.massEyY];
-      const eyz = t[RJ.massEyZ];
-      const ezx = t[RJ.massEzX];
-      const ezy = t[RJ.massEzY];
-      const ezz = t[RJ.massEzZ];
+      const exx = t[rec + RJ.massExX];
+      const exy = t[rec + RJ.massExY];
+      const exz = t[rec + RJ.massExZ];
+      const eyx = t[rec + RJ.massEyX];
+      const eyy = t[rec + RJ.massEyY];
+      const eyz = t[rec + RJ.massEyZ];
+      const ezx = t[rec + RJ.massEzX];
+      const ezy = t[rec + RJ.massEzY];
+      const ezz = t[rec + RJ.massEzZ];
       let det = exx * (eyy * ezz - eyz * ezy) + exy * (eyz * ezx - eyx * ezz) + exz * (eyx * ezy - eyy * ezx);
       if (det !== 0.0) {
         det = 1.0 / det;
@@ -398,15 +411,15 @@ export class b2RevoluteJoint extends b2Joint {
 
       let reduced = false;
       if (this.m_limitState === b2LimitState.e_atLowerLimit) {
-        reduced = t[RJ.impulseZ] + impulseZ < 0.0;
+        reduced = t[rec + RJ.impulseZ] + impulseZ < 0.0;
       } else if (this.m_limitState === b2LimitState.e_atUpperLimit) {
-        reduced = t[RJ.impulseZ] + impulseZ > 0.0;
+        reduced = t[rec + RJ.impulseZ] + impulseZ > 0.0;
       }
 
       if (reduced) {
         // The limit impulse would change sign: solve the point constraint alone with the limit
         // impulse removed. reduced = m_mass.Solve22(rhs), as b2Mat33.Solve22 computes it.
-        const oldImpulseZ = t[RJ.impulseZ];
+        const oldImpulseZ = t[rec + RJ.impulseZ];
         const rhsX = -Cdot1x + oldImpulseZ * ezx;
         const rhsY = -Cdot1y + oldImpulseZ * ezy;
         let det2 = exx * eyy - eyx * exy;
@@ -418,14 +431,14 @@ export class b2RevoluteJoint extends b2Joint {
         impulseX = reducedX;
         impulseY = reducedY;
         impulseZ = -oldImpulseZ;
-        t[RJ.impulseX] += reducedX;
-        t[RJ.impulseY] += reducedY;
-        t[RJ.impulseZ] = 0.0;
+        t[rec + RJ.impulseX] += reducedX;
+        t[rec + RJ.impulseY] += reducedY;
+        t[rec + RJ.impulseZ] = 0.0;
       } else {
         // m_impulse += impulse (e_equalLimits, or a limit impulse that keeps its sign)
-        t[RJ.impulseX] += impulseX;
-        t[RJ.impulseY] += impulseY;
-        t[RJ.impulseZ] += impulseZ;
+        t[rec + RJ.impulseX] += impulseX;
+        t[rec + RJ.impulseY] += impulseY;
+        t[rec + RJ.impulseZ] += impulseZ;
       }
 
       const Px = impulseX;
@@ -444,10 +457,10 @@ export class b2RevoluteJoint extends b2Joint {
       const Cdoty = vBy + wB * rBx - vAy - wA * rAx;
 
       // impulse = m_mass.Solve22(-Cdot), as b2Mat33.Solve22 computes it
-      const a11 = t[RJ.massExX];
-      const a12 = t[RJ.massEyX];
-      const a21 = t[RJ.massExY];
-      const a22 = t[RJ.massEyY];
+      const a11 = t[rec + RJ.massExX];
+      const a12 = t[rec + RJ.massEyX];
+      const a21 = t[rec + RJ.massExY];
+      const a22 = t[rec + RJ.massEyY];
       let det = a11 * a22 - a12 * a21;
       if (det !== 0.0) {
         det = 1.0 / det;
@@ -457,8 +470,8 @@ export class b2RevoluteJoint extends b2Joint {
       const impulseX = det * (a22 * bx - a12 * by);
       const impulseY = det * (a11 * by - a21 * bx);
 
-      t[RJ.impulseX] += impulseX;
-      t[RJ.impulseY] += impulseY;
+      t[rec + RJ.impulseX] += impulseX;
+      t[rec + RJ.impulseY] += impulseY;
 
       vAx -= mA * impulseX;
       vAy -= mA * impulseY;
@@ -480,14 +493,16 @@ export class b2RevoluteJoint extends b2Joint {
   /** The impulses the velocity iterations accumulated in the solver record, back to the fields. */
   override StoreImpulses(): void {
     const t = this.m_solverRecord;
-    this.m_impulse.x = t[RJ.impulseX];
-    this.m_impulse.y = t[RJ.impulseY];
-    this.m_impulse.z = t[RJ.impulseZ];
-    this.m_motorImpulse = t[RJ.motorImpulse];
+    const rec = this.m_recordOffset;
+    this.m_impulse.x = t[rec + RJ.impulseX];
+    this.m_impulse.y = t[rec + RJ.impulseY];
+    this.m_impulse.z = t[rec + RJ.impulseZ];
+    this.m_motorImpulse = t[rec + RJ.motorImpulse];
   }
 
   override SolvePositionConstraints(data: b2SolverData): boolean {
     const t = this.m_solverRecord;
+    const rec = this.m_recordOffset;
     const oA = 3 * this.m_indexA;
     const positions = data.positions;
     const oB = 3 * this.m_indexB;
@@ -501,37 +516,37 @@ export class b2RevoluteJoint extends b2Joint {
     let angularError = 0.0;
     let positionError = 0.0;
 
-    const mA = t[RJ.invMassA];
-    const mB = t[RJ.invMassB];
-    const iA = t[RJ.invIA];
-    const iB = t[RJ.invIB];
+    const mA = t[rec + RJ.invMassA];
+    const mB = t[rec + RJ.invMassB];
+    const iA = t[rec + RJ.invIA];
+    const iB = t[rec + RJ.invIB];
 
     const fixedRotation = iA + iB === 0.0;
 
     // Solve angular limit constraint.
     if (this.m_enableLimit && this.m_limitState !== b2LimitState.e_inactiveLimit && fixedRotation === false) {
-      const angle = aB - aA - t[RJ.referenceAngle];
+      const angle = aB - aA - t[rec + RJ.referenceAngle];
       let limitImpulse = 0.0;
 
       if (this.m_limitState === b2LimitState.e_equalLimits) {
         // Prevent large angular corrections
-        const C = b2Clamp(angle - t[RJ.lowerAngle], -b2_maxAngularCorrection, b2_maxAngularCorrection);
-        limitImpulse = -t[RJ.motorMass] * C;
+        const C = b2Clamp(angle - t[rec + RJ.lowerAngle], -b2_maxAngularCorrection, b2_maxAngularCorrection);
+        limitImpulse = -t[rec + RJ.motorMass] * C;
         angularError = b2Abs(C);
       } else if (this.m_limitState === b2LimitState.e_atLowerLimit) {
-        let C = angle - t[RJ.lowerAngle];
+        let C = angle - t[rec + RJ.lowerAngle];
         angularError = -C;
 
         // Prevent large angular corrections and allow some slop.
         C = b2Clamp(C + b2_angularSlop, -b2_maxAngularCorrection, 0.0);
-        limitImpulse = -t[RJ.motorMass] * C;
+        limitImpulse = -t[rec + RJ.motorMass] * C;
       } else if (this.m_limitState === b2LimitState.e_atUpperLimit) {
-        let C = angle - t[RJ.upperAngle];
+        let C = angle - t[rec + RJ.upperAngle];
         angularError = C;
 
         // Prevent large angular corrections and allow some slop.
         C = b2Clamp(C - b2_angularSlop, 0.0, b2_maxAngularCorrection);
-        limitImpulse = -t[RJ.motorMass] * C;
+        limitImpulse = -t[rec + RJ.motorMass] * C;
       }
 
       aA -= iA * limitImpulse;
@@ -544,10 +559,10 @@ export class b2RevoluteJoint extends b2Joint {
       const qA = s_qA.Set(aA);
       const qB = s_qB.Set(aB);
       // rA = b2Mul(qA, m_localAnchorA - m_localCenterA); likewise rB.
-      const lAx = t[RJ.localAnchorAX];
-      const lAy = t[RJ.localAnchorAY];
-      const lBx = t[RJ.localAnchorBX];
-      const lBy = t[RJ.localAnchorBY];
+      const lAx = t[rec + RJ.localAnchorAX];
+      const lAy = t[rec + RJ.localAnchorAY];
+      const lBx = t[rec + RJ.localAnchorBX];
+      const lBy = t[rec + RJ.localAnchorBY];
       const rAx = qA.c * lAx - qA.s * lAy;
       const rAy = qA.s * lAx + qA.c * lAy;
       const rBx = qB.c * lBx - qB.s * lBy;

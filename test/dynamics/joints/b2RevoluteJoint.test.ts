@@ -1,6 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { b2Rot, b2Vec2 } from '../../../src/common/b2Math';
 import { b2_angularSlop } from '../../../src/common/b2Settings';
+import { b2SolverData } from '../../../src/dynamics/b2TimeStep';
 import { b2LimitState } from '../../../src/dynamics/joints/b2Joint';
 import { b2RevoluteJoint, b2RevoluteJointDef } from '../../../src/dynamics/joints/b2RevoluteJoint';
 import { captureLog, h, inv_h, makeBox, makeCircle, makeGround, makeWorld, step } from './jointTestWorld';
@@ -251,5 +252,45 @@ describe('b2RevoluteJoint', () => {
         '  jd.maxMotorTorque = 0.000000000000000e+00f;\n' +
         '  joints[7] = m_world->CreateJoint(&jd);\n',
     );
+  });
+});
+
+describe('b2RevoluteJoint solver records', () => {
+  it('lie one after another in the island joint records, in the order the island initialises the joints', () => {
+    const world = makeWorld();
+    const ground = makeGround(world);
+    const joints: b2RevoluteJoint[] = [];
+    let previous = ground;
+    for (let i = 0; i < 5; ++i) {
+      const link = makeBox(world, 0.5 + i, 5, 0.5, 0.1);
+      const def = new b2RevoluteJointDef();
+      def.Initialize(previous, link, new b2Vec2(i, 5));
+      joints.push(world.CreateJoint(def) as b2RevoluteJoint);
+      previous = link;
+    }
+    step(world, 3);
+    const records = joints[0].m_solverRecord;
+    const offsets = joints.map((j) => j.m_recordOffset).sort((a, b) => a - b);
+    for (const j of joints) expect(j.m_solverRecord).toBe(records);
+    const size = offsets[1] - offsets[0];
+    expect(size).toBeGreaterThan(0);
+    expect(offsets).toEqual([0, size, 2 * size, 3 * size, 4 * size]);
+  });
+
+  it('AllocateJointRecord hands out consecutive offsets, growing into a new array that later joints get', () => {
+    const data = new b2SolverData();
+    const a = data.AllocateJointRecord(31);
+    const first = data.jointRecords;
+    first[a] = 7;
+    const b = data.AllocateJointRecord(31);
+    expect([a, b]).toEqual([0, 31]);
+    expect(data.jointRecords).toBe(first);
+    const c = data.AllocateJointRecord(31);
+    expect(c).toBe(62);
+    expect(data.jointRecords).not.toBe(first);
+    expect(data.jointRecords.length).toBeGreaterThanOrEqual(93);
+    // A joint given the first array keeps its record there.
+    expect(first[a]).toBe(7);
+    expect(data.jointRecordCount).toBe(93);
   });
 });
