@@ -134,24 +134,35 @@ export class b2RevoluteJointDef extends b2JointDef {
  * provided so that infinite forces are not generated.
  */
 export class b2RevoluteJoint extends b2Joint {
+  // The fields the solver's passes read on every iteration come first, out of the C++ order: V8
+  // lays an object's fields out in the order they are set, so these share one or two cache lines.
+  m_indexA = 0;
+  m_indexB = 0;
+  m_enableMotor = false;
+  m_enableLimit = false;
+  m_limitState = b2LimitState.e_inactiveLimit;
+  /**
+   * The solver record (see RJ): RJ.size doubles from m_recordOffset in m_solverRecord, the island's
+   * joint records (b2SolverData.jointRecords); valid from InitVelocityConstraints to the end of the
+   * island's solve.
+   */
+  m_solverRecord = s_noRecord;
+  m_recordOffset = 0;
+
   // Solver shared
   readonly m_localAnchorA = new b2Vec2();
   readonly m_localAnchorB = new b2Vec2();
   readonly m_impulse = new b2Vec3();
   m_motorImpulse = 0.0;
 
-  m_enableMotor = false;
   m_maxMotorTorque = 0.0;
   m_motorSpeed = 0.0;
 
-  m_enableLimit = false;
   m_referenceAngle = 0.0;
   m_lowerAngle = 0.0;
   m_upperAngle = 0.0;
 
   // Solver temp
-  m_indexA = 0;
-  m_indexB = 0;
   readonly m_rA = new b2Vec2();
   readonly m_rB = new b2Vec2();
   readonly m_localCenterA = new b2Vec2();
@@ -164,15 +175,6 @@ export class b2RevoluteJoint extends b2Joint {
   readonly m_mass = new b2Mat33();
   /** Effective mass for motor/limit angular constraint. */
   m_motorMass = 0.0;
-  m_limitState = b2LimitState.e_inactiveLimit;
-
-  /**
-   * The solver record (see RJ): RJ.size doubles from m_recordOffset in m_solverRecord, the island's
-   * joint records (b2SolverData.jointRecords); valid from InitVelocityConstraints to the end of the
-   * island's solve.
-   */
-  m_solverRecord = s_noRecord;
-  m_recordOffset = 0;
 
   constructor(def: b2RevoluteJointDef) {
     super(def);
