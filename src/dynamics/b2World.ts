@@ -1427,13 +1427,13 @@ export class b2World {
     }
     this.m_toiCandidateCount = count;
   }
+
   /** The C++'s loop body that invalidates a contact's TOI (and island flag) in SolveTOI. */
   private static InvalidateTOI(c: b2Contact): void {
     c.m_flags &= ~(b2Contact.e_toiFlag | b2Contact.e_islandFlag);
     c.m_toiCount = 0;
     c.m_scalars.toi = 1.0;
   }
-
 
   /** Find TOI contacts and solve them. */
   SolveTOI(step: Readonly<b2TimeStep>): void {
