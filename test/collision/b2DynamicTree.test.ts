@@ -352,7 +352,7 @@ describe('b2DynamicTree ray casts', () => {
 });
 
 describe('b2DynamicTree under random load', () => {
-  it('stays valid with bounded height and balance through thousands of create/move/destroy steps', () => {
+  it('stays valid with bounded height and balance, its fat AABB copy (m_fatAABBs) exact, through thousands of create/move/destroy steps', () => {
     const rnd = mulberry32(2024);
     const tree = new b2DynamicTree();
     const live: { id: number; aabb: b2AABB }[] = [];
@@ -364,7 +364,9 @@ describe('b2DynamicTree under random load', () => {
         d.Set((rnd() * 2 - 1) * 0.8, (rnd() * 2 - 1) * 0.8);
         p.aabb.lowerBound.Add(d);
         p.aabb.upperBound.Add(d);
-        tree.MoveProxy(p.id, p.aabb, d);
+        // The containment test on m_fatAABBs decides as node.aabb.Contains does.
+        const contained = tree.GetFatAABB(p.id).Contains(p.aabb);
+        expect(tree.MoveProxy(p.id, p.aabb, d)).toBe(!contained);
         expect(tree.GetFatAABB(p.id).Contains(p.aabb)).toBe(true);
       } else if (r < 0.8 && live.length < 500) {
         const aabb = randomAABB(rnd, new b2AABB(), 40, 2);
@@ -382,47 +384,12 @@ describe('b2DynamicTree under random load', () => {
         // An AVL-like bound: rotations keep every node's children within one level or so.
         expect(tree.GetHeight()).toBeLessThanOrEqual(Math.ceil(1.45 * Math.log2(leaves + 2)) + 1);
         expect(tree.GetMaxBalance()).toBeLessThanOrEqual(2);
-      }
-    }
-    expect(live.length).toBeGreaterThan(200);
-  });
-
-  it('keeps m_fatAABBs equal to every leaf fat AABB through creation, moves, destruction and pool growth', () => {
-    const rnd = mulberry32(77);
-    const tree = new b2DynamicTree();
-    const live: { id: number; aabb: b2AABB }[] = [];
-    const d = new b2Vec2();
-    let moved = 0;
-    for (let step = 0; step < 3000; step++) {
-      const r = rnd();
-      if (r < 0.6 && live.length > 0) {
-        const p = live[Math.floor(rnd() * live.length)];
-        d.Set((rnd() * 2 - 1) * 0.3, (rnd() * 2 - 1) * 0.3);
-        p.aabb.lowerBound.Add(d);
-        p.aabb.upperBound.Add(d);
-        const fatBefore = bounds(tree.GetFatAABB(p.id));
-        // The containment test on the copy decides as node.aabb.Contains would.
-        const contained = tree.GetFatAABB(p.id).Contains(p.aabb);
-        expect(tree.MoveProxy(p.id, p.aabb, d)).toBe(!contained);
-        if (!contained) moved++;
-        else expect(bounds(tree.GetFatAABB(p.id))).toEqual(fatBefore);
-      } else if (r < 0.85 && live.length < 300) {
-        const aabb = randomAABB(rnd, new b2AABB(), 30, 2);
-        live.push({ id: tree.CreateProxy(aabb, null), aabb });
-      } else if (live.length > 0) {
-        const k = Math.floor(rnd() * live.length);
-        tree.DestroyProxy(live[k].id);
-        live[k] = live[live.length - 1];
-        live.pop();
-      }
-      if (step % 100 === 99) {
         for (const p of live) {
           expect(Array.from(tree.m_fatAABBs.subarray(4 * p.id, 4 * p.id + 4))).toEqual(bounds(tree.GetFatAABB(p.id)));
         }
       }
     }
-    expect(moved).toBeGreaterThan(100);
-    expect(tree.m_nodeCapacity).toBeGreaterThan(256);
+    expect(live.length).toBeGreaterThan(200);
     expect(tree.m_fatAABBs.length).toBe(4 * tree.m_nodeCapacity);
   });
 
