@@ -20,7 +20,7 @@ import { fileURLToPath } from 'node:url';
 import { parseArgs } from 'node:util';
 import { ENGINES, buildOurs } from './harness.mjs';
 import { costsByCodeObject, eventTotals } from './valgrind.mjs';
-import { makeScene } from './scenes.mjs';
+import { makeScene, sceneStepper } from './scenes.mjs';
 
 const { values } = parseArgs({
   options: {
@@ -43,15 +43,8 @@ if (values.child !== undefined) {
   // Inside valgrind: build the scene and step it, nothing else.
   const scene = makeScene(values.scene);
   const api = await engine.load({ oursBundle: values.ours });
-  const w = engine.create(api, scene, { sleep: false });
-  let stepNo = 0;
-  const total = Number(values.child);
-  while (stepNo < total) {
-    w.step();
-    stepNo++;
-    const more = scene.spawn?.(stepNo);
-    if (more) for (const b of more) w.add(b);
-  }
+  const { step } = sceneStepper(engine.create(api, scene, { sleep: false }), scene);
+  for (let i = 0; i < Number(values.child); i++) step();
   process.exit(0);
 }
 

@@ -13,7 +13,7 @@ import os from 'node:os';
 import v8 from 'node:v8';
 import path from 'node:path';
 import { Bench, hrtimeNow } from 'tinybench';
-import { SCENE_IDS, makeScene, totalBodies } from './scenes.mjs';
+import { SCENE_IDS, makeScene, sceneStepper, totalBodies } from './scenes.mjs';
 import { fullGC, retainedHeap, measureAllocation } from './memory.mjs';
 import { formatSceneTables, chartSvg, markdownSummary, compactSummary } from './report.mjs';
 import { repoRoot } from './engines/common.mjs';
@@ -135,13 +135,8 @@ function runRound(engine, api, scene, sleep, protocol, last) {
   }
   fullGC();
   const w = engine.create(api, scene, { sleep });
-  let stepNo = 0;
-  const doStep = () => {
-    w.step();
-    stepNo++;
-    const more = scene.spawn?.(stepNo);
-    if (more) for (const b of more) w.add(b);
-  };
+  const stepper = sceneStepper(w, scene);
+  const doStep = stepper.step;
   const readTrack = () => scene.track.map((i) => w.position(i));
   const before = readTrack();
   const builtHeap = last ? retainedHeap() : 0;
@@ -192,7 +187,7 @@ function runRound(engine, api, scene, sleep, protocol, last) {
         gcMsPerStep: alloc.gcMs / protocol.allocSteps,
         wasmBytes: w.wasmBytes ? w.wasmBytes() : null,
       },
-      counts: { bodies: w.bodyCount(), contacts: w.contactCount(), steps: stepNo },
+      counts: { bodies: w.bodyCount(), contacts: w.contactCount(), steps: stepper.steps },
       check: scene.check(before, after),
       sample: after[0],
     };

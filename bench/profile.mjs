@@ -9,7 +9,7 @@ import { writeFileSync } from 'node:fs';
 import { Session } from 'node:inspector/promises';
 import { parseArgs } from 'node:util';
 import { ENGINES, buildOurs } from './harness.mjs';
-import { makeScene } from './scenes.mjs';
+import { makeScene, sceneStepper } from './scenes.mjs';
 
 const { values } = parseArgs({
   options: {
@@ -31,13 +31,7 @@ const scene = makeScene(values.scene);
 const built = engine.id === 'webphysics' && !values.ours ? buildOurs(() => {}) : null;
 const api = await engine.load({ oursBundle: values.ours ?? built?.bundle });
 const w = engine.create(api, scene, { sleep: values.sleep });
-let stepNo = 0;
-const step = () => {
-  w.step();
-  stepNo++;
-  const more = scene.spawn?.(stepNo);
-  if (more) for (const b of more) w.add(b);
-};
+const { step } = sceneStepper(w, scene);
 for (let i = 0; i < Number(values.preroll); i++) step();
 
 const session = new Session();

@@ -34,4 +34,5 @@ export const SCENE_IDS: string[];
 export function goldenDir(): string;
 export function makeScene(id: string, options?: { quick?: boolean }): Scene | null;
 export function sceneFromB2dJson(json: unknown): SceneBody[];
+export function sceneStepper(w: { step(): void; add(body: SceneBody): void }, scene: Scene): { steps: number; step(): void };
 export function totalBodies(scene: Scene): number;

@@ -409,6 +409,23 @@ export function makeScene(id, { quick = false } = {}) {
   return scene;
 }
 
+/**
+ * Steps world `w` (an engine adapter's world) for scene: `step()` steps once and then adds the
+ * bodies the scene spawns after that step (the tumbler's fill); `steps` counts the steps taken.
+ */
+export function sceneStepper(w, scene) {
+  const stepper = {
+    steps: 0,
+    step() {
+      w.step();
+      stepper.steps++;
+      const more = scene.spawn?.(stepper.steps);
+      if (more) for (const b of more) w.add(b);
+    },
+  };
+  return stepper;
+}
+
 /** Body count including every body the scene spawns. */
 export function totalBodies(scene) {
   let n = scene.bodies.length;
