@@ -163,10 +163,7 @@ export class WebGPUBackend implements b2WorldBackend {
     // The GPU took the world's contacts as its previous step's; their objects become the
     // backend's, and the world's contact list stays empty while the GPU owns the contacts.
     events.adopt(world, stepper.mirror);
-    const cm = world.m_contactManager;
-    cm.m_contactList = null;
-    cm.m_contactCount = 0;
-    for (let b = world.m_bodyList; b; b = b.m_next) b.m_contactList = null;
+    world.m_contactManager.UnlinkAllContacts();
     this.world = world;
     this.engine = engine;
     this.stepperNow = stepper;

@@ -10,6 +10,7 @@ import { b2ContactAllocator } from './contacts/b2ContactAllocator';
 import { b2InitializeContactRegisters } from './contacts/b2ContactRegistry';
 import { b2BodyType } from './b2Body';
 import type { b2FixtureProxy } from './b2Fixture';
+import { b2ProxyPairSet } from './b2ProxyPairSet';
 import { b2ContactFilter, b2ContactListener } from './b2WorldCallbacks';
 
 /** The default contact filter, used until b2World.SetContactFilter replaces it. */
@@ -26,6 +27,8 @@ export class b2ContactManager {
   m_contactListener: b2ContactListener | null = b2_defaultListener;
   /** The C++ passes the world's block allocator to b2Contact::Create and Destroy; see there. */
   readonly m_allocator = new b2ContactAllocator();
+  /** Not in the C++: the proxy pairs of the contacts in m_contactList (see b2ProxyPairSet). */
+  readonly m_pairs = new b2ProxyPairSet();
 
   constructor() {
     // The C++ fills the contact registry lazily in b2Contact::Create; see b2ContactRegistry.ts.
@@ -40,8 +43,8 @@ export class b2ContactManager {
     let fixtureA = proxyA.fixture;
     let fixtureB = proxyB.fixture;
 
-    let indexA = proxyA.childIndex;
-    let indexB = proxyB.childIndex;
+    const indexA = proxyA.childIndex;
+    const indexB = proxyB.childIndex;
 
     let bodyA = fixtureA.GetBody();
     let bodyB = fixtureB.GetBody();
@@ -51,27 +54,9 @@ export class b2ContactManager {
       return;
     }
 
-    // Does a contact already exist?
-    let edge = bodyB.GetContactList();
-    while (edge) {
-      if (edge.other === bodyA) {
-        const fA = edge.contact.GetFixtureA();
-        const fB = edge.contact.GetFixtureB();
-        const iA = edge.contact.GetChildIndexA();
-        const iB = edge.contact.GetChildIndexB();
-
-        if (fA === fixtureA && fB === fixtureB && iA === indexA && iB === indexB) {
-          // A contact already exists.
-          return;
-        }
-
-        if (fA === fixtureB && fB === fixtureA && iA === indexB && iB === indexA) {
-          // A contact already exists.
-          return;
-        }
-      }
-
-      edge = edge.next;
+    // Does a contact already exist? (The C++ walks body B's contact list; see b2ProxyPairSet.)
+    if (this.m_pairs.Has(proxyA.proxyId, proxyB.proxyId)) {
+      return;
     }
 
     // Does a joint override collision? Is at least one body dynamic?
@@ -93,10 +78,23 @@ export class b2ContactManager {
     // Contact creation may swap fixtures.
     fixtureA = c.GetFixtureA();
     fixtureB = c.GetFixtureB();
-    indexA = c.GetChildIndexA();
-    indexB = c.GetChildIndexB();
     bodyA = fixtureA.GetBody();
     bodyB = fixtureB.GetBody();
+
+    this.LinkContact(c);
+
+    // Wake up the bodies
+    bodyA.SetAwake(true);
+    bodyB.SetAwake(true);
+  }
+
+  /**
+   * AddPair's insertion of a new contact into the world's list and both bodies' lists, and into
+   * the pair set (which the state reader's contacts join the same way).
+   */
+  LinkContact(c: b2Contact): void {
+    const bodyA = c.m_fixtureA.m_body;
+    const bodyB = c.m_fixtureB.m_body;
 
     // Insert into the world.
     c.m_prev = null;
@@ -130,11 +128,27 @@ export class b2ContactManager {
     }
     bodyB.m_contactList = c.m_nodeB;
 
-    // Wake up the bodies
-    bodyA.SetAwake(true);
-    bodyB.SetAwake(true);
+    c.m_proxyIdA = c.m_fixtureA.m_proxies[c.m_indexA].proxyId;
+    c.m_proxyIdB = c.m_fixtureB.m_proxies[c.m_indexB].proxyId;
+    this.m_pairs.Add(c.m_proxyIdA, c.m_proxyIdB);
 
     ++this.m_contactCount;
+  }
+
+  /**
+   * Not in the C++: empties the world's and the bodies' contact lists without destroying the
+   * contacts, for a backend that takes them over (b2WorldBackend.Attach).
+   */
+  UnlinkAllContacts(): void {
+    for (let c = this.m_contactList; c; c = c.m_next) {
+      c.m_proxyIdA = -1;
+      c.m_proxyIdB = -1;
+      c.m_fixtureA.m_body.m_contactList = null;
+      c.m_fixtureB.m_body.m_contactList = null;
+    }
+    this.m_contactList = null;
+    this.m_contactCount = 0;
+    this.m_pairs.Clear();
   }
 
   /** Create contacts for the proxy pairs that began to overlap since the last call. */
@@ -201,6 +215,10 @@ export class b2ContactManager {
     c.m_nodeA.next = null;
     c.m_nodeB.prev = null;
     c.m_nodeB.next = null;
+
+    this.m_pairs.Remove(c.m_proxyIdA, c.m_proxyIdB);
+    c.m_proxyIdA = -1;
+    c.m_proxyIdB = -1;
 
     // Call the factory.
     b2Contact.Destroy(c, this.m_allocator);

@@ -446,7 +446,7 @@ export function b2dJsonReadState(
   // The restored contacts carry TOI state that SolveTOI's next search must see (b2World.UpdateTOICandidates).
   world.m_toiCandidatesStale = true;
 
-  // Contacts, in creation order, linked as b2ContactManager.AddPair links them.
+  // Contacts, in creation order, linked as b2ContactManager.AddPair links them (LinkContact).
   const cm = world.m_contactManager;
   for (let i = 0; i < contactStates.length; ++i) {
     const p = `${root}.contacts[${i}]`;
@@ -457,25 +457,10 @@ export function b2dJsonReadState(
     if (c === null || c.m_fixtureA !== fixtureA || c.m_indexA !== indexA) {
       fail(p, 'these fixtures do not make a contact in this order');
     }
-    const bodyA = fixtureA.m_body;
-    const bodyB = fixtureB.m_body;
-    c.m_prev = null;
-    c.m_next = cm.m_contactList;
-    if (cm.m_contactList !== null) cm.m_contactList.m_prev = c;
-    cm.m_contactList = c;
-    c.m_nodeA.contact = c;
-    c.m_nodeA.other = bodyB;
-    c.m_nodeA.prev = null;
-    c.m_nodeA.next = bodyA.m_contactList;
-    if (bodyA.m_contactList !== null) bodyA.m_contactList.prev = c.m_nodeA;
-    bodyA.m_contactList = c.m_nodeA;
-    c.m_nodeB.contact = c;
-    c.m_nodeB.other = bodyA;
-    c.m_nodeB.prev = null;
-    c.m_nodeB.next = bodyB.m_contactList;
-    if (bodyB.m_contactList !== null) bodyB.m_contactList.prev = c.m_nodeB;
-    bodyB.m_contactList = c.m_nodeB;
-    ++cm.m_contactCount;
+    if (fixtureA.m_proxyCount === 0 || fixtureB.m_proxyCount === 0) {
+      fail(p, 'joins a fixture that has no broad-phase proxies (its body is inactive)');
+    }
+    cm.LinkContact(c);
 
     c.m_flags = int(cs.flags, `${p}.flags`, 0, 0xffff);
     // A contact written between an island search and the next one carries its island flag,

@@ -285,6 +285,31 @@ describe('b2ContactManager.Destroy and Collide', () => {
     expect(cm.m_contactCount).toBe(0);
   });
 
+  it('forgets a contact destroyed after its proxies, so a new fixture reusing a proxy id gets a contact', () => {
+    // b2Body.SetActive(false) destroys the proxies before the contacts; the pair set must drop the
+    // pair under the ids the contact was created with.
+    const world = new b2World(new b2Vec2(0.0, 0.0));
+    const a = createBody(world, b2_dynamicBody, 0.0, 0.0);
+    const fa = box(a);
+    const fb = box(createBody(world, b2_dynamicBody, 1.0, 0.0));
+    world.Step(dt, 8, 3);
+    expect(world.GetContactCount()).toBe(1);
+    const idA = fa.m_proxies[0].proxyId;
+    const idB = fb.m_proxies[0].proxyId;
+    expect(world.m_contactManager.m_pairs.Has(idA, idB)).toBe(true);
+
+    a.SetActive(false);
+    expect(world.GetContactCount()).toBe(0);
+    expect(world.m_contactManager.m_pairs.GetCount()).toBe(0);
+
+    const fc = box(createBody(world, b2_dynamicBody, 0.5, 0.0));
+    expect(fc.m_proxies[0].proxyId).toBe(idA);
+    world.Step(dt, 8, 3);
+    const contacts = contactList(world);
+    expect(contacts).toHaveLength(1);
+    expect(new Set([contacts[0].GetFixtureA(), contacts[0].GetFixtureB()])).toEqual(new Set([fb, fc]));
+  });
+
   it('Destroy sends no EndContact for a contact that is not touching', () => {
     const world = new b2World(new b2Vec2(0.0, 0.0));
     const recorder = new Recorder();

@@ -215,8 +215,9 @@ function finite(problems: string[], what: string, x: number): void {
  * Check the world's structural invariants; returns the problems found (empty when sound):
  * list counts, links and ownership; one broad-phase proxy per child of every fixture of an active
  * body and none for an inactive one; contacts linked into both bodies' edge lists, between live
- * fixtures of active bodies; joint edges in both bodies' lists; a valid tree; no NaN or infinity
- * in bodies, joints or contacts.
+ * fixtures of active bodies, each in the contact manager's pair set under its proxies and nothing
+ * else there; joint edges in both bodies' lists; a valid tree; no NaN or infinity in bodies,
+ * joints or contacts.
  */
 export function checkWorldInvariants(world: b2World): string[] {
   const problems: string[] = [];
@@ -347,6 +348,10 @@ export function checkWorldInvariants(world: b2World): string[] {
     const key = ids[0] < ids[2] ? ids.join(',') : [ids[2], ids[3], ids[0], ids[1]].join(',');
     if (pairs.has(key)) problems.push(`${where} duplicates another contact`);
     pairs.add(key);
+    const proxyIdA = fA.m_proxies[c.m_indexA]?.proxyId;
+    const proxyIdB = fB.m_proxies[c.m_indexB]?.proxyId;
+    if (c.m_proxyIdA !== proxyIdA || c.m_proxyIdB !== proxyIdB) problems.push(`${where} records other proxies than its fixtures'`);
+    if (!world.m_contactManager.m_pairs.Has(c.m_proxyIdA, c.m_proxyIdB)) problems.push(`${where} is missing from the pair set`);
     const m = c.m_manifold;
     for (let p = 0; p < m.pointCount; ++p) {
       finite(problems, `${where}.point[${p}].normalImpulse`, m.points[p].normalImpulse);
@@ -358,6 +363,8 @@ export function checkWorldInvariants(world: b2World): string[] {
       if (!contactSet.has(e.contact)) problems.push(`body[${i}] lists a contact not in the world`);
     }
   }
+  const pairCount = world.m_contactManager.m_pairs.GetCount();
+  if (pairCount !== contacts.length) problems.push(`the pair set holds ${pairCount} pairs for ${contacts.length} contacts`);
   return problems;
 }
 

@@ -151,6 +151,14 @@ export abstract class b2Contact {
    */
   m_toiSearch = 0;
 
+  /**
+   * Not in the C++: the broad-phase proxies of fixture A's and fixture B's children while the
+   * contact is linked into a world (b2ContactManager.LinkContact), -1 otherwise. The world's pair
+   * set is keyed on them, and b2Body.SetActive destroys the proxies before the contacts.
+   */
+  m_proxyIdA = -1;
+  m_proxyIdB = -1;
+
   /** Not in the C++: the storage of m_toi, m_friction and m_restitution (see b2ContactScalars). */
   readonly m_scalars = new b2ContactScalars();
 
