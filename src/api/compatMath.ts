@@ -13,6 +13,7 @@ import {
   b2AddVV,
   b2Clamp,
   b2ClampV,
+  b2Cos,
   b2Cross,
   b2CrossSV,
   b2CrossVS,
@@ -35,6 +36,7 @@ import {
   b2MulXV,
   b2NextPowerOfTwo,
   b2Rot,
+  b2Sin,
   b2SubVV,
   b2Sweep,
   b2Transform,
@@ -42,7 +44,7 @@ import {
   b2Vec2Distance,
   b2Vec3,
 } from '../common/b2Math';
-import { b2Atan2, b2Cos, b2Sin } from '../common/b2Trig';
+import { b2Atan2 } from '../common/b2Trig';
 import { acceptingArguments, defineAccessor, defineMethods, defineStatics, wrapMethod } from './patch';
 
 declare module '../common/b2Math' {

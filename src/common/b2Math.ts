@@ -461,7 +461,7 @@ export class b2Rot {
     return this;
   }
 
-  /** Set using an angle in radians (sinf and cosf: b2Sin and b2Cos, computed together). */
+  /** Set using an angle in radians (sinf and cosf, computed together by b2SinCos). */
   Set(angle: number): this {
     // The angle travels in a typed array slot so the call does not box it (see b2SinCos).
     b2SinCosArg[0] = angle;
@@ -884,6 +884,18 @@ export function b2MulTXX(A: Readonly<b2Transform>, B: Readonly<b2Transform>, out
   out.p.x = aqc * dx + aqs * dy;
   out.p.y = -aqs * dx + aqc * dy;
   return out;
+}
+
+const s_sinCos = new b2Rot();
+
+/** sin(x), bit for bit fdlibm's (b2SinCos; b2Rot.Set computes sine and cosine together). */
+export function b2Sin(x: number): number {
+  return s_sinCos.Set(x).s;
+}
+
+/** cos(x), bit for bit fdlibm's (b2SinCos; b2Rot.Set computes sine and cosine together). */
+export function b2Cos(x: number): number {
+  return s_sinCos.Set(x).c;
 }
 
 /** |a| as the C++ template writes it: a > 0 ? a : -a (so b2Abs(+0) is -0). */

@@ -333,115 +333,55 @@ function remPio2(y: Float64Array): number {
   return n;
 }
 
-const C1 = 4.16666666666666019037e-2;
-const C2 = -1.38888888888741095749e-3;
-const C3 = 2.48015872894767294178e-5;
-const C4 = -2.75573143513906633035e-7;
-const C5 = 2.08757232129817482790e-9;
-const C6 = -1.13596475577881948265e-11;
-
-/** __kernel_cos on [-pi/4, pi/4]; y is the tail of x. */
-function kernelCos(x: number, y: number): number {
-  const ix = highWord(x) & 0x7fffffff;
-  if (ix < 0x3e400000) {
-    if ((x | 0) === 0) return 1.0;
-  }
-  const z = x * x;
-  const r = z * (C1 + z * (C2 + z * (C3 + z * (C4 + z * (C5 + z * C6)))));
-  if (ix < 0x3fd33333) {
-    return 1.0 - (0.5 * z - (z * r - x * y));
-  }
-  // qx = |x|/4 with the low word cleared, or 0.28125 past 0.78125: keeps 1 - qx exact.
-  const qx = ix > 0x3fe90000 ? 0.28125 : fromWords(ix - 0x00200000, 0);
-  const iz = 0.5 * z - qx;
-  const a = 1.0 - qx;
-  return a - (iz - (z * r - x * y));
-}
-
-const S1 = -1.66666666666666324348e-1;
-const S2 = 8.33333333332248946124e-3;
-const S3 = -1.98412698298579493134e-4;
-const S4 = 2.75573137070700676789e-6;
-const S5 = -2.50507602534068634195e-8;
-const S6 = 1.58969099521155010221e-10;
-
-/** __kernel_sin on [-pi/4, pi/4]; y is the tail of x, iy = 0 when y is known to be zero. */
-function kernelSin(x: number, y: number, iy: number): number {
-  const ix = highWord(x) & 0x7fffffff;
-  if (ix < 0x3e400000) {
-    if ((x | 0) === 0) return x;
-  }
-  const z = x * x;
-  const v = z * x;
-  const r = S2 + z * (S3 + z * (S4 + z * (S5 + z * S6)));
-  if (iy === 0) {
-    return x + v * (S1 + z * r);
-  }
-  return x - (z * (0.5 * y - v * r) - y - v * S1);
-}
-
-/** sin(x), bit-identical to fdlibm 5.3 on every JavaScript engine. */
-export function b2Sin(x: number): number {
-  const ix = highWord(x) & 0x7fffffff;
-  if (ix <= 0x3fe921fb) return kernelSin(x, 0.0, 0);
-  if (ix >= 0x7ff00000) return x - x;
-  remX[0] = x;
-  const n = remPio2(remY);
-  switch (n & 3) {
-    case 0:
-      return kernelSin(remY[0], remY[1], 1);
-    case 1:
-      return kernelCos(remY[0], remY[1]);
-    case 2:
-      return -kernelSin(remY[0], remY[1], 1);
-    default:
-      return -kernelCos(remY[0], remY[1]);
-  }
-}
-
-/** cos(x), bit-identical to fdlibm 5.3 on every JavaScript engine. */
-export function b2Cos(x: number): number {
-  const ix = highWord(x) & 0x7fffffff;
-  if (ix <= 0x3fe921fb) return kernelCos(x, 0.0);
-  if (ix >= 0x7ff00000) return x - x;
-  remX[0] = x;
-  const n = remPio2(remY);
-  switch (n & 3) {
-    case 0:
-      return kernelCos(remY[0], remY[1]);
-    case 1:
-      return -kernelSin(remY[0], remY[1], 1);
-    case 2:
-      return -kernelCos(remY[0], remY[1]);
-    default:
-      return kernelSin(remY[0], remY[1], 1);
-  }
-}
-
 /** The angle b2SinCos reads (see there). */
 export const b2SinCosArg = new Float64Array(1);
 
 /**
- * sin and cos of b2SinCosArg[0] into rot.s and rot.c: exactly b2Sin and b2Cos (the same fdlibm
- * operations, so the same bits), sharing one argument reduction and with the kernels written out,
- * so the hot path (b2Rot.Set, once per body or constraint and iteration) allocates nothing: the
- * angle comes in through a typed array slot and the results go straight into the fields.
+ * sin and cos of b2SinCosArg[0] into rot.s and rot.c, bit for bit fdlibm's sin and cos (s_sin.c,
+ * s_cos.c) sharing one argument reduction, with __kernel_sin and __kernel_cos written out. It is
+ * the hot path of b2Rot.Set (once per body or constraint and iteration), so it allocates nothing
+ * (the angle comes in through a typed array slot, the results go straight into the fields), and
+ * the kernels' coefficients are local constants, which V8 folds into the code: a module's `const`
+ * (a `var` in the bundle) costs a load and an unboxing at each use, and there are twelve a call.
+ *
+ * fdlibm's range tests read the high word of |x|; for a finite or infinite x each is the same as
+ * comparing |x| with the double whose high word is the bound and low word zero:
+ *   ix <= 0x3fe921fb  <=>  |x| < 0.7853984832763672 (0x3fe921fc 00000000)
+ *   ix >= 0x7ff00000  <=>  !(|x| < Infinity), which NaN also meets
+ *   ix <  0x3e400000  <=>  |x| < 2^-27
+ *   ix <  0x3fd33333  <=>  |x| < 0.2999999523162842 (0x3fd33333 00000000)
+ *   ix >  0x3fe90000  <=>  |x| >= 0.7812504768371582 (0x3fe90001 00000000)
+ * so only the reduction and __kernel_cos's qx (|x| / 4 with the low word cleared) touch the words.
  */
 export function b2SinCos(rot: { s: number; c: number }): void {
+  // __kernel_sin
+  const S1 = -1.66666666666666324348e-1;
+  const S2 = 8.33333333332248946124e-3;
+  const S3 = -1.98412698298579493134e-4;
+  const S4 = 2.75573137070700676789e-6;
+  const S5 = -2.50507602534068634195e-8;
+  const S6 = 1.58969099521155010221e-10;
+  // __kernel_cos
+  const C1 = 4.16666666666666019037e-2;
+  const C2 = -1.38888888888741095749e-3;
+  const C3 = 2.48015872894767294178e-5;
+  const C4 = -2.75573143513906633035e-7;
+  const C5 = 2.08757232129817482790e-9;
+  const C6 = -1.13596475577881948265e-11;
+
   const x = b2SinCosArg[0];
-  f64[0] = x;
-  const hx = i32[HI] & 0x7fffffff;
+  const ax = Math.abs(x);
   let y0: number;
   let y1: number;
   let n: number;
   let iy: number;
-  if (hx <= 0x3fe921fb) {
-    // |x| <= pi/4: b2Sin is kernelSin(x, 0.0, 0), b2Cos is kernelCos(x, 0.0).
+  if (ax < 0.7853984832763672) {
+    // |x| <= pi/4: sin is __kernel_sin(x, 0.0, 0), cos is __kernel_cos(x, 0.0).
     y0 = x;
     y1 = 0.0;
     n = 0;
     iy = 0;
-  } else if (hx >= 0x7ff00000) {
+  } else if (!(ax < Infinity)) {
     rot.s = x - x;
     rot.c = x - x;
     return;
@@ -453,11 +393,10 @@ export function b2SinCos(rot: { s: number; c: number }): void {
     iy = 1;
   }
 
-  f64[0] = y0;
-  const ix = i32[HI] & 0x7fffffff;
+  const ay = Math.abs(y0);
   let ks: number;
   let kc: number;
-  if (ix < 0x3e400000 && (y0 | 0) === 0) {
+  if (ay < 7.450580596923828e-9 && (y0 | 0) === 0) {
     // The kernels' tiny-argument exits.
     ks = y0;
     kc = 1.0;
@@ -475,14 +414,18 @@ export function b2SinCos(rot: { s: number; c: number }): void {
 
     // __kernel_cos(y0, y1)
     const rc = z * (C1 + z * (C2 + z * (C3 + z * (C4 + z * (C5 + z * C6)))));
-    if (ix < 0x3fd33333) {
+    if (ay < 0.2999999523162842) {
       kc = 1.0 - (0.5 * z - (z * rc - y0 * y1));
     } else {
+      // qx = |y0|/4 with the low word cleared, or 0.28125 past 0.78125: keeps 1 - qx exact.
       let qx: number;
-      if (ix > 0x3fe90000) {
+      if (ay >= 0.7812504768371582) {
         qx = 0.28125;
       } else {
-        i32[HI] = ix - 0x00200000;
+        // fromWords(highWord(|y0|) - 0x00200000, 0), written out: a call V8 does not inline
+        // would box its double argument and result.
+        f64[0] = y0;
+        i32[HI] = (i32[HI] & 0x7fffffff) - 0x00200000;
         i32[LO] = 0;
         qx = f64[0];
       }
