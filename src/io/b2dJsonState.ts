@@ -453,12 +453,12 @@ export function b2dJsonReadState(
     const cs = obj(contactStates[i], p);
     const [fixtureA, indexA] = fixtureAt(bodies, fixtures, cs.fixtureA, `${p}.fixtureA`);
     const [fixtureB, indexB] = fixtureAt(bodies, fixtures, cs.fixtureB, `${p}.fixtureB`);
+    if (fixtureA.m_proxyCount === 0 || fixtureB.m_proxyCount === 0) {
+      fail(p, 'joins a fixture that has no broad-phase proxies (its body is inactive)');
+    }
     const c = b2Contact.Create(fixtureA, indexA, fixtureB, indexB);
     if (c === null || c.m_fixtureA !== fixtureA || c.m_indexA !== indexA) {
       fail(p, 'these fixtures do not make a contact in this order');
-    }
-    if (fixtureA.m_proxyCount === 0 || fixtureB.m_proxyCount === 0) {
-      fail(p, 'joins a fixture that has no broad-phase proxies (its body is inactive)');
     }
     cm.LinkContact(c);
 

@@ -224,4 +224,30 @@ describe('the solver-state extension', () => {
     bad5[b2dJson_stateKey].contacts.push({ ...bad5[b2dJson_stateKey].contacts[0], fixtureA: [0, 99, 0] });
     expect(() => b2dJsonRead(bad5)).toThrow(/^webphysicsState\.contacts\[\d+\]\.fixtureA\[1\]: expected an integer in/);
   });
+
+  it('rejects a contact on a fixture of an inactive body (it has no broad-phase proxies)', () => {
+    const world = new b2World(new b2Vec2(0.0, 0.0));
+    const boxes: b2Body[] = [];
+    for (const [x, active] of [
+      [0.0, true],
+      [1.5, true],
+      [3.0, false],
+    ] as const) {
+      const bd = new b2BodyDef();
+      bd.type = b2BodyType.b2_dynamicBody;
+      bd.position.Set(x, 0.0);
+      bd.active = active;
+      const body = world.CreateBody(bd);
+      body.CreateFixture(new b2PolygonShape().SetAsBox(1.0, 1.0), 1.0);
+      boxes.push(body);
+    }
+    world.Step(1.0 / 60.0, 8, 3);
+    expect(world.GetContactCount()).toBe(1);
+    const doc = b2dJsonWrite(world, { solverState: true }) as Record<string, any>;
+    const contacts = doc[b2dJson_stateKey].contacts;
+    contacts.push({ ...contacts[0], fixtureA: [1, 0, 0], fixtureB: [2, 0, 0] });
+    expect(() => b2dJsonRead(doc)).toThrow(
+      'webphysicsState.contacts[1]: joins a fixture that has no broad-phase proxies (its body is inactive)',
+    );
+  });
 });
