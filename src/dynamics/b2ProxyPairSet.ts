@@ -6,9 +6,10 @@
  * pile of small bodies gives every body a score of contacts (fat AABBs overlap well beyond the
  * touching neighbours), and a body whose fat AABB moves reports every pair it overlaps again: in
  * the tumbler benchmark some 2,600 pairs a step walked 50,000 contact edges, one cache miss each.
- * A fixture child's proxy id names it uniquely while its contacts live (DestroyFixture, SetActive
- * and SetType destroy the contacts with or before the proxies), so the set holds exactly the pairs
- * the walk would find, and the answer is the same.
+ * A fixture child's proxy id names it uniquely for as long as its contacts live (every call that
+ * destroys proxies, DestroyFixture, DestroyBody and SetActive(false), destroys their contacts in
+ * the same call, and SetType keeps the proxies), so the set holds exactly the pairs the walk would
+ * find, and the answer is the same.
  *
  * Open addressing with linear probing over one Int32Array of (lower id, higher id) slots, -1 for
  * an empty slot; removal shifts the following entries back (no tombstones), so a lookup stops at
