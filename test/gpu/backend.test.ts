@@ -19,6 +19,7 @@ import { b2AABB } from '../../src/collision/b2Collision';
 import type { b2Manifold } from '../../src/collision/b2Collision';
 import type { b2Fixture } from '../../src/dynamics/b2Fixture';
 import { WebGPUBackend } from '../../src-gpu/backend';
+import { checkWorldInvariants } from '../support/invariants';
 import { loadGoldenScene } from '../support/scene';
 import { describeGpu } from './support';
 
@@ -324,12 +325,15 @@ describeGpu('WebGPUBackend: the world API on the GPU', (ctx) => {
       expect(touching).toBe(4);
       await world.SetBackend(backend);
       expect(world.GetContactList()).toBeNull(); // the GPU owns the contacts now
+      expect(world.m_contactManager.m_pairs.GetCount()).toBe(0);
       for (let i = 0; i < 10; ++i) await world.StepAsync(DT, 8, 3);
       const gpuContacts = (await backend.stepper!.narrowPhase.readContacts()).filter((c) => c.touching);
       expect(gpuContacts.length).toBe(4);
       const positions = boxes.map((b) => b.GetPosition().Clone());
       const velocities = boxes.map((b) => b.GetLinearVelocity().Clone());
       await world.SetBackend(null);
+      // The contacts are the engine's again, each in its bodies' lists and the pair set.
+      expect(checkWorldInvariants(world)).toEqual([]);
       // Carried exactly: the GPU's state, now the engine's.
       boxes.forEach((b, i) => {
         expect(b.GetPosition().x).toBe(positions[i].x);
