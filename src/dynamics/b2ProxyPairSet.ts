@@ -38,15 +38,7 @@ export class b2ProxyPairSet {
 
   /** Whether the pair of proxies idA and idB (either order) is held. */
   Has(idA: number, idB: number): boolean {
-    const lo = idA < idB ? idA : idB;
-    const hi = idA < idB ? idB : idA;
-    const slots = this.m_slots;
-    const mask = this.m_mask;
-    for (let i = b2ProxyPairSet.Hash(lo, hi) & mask; ; i = (i + 1) & mask) {
-      const l = slots[2 * i];
-      if (l === EMPTY) return false;
-      if (l === lo && slots[2 * i + 1] === hi) return true;
-    }
+    return this.Find(idA, idB) >= 0;
   }
 
   /** Adds the pair of proxies idA and idB (ids are non-negative; the pair must not be held). */
@@ -58,17 +50,10 @@ export class b2ProxyPairSet {
 
   /** Removes the pair of proxies idA and idB (either order); returns whether it was held. */
   Remove(idA: number, idB: number): boolean {
-    const lo = idA < idB ? idA : idB;
-    const hi = idA < idB ? idB : idA;
+    const i = this.Find(idA, idB);
+    if (i < 0) return false;
     const slots = this.m_slots;
     const mask = this.m_mask;
-    let i = b2ProxyPairSet.Hash(lo, hi) & mask;
-    for (;;) {
-      const l = slots[2 * i];
-      if (l === EMPTY) return false;
-      if (l === lo && slots[2 * i + 1] === hi) break;
-      i = (i + 1) & mask;
-    }
     // Shift back every following entry of the run that may move into the hole: one whose home
     // slot does not lie cyclically in (hole, j].
     let hole = i;
@@ -90,6 +75,19 @@ export class b2ProxyPairSet {
   Clear(): void {
     this.m_slots.fill(EMPTY);
     this.m_count = 0;
+  }
+
+  /** The slot holding the pair of proxies idA and idB (either order), or -1. */
+  private Find(idA: number, idB: number): number {
+    const lo = idA < idB ? idA : idB;
+    const hi = idA < idB ? idB : idA;
+    const slots = this.m_slots;
+    const mask = this.m_mask;
+    for (let i = b2ProxyPairSet.Hash(lo, hi) & mask; ; i = (i + 1) & mask) {
+      const l = slots[2 * i];
+      if (l === EMPTY) return -1;
+      if (l === lo && slots[2 * i + 1] === hi) return i;
+    }
   }
 
   private Insert(lo: number, hi: number): void {
