@@ -24,39 +24,46 @@ function b2EdgeSeparation(
   poly2: Readonly<b2PolygonShape>,
   xf2: Readonly<b2Transform>,
 ): void {
-  const vertices1 = poly1.m_vertices;
-  const normals1 = poly1.m_normals;
-
   const count2 = poly2.m_vertexCount;
   const vertices2 = poly2.m_vertices;
 
   b2Assert(0 <= edge1 && edge1 < poly1.m_vertexCount);
 
+  // The transforms' parts in locals, poly1's arrays read where used: V8 inlines a function only up
+  // to 460 bytes of bytecode, and each repeated xf.q.c is two property loads.
+  const q1c = xf1.q.c;
+  const q1s = xf1.q.s;
+  const p1 = xf1.p;
+  const q2c = xf2.q.c;
+  const q2s = xf2.q.s;
+  const p2 = xf2.p;
+
   // Convert normal from poly1's frame into poly2's frame.
-  const n = normals1[edge1];
-  const normal1WorldX = xf1.q.c * n.x - xf1.q.s * n.y;
-  const normal1WorldY = xf1.q.s * n.x + xf1.q.c * n.y;
-  const normal1X = xf2.q.c * normal1WorldX + xf2.q.s * normal1WorldY;
-  const normal1Y = -xf2.q.s * normal1WorldX + xf2.q.c * normal1WorldY;
+  const n = poly1.m_normals[edge1];
+  const normal1WorldX = q1c * n.x - q1s * n.y;
+  const normal1WorldY = q1s * n.x + q1c * n.y;
+  const normal1X = q2c * normal1WorldX + q2s * normal1WorldY;
+  const normal1Y = -q2s * normal1WorldX + q2c * normal1WorldY;
 
   // Find support vertex on poly2 for -normal.
   let index = 0;
   let minDot = +b2_maxFloat; // unary plus: docs/PORTING.md
 
   for (let i = 0; i < count2; ++i) {
-    const dot = vertices2[i].x * normal1X + vertices2[i].y * normal1Y;
+    const v = vertices2[i];
+    const dot = v.x * normal1X + v.y * normal1Y;
     if (dot < minDot) {
       minDot = dot;
       index = i;
     }
   }
 
-  const a = vertices1[edge1];
-  const v1x = xf1.q.c * a.x - xf1.q.s * a.y + xf1.p.x;
-  const v1y = xf1.q.s * a.x + xf1.q.c * a.y + xf1.p.y;
+  const a = poly1.m_vertices[edge1];
+  const v1x = q1c * a.x - q1s * a.y + p1.x;
+  const v1y = q1s * a.x + q1c * a.y + p1.y;
   const b = vertices2[index];
-  const v2x = xf2.q.c * b.x - xf2.q.s * b.y + xf2.p.x;
-  const v2y = xf2.q.s * b.x + xf2.q.c * b.y + xf2.p.y;
+  const v2x = q2c * b.x - q2s * b.y + p2.x;
+  const v2y = q2s * b.x + q2c * b.y + p2.y;
   const separation = (v2x - v1x) * normal1WorldX + (v2y - v1y) * normal1WorldY;
   s_edgeSeparation[0] = separation;
 }
