@@ -2,14 +2,14 @@
 // Counts the instructions and cache misses of one engine's steps on one benchmark scene under
 // valgrind's cache simulator, which unlike a timing does not move with the machine's load:
 //   node bench/cachesim.mjs [--scene bench2d] [--engine webphysics] [--ours FILE] [--preroll 300]
-//                           [--steps 200] [--ll BYTES] [--functions] [--top 25]
+//                           [--steps 200] [--ll BYTES] [--functions] [--top 25] [--sort ll|ir]
 // It runs the scene twice under `valgrind --tool=cachegrind` (preroll steps, then preroll + steps)
 // with V8 on one thread (--single-threaded: no background compiler or GC threads, so the two runs
 // differ only by the measured steps) and prints the difference per step: instructions (Ir), first
 // level data misses (D1) and last level data misses (LL, a BYTES cache, 4 MiB by default; the
 // machine's own caches are shared with its neighbours). With --functions both are callgrind runs
 // instead, and V8's code map (--perf-basic-prof) names the JavaScript functions and builtins the
-// difference falls in.
+// difference falls in, listed by last level read misses or (--sort ir) by instructions.
 // Needs valgrind on the PATH (Debian: apt-get install valgrind); a step under valgrind takes about
 // fifty times as long as without.
 import { spawnSync } from 'node:child_process';
@@ -32,6 +32,7 @@ const { values } = parseArgs({
     ll: { type: 'string', default: String(4 * 1024 * 1024) },
     functions: { type: 'boolean', default: false },
     top: { type: 'string', default: '25' },
+    sort: { type: 'string', default: 'll' },
     child: { type: 'string' },
   },
 });
@@ -52,6 +53,7 @@ const preroll = Number(values.preroll);
 const steps = Number(values.steps);
 if (!(Number.isInteger(preroll) && preroll >= 0)) throw new Error('--preroll must be a whole number of steps');
 if (!(Number.isInteger(steps) && steps > 0)) throw new Error('--steps must be a positive whole number of steps');
+if (values.sort !== 'll' && values.sort !== 'ir') throw new Error(`--sort must be ll or ir, not ${values.sort}`);
 const built = engine.id === 'webphysics' && !values.ours ? buildOurs(() => {}) : null;
 const bundle = values.ours ?? built?.bundle;
 const work = mkdtempSync(path.join(os.tmpdir(), 'webphysics-cachesim-'));
@@ -119,9 +121,10 @@ if (base.byCode && measured.byCode) {
     return { name, ir: (v[ir] - (b[ir] ?? 0)) / steps, d1: (v[d1] - (b[d1] ?? 0)) / steps, ll: (v[ll] - (b[ll] ?? 0)) / steps };
   });
   const total = rows.reduce((sum, r) => sum + r.ll, 0);
-  console.log('\nper step by code object, most last level read misses first:');
+  const by = values.sort;
+  console.log(`\nper step by code object, most ${by === 'ir' ? 'instructions' : 'last level read misses'} first:`);
   console.log('  LL reads %   LL reads   D1 reads      Ir (K)  code');
-  for (const r of rows.sort((x, y) => y.ll - x.ll).slice(0, Number(values.top))) {
+  for (const r of rows.sort((x, y) => y[by] - x[by]).slice(0, Number(values.top))) {
     console.log(
       `${((100 * r.ll) / total).toFixed(1).padStart(11)}  ${r.ll.toFixed(0).padStart(9)}  ${r.d1.toFixed(0).padStart(9)}  ${(r.ir / 1e3).toFixed(0).padStart(10)}  ${r.name.slice(0, 100)}`,
     );
