@@ -241,6 +241,19 @@ const enum PcI {
   stride = 4,
 }
 
+/**
+ * Masks applied where the loops compute a record offset or read a body index or point count
+ * (`(i * VcF.stride) & Mask.offset`). They tell V8 that `o + field` and `3 * index + 2` fit in 32
+ * bits, so it leaves out the overflow check it otherwise puts on each of the hundred-odd typed
+ * array reads and writes a contact makes per pass. They change no value: Initialize refuses an
+ * island whose records or bodies would reach them, and a manifold has at most two points.
+ */
+const enum Mask {
+  offset = 0x3fffffff,
+  index = 0x0fffffff,
+  pointCount = 3,
+}
+
 // The records have room for two points.
 b2Assert(b2_maxManifoldPoints === 2);
 
@@ -372,6 +385,7 @@ export class b2ContactSolver {
     this.m_positions = def.positions;
     this.m_velocities = def.velocities;
     this.m_contacts = def.contacts;
+    b2Assert(this.m_count * VcF.stride <= Mask.offset && this.m_positions.length / 3 <= Mask.index);
     if (this.m_rotCache.length < this.m_positions.length) {
       this.m_rotCache = new Float64Array(this.m_positions.length).fill(NaN);
     }
@@ -400,8 +414,8 @@ export class b2ContactSolver {
       const pointCount = manifold.pointCount;
       b2Assert(pointCount > 0);
 
-      const o = i * VcF.stride;
-      const oi = i * VcI.stride;
+      const o = (i * VcF.stride) & Mask.offset;
+      const oi = (i * VcI.stride) & Mask.offset;
       const scalars = contact.m_scalars;
       vf[o + VcF.friction] = scalars.friction;
       vf[o + VcF.restitution] = scalars.restitution;
@@ -422,8 +436,8 @@ export class b2ContactSolver {
       vf[o + VcF.normalMassExY] = 0.0;
       vf[o + VcF.normalMassEyY] = 0.0;
 
-      const q = i * PcF.stride;
-      const qi = i * PcI.stride;
+      const q = (i * PcF.stride) & Mask.offset;
+      const qi = (i * PcI.stride) & Mask.offset;
       pi[qi + PcI.indexA] = bodyA.m_islandIndex;
       pi[qi + PcI.indexB] = bodyB.m_islandIndex;
       pf[q + PcF.invMassA] = bodyA.m_invMass;
@@ -507,18 +521,18 @@ export class b2ContactSolver {
     const qB = s_qB;
 
     for (let i = 0; i < this.m_count; ++i) {
-      const o = i * VcF.stride;
-      const oi = i * VcI.stride;
+      const o = (i * VcF.stride) & Mask.offset;
+      const oi = (i * VcI.stride) & Mask.offset;
       // The position constraint i holds the copy of contact i's manifold (vc.contactIndex is i).
-      const q = i * PcF.stride;
-      const qi = i * PcI.stride;
+      const q = (i * PcF.stride) & Mask.offset;
+      const qi = (i * PcI.stride) & Mask.offset;
 
       const radiusA = pf[q + PcF.radiusA];
       const radiusB = pf[q + PcF.radiusB];
-      const manifoldPointCount = pi[qi + PcI.pointCount];
+      const manifoldPointCount = pi[qi + PcI.pointCount] & Mask.pointCount;
 
-      const indexA = vi[oi + VcI.indexA];
-      const indexB = vi[oi + VcI.indexB];
+      const indexA = vi[oi + VcI.indexA] & Mask.index;
+      const indexB = vi[oi + VcI.indexB] & Mask.index;
 
       const mA = vf[o + VcF.invMassA];
       const mB = vf[o + VcF.invMassB];
@@ -674,7 +688,7 @@ export class b2ContactSolver {
       const tangentY = -normalX;
       const restitution = vf[o + VcF.restitution];
 
-      const pointCount = vi[oi + VcI.pointCount];
+      const pointCount = vi[oi + VcI.pointCount] & Mask.pointCount;
       for (let j = 0; j < pointCount; ++j) {
         const op = o + VcF.points + j * VcP.stride;
         const pointX = j === 0 ? point0X : point1X;
@@ -760,16 +774,16 @@ export class b2ContactSolver {
 
     // Warm start.
     for (let i = 0; i < this.m_count; ++i) {
-      const o = i * VcF.stride;
-      const oi = i * VcI.stride;
+      const o = (i * VcF.stride) & Mask.offset;
+      const oi = (i * VcI.stride) & Mask.offset;
 
-      const indexA = vi[oi + VcI.indexA];
-      const indexB = vi[oi + VcI.indexB];
+      const indexA = vi[oi + VcI.indexA] & Mask.index;
+      const indexB = vi[oi + VcI.indexB] & Mask.index;
       const mA = vf[o + VcF.invMassA];
       const iA = vf[o + VcF.invIA];
       const mB = vf[o + VcF.invMassB];
       const iB = vf[o + VcF.invIB];
-      const pointCount = vi[oi + VcI.pointCount];
+      const pointCount = vi[oi + VcI.pointCount] & Mask.pointCount;
 
       let vAx = velocities[3 * indexA];
       let vAy = velocities[3 * indexA + 1];
@@ -812,16 +826,16 @@ export class b2ContactSolver {
     const velocities = this.m_velocities;
 
     for (let i = 0; i < this.m_count; ++i) {
-      const o = i * VcF.stride;
-      const oi = i * VcI.stride;
+      const o = (i * VcF.stride) & Mask.offset;
+      const oi = (i * VcI.stride) & Mask.offset;
 
-      const indexA = vi[oi + VcI.indexA];
-      const indexB = vi[oi + VcI.indexB];
+      const indexA = vi[oi + VcI.indexA] & Mask.index;
+      const indexB = vi[oi + VcI.indexB] & Mask.index;
       const mA = vf[o + VcF.invMassA];
       const iA = vf[o + VcF.invIA];
       const mB = vf[o + VcF.invMassB];
       const iB = vf[o + VcF.invIB];
-      const pointCount = vi[oi + VcI.pointCount];
+      const pointCount = vi[oi + VcI.pointCount] & Mask.pointCount;
 
       let vAx = velocities[3 * indexA];
       let vAy = velocities[3 * indexA + 1];
@@ -1075,11 +1089,11 @@ export class b2ContactSolver {
     const vf = this.m_vcFloats;
     const vi = this.m_vcInts;
     for (let i = 0; i < this.m_count; ++i) {
-      const o = i * VcF.stride;
-      const oi = i * VcI.stride;
+      const o = (i * VcF.stride) & Mask.offset;
+      const oi = (i * VcI.stride) & Mask.offset;
       const manifold = this.m_contacts[vi[oi + VcI.contactIndex]].GetManifold();
 
-      const pointCount = vi[oi + VcI.pointCount];
+      const pointCount = vi[oi + VcI.pointCount] & Mask.pointCount;
       for (let j = 0; j < pointCount; ++j) {
         const op = o + VcF.points + j * VcP.stride;
         const mp = manifold.points[j];
@@ -1092,7 +1106,7 @@ export class b2ContactSolver {
   /** The impulses of constraint i, as b2Island.Report reads them from a b2ContactVelocityConstraint. */
   GetImpulses(i: number, impulse: b2ContactImpulse): void {
     const vf = this.m_vcFloats;
-    const o = i * VcF.stride;
+    const o = (i * VcF.stride) & Mask.offset;
     const pointCount = this.m_vcInts[i * VcI.stride + VcI.pointCount];
     impulse.count = pointCount;
     for (let j = 0; j < pointCount; ++j) {
@@ -1129,16 +1143,16 @@ export class b2ContactSolver {
     const qB = s_qB;
 
     for (let i = 0; i < this.m_count; ++i) {
-      const q = i * PcF.stride;
-      const qi = i * PcI.stride;
+      const q = (i * PcF.stride) & Mask.offset;
+      const qi = (i * PcI.stride) & Mask.offset;
 
-      const indexA = pi[qi + PcI.indexA];
-      const indexB = pi[qi + PcI.indexB];
+      const indexA = pi[qi + PcI.indexA] & Mask.index;
+      const indexB = pi[qi + PcI.indexB] & Mask.index;
       const localCenterAX = pf[q + PcF.localCenterAX];
       const localCenterAY = pf[q + PcF.localCenterAY];
       const localCenterBX = pf[q + PcF.localCenterBX];
       const localCenterBY = pf[q + PcF.localCenterBY];
-      const pointCount = pi[qi + PcI.pointCount];
+      const pointCount = pi[qi + PcI.pointCount] & Mask.pointCount;
       const type = pi[qi + PcI.type];
       const radiusA = pf[q + PcF.radiusA];
       const radiusB = pf[q + PcF.radiusB];
