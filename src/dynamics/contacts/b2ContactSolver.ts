@@ -371,6 +371,7 @@ export class b2ContactSolver {
 
   /** The C++ constructor: set up the solver for an island, reusing the constraint storage. */
   Initialize(def: b2ContactSolverDef): this {
+    b2Assert(def.count * VcF.stride <= Mask.offset && def.positions.length / 3 <= Mask.index, 'island too large');
     this.m_step.Assign(def.step);
     this.m_count = def.count;
     if (this.m_capacity < this.m_count) {
@@ -385,7 +386,6 @@ export class b2ContactSolver {
     this.m_positions = def.positions;
     this.m_velocities = def.velocities;
     this.m_contacts = def.contacts;
-    b2Assert(this.m_count * VcF.stride <= Mask.offset && this.m_positions.length / 3 <= Mask.index);
     if (this.m_rotCache.length < this.m_positions.length) {
       this.m_rotCache = new Float64Array(this.m_positions.length).fill(NaN);
     }
@@ -1106,7 +1106,7 @@ export class b2ContactSolver {
   /** The impulses of constraint i, as b2Island.Report reads them from a b2ContactVelocityConstraint. */
   GetImpulses(i: number, impulse: b2ContactImpulse): void {
     const vf = this.m_vcFloats;
-    const o = (i * VcF.stride) & Mask.offset;
+    const o = i * VcF.stride;
     const pointCount = this.m_vcInts[i * VcI.stride + VcI.pointCount];
     impulse.count = pointCount;
     for (let j = 0; j < pointCount; ++j) {

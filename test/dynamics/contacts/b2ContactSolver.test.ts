@@ -264,6 +264,23 @@ describe('b2ContactSolver warm starting and impulse storage', () => {
   });
 });
 
+describe('b2ContactSolver island size', () => {
+  it('refuses an island whose records or body indices would pass the masks on their offsets', () => {
+    const { solver, velocities } = makeIsland({ pointsX: [-0.5, 0.5], vB: [0.0, -1.0] });
+    const tooManyContacts = new b2ContactSolverDef();
+    tooManyContacts.count = Math.floor(0x3fffffff / 34) + 1;
+    expect(() => solver.Initialize(tooManyContacts)).toThrow('island too large');
+    const tooManyBodies = new b2ContactSolverDef();
+    tooManyBodies.positions = { length: 3 * 0x10000000 } as unknown as Float64Array;
+    expect(() => solver.Initialize(tooManyBodies)).toThrow('island too large');
+    // Refused before anything changed: the island set up before still solves.
+    expect(solver.m_count).toBe(1);
+    solver.InitializeVelocityConstraints();
+    solver.SolveVelocityConstraints();
+    expect(velocities[1].v.y).toBeCloseTo(0.0, digits);
+  });
+});
+
 describe('b2ContactSolver position solver', () => {
   it('pushes a penetrating box out and reports success only within 3 slops', () => {
     const deep = makeIsland({ pointsX: [-0.5, 0.5], vB: [0.0, 0.0], yB: 0.4 });
