@@ -49,33 +49,32 @@ export class b2ContactFeature {
 }
 
 /**
- * Contact ids to facilitate warm starting. The C++ union's `key` is the uint32 view of the four
- * feature bytes in x86 order; here it is computed from `cf`, and writing it writes the bytes.
+ * Contact ids to facilitate warm starting. The C++ union of the feature bytes (`cf`) and their
+ * uint32 view (`key`, x86 byte order): here the id is its own feature record, so `cf` returns the
+ * id itself, and a manifold point holds one object for both views where a separate b2ContactFeature
+ * would cost the step a pointer chase per point; `key` is computed from the bytes, and writing it
+ * writes them.
  */
-export class b2ContactID {
-  readonly cf = new b2ContactFeature();
+export class b2ContactID extends b2ContactFeature {
+  /** The feature bytes: the id itself, as in the C++ union. */
+  get cf(): b2ContactFeature {
+    return this;
+  }
 
   /** Used to quickly compare contact ids. */
   get key(): number {
-    const cf = this.cf;
-    return (cf.indexA | (cf.indexB << 8) | (cf.typeA << 16) | (cf.typeB << 24)) >>> 0;
+    return (this.indexA | (this.indexB << 8) | (this.typeA << 16) | (this.typeB << 24)) >>> 0;
   }
 
   set key(value: number) {
-    const cf = this.cf;
-    cf.indexA = value & 0xff;
-    cf.indexB = (value >>> 8) & 0xff;
-    cf.typeA = (value >>> 16) & 0xff;
-    cf.typeB = (value >>> 24) & 0xff;
+    this.indexA = value & 0xff;
+    this.indexB = (value >>> 8) & 0xff;
+    this.typeA = (value >>> 16) & 0xff;
+    this.typeB = (value >>> 24) & 0xff;
   }
 
-  Clone(): b2ContactID {
+  override Clone(): b2ContactID {
     return new b2ContactID().Assign(this);
-  }
-
-  Assign(id: Readonly<b2ContactID>): this {
-    this.cf.Assign(id.cf);
-    return this;
   }
 }
 

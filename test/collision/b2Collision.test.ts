@@ -61,6 +61,17 @@ describe('b2ContactID', () => {
     expect(copy.key).toBe(0x01020304);
     expect(new b2ContactID().Assign(copy).cf.indexA).toBe(4);
   });
+
+  it('is one record under both views, as the C++ union: cf is the id, and a copy of cf is its own', () => {
+    const id = new b2ContactID();
+    expect(id.cf).toBe(id);
+    expect(id).toBeInstanceOf(b2ContactFeature);
+    id.cf.Assign(Object.assign(new b2ContactFeature(), { indexA: 7, indexB: 1, typeA: 1, typeB: 0 }));
+    expect(id.key).toBe(0x00010107);
+    const features = id.cf.Clone();
+    id.key = 0;
+    expect(features).toMatchObject({ indexA: 7, indexB: 1, typeA: 1, typeB: 0 });
+  });
 });
 
 describe('b2Manifold', () => {

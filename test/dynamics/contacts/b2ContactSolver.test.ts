@@ -271,7 +271,7 @@ describe('b2ContactSolver island size', () => {
     tooManyContacts.count = Math.floor(0x3fffffff / 34) + 1;
     expect(() => solver.Initialize(tooManyContacts)).toThrow('island too large');
     const tooManyBodies = new b2ContactSolverDef();
-    tooManyBodies.positions = { length: 3 * 0x10000000 } as unknown as Float64Array;
+    tooManyBodies.positions = { length: 3 * 0x10000000 } as unknown as b2ContactSolverDef['positions'];
     expect(() => solver.Initialize(tooManyBodies)).toThrow('island too large');
     // Refused before anything changed: the island set up before still solves.
     expect(solver.m_count).toBe(1);
