@@ -9,13 +9,12 @@ import { b2_epsilon, b2_maxFloat, b2_maxManifoldPoints } from '../common/b2Setti
 import { b2Distance, b2DistanceInput, b2DistanceOutput, b2SimplexCache } from './b2Distance';
 import type { b2Shape } from './shapes/b2Shape';
 
-/** A fixed-size C++ array: `count` preallocated objects. */
+/**
+ * A fixed-size C++ array: `count` preallocated objects. Array.from sizes the backing store to
+ * `count`; an array grown by push keeps room for 17, which every manifold would carry.
+ */
 function makeArray<T>(count: number, make: () => T): T[] {
-  const array: T[] = [];
-  for (let i = 0; i < count; ++i) {
-    array.push(make());
-  }
-  return array;
+  return Array.from({ length: count }, make);
 }
 
 /** Unused by the library; kept from the header. */

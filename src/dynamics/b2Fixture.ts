@@ -161,12 +161,9 @@ export class b2Fixture {
 
     this.m_shape = def.shape.Clone();
 
-    // Reserve proxy space
+    // Reserve proxy space (Array.from sizes the backing store exactly; push leaves room for 17).
     const childCount = this.m_shape.GetChildCount();
-    this.m_proxies = [];
-    for (let i = 0; i < childCount; ++i) {
-      this.m_proxies.push(new b2FixtureProxy(this));
-    }
+    this.m_proxies = Array.from({ length: childCount }, () => new b2FixtureProxy(this));
     this.m_proxyCount = 0;
 
     this.m_density = def.density;

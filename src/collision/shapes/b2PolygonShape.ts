@@ -11,12 +11,9 @@ import type { b2MassData } from './b2Shape';
 import { b2CheckPolygonVertices } from './b2ShapeValidation';
 import { b2CheckFinite, b2CheckPositive, b2CheckVec2 } from '../../common/b2ArgumentError';
 
+/** b2_maxPolygonVertices vectors; Array.from sizes the backing store exactly (push leaves room for 17). */
 function makeVertexArray(): b2Vec2[] {
-  const array: b2Vec2[] = [];
-  for (let i = 0; i < b2_maxPolygonVertices; ++i) {
-    array.push(new b2Vec2());
-  }
-  return array;
+  return Array.from({ length: b2_maxPolygonVertices }, () => new b2Vec2());
 }
 
 const s_boxRot = new b2Rot();
