@@ -3,7 +3,7 @@
  * (b2CollideEdge.cpp).
  */
 
-import { b2Dot, b2Min, b2MulRV, b2MulTXV, b2MulTXX, b2MulXV, b2Transform, b2Vec2 } from '../common/b2Math';
+import { b2Min, b2MulRV, b2MulTXV, b2MulTXX, b2MulXV, b2Transform, b2Vec2 } from '../common/b2Math';
 import {
   b2_angularSlop,
   b2_maxFloat,
@@ -80,7 +80,7 @@ export function b2CollideEdgeAndCircle(
     manifold.localNormal.SetZero();
     manifold.localPoint.Assign(P);
     point.id.key = 0;
-    setFeature(point.id.cf, 0, 0, b2ContactFeature.e_vertex, b2ContactFeature.e_vertex);
+    setFeature(point.id, 0, 0, b2ContactFeature.e_vertex, b2ContactFeature.e_vertex);
     point.localPoint.Assign(circleB.m_p);
     return;
   }
@@ -114,7 +114,7 @@ export function b2CollideEdgeAndCircle(
     manifold.localNormal.SetZero();
     manifold.localPoint.Assign(P);
     point.id.key = 0;
-    setFeature(point.id.cf, 1, 0, b2ContactFeature.e_vertex, b2ContactFeature.e_vertex);
+    setFeature(point.id, 1, 0, b2ContactFeature.e_vertex, b2ContactFeature.e_vertex);
     point.localPoint.Assign(circleB.m_p);
     return;
   }
@@ -141,7 +141,7 @@ export function b2CollideEdgeAndCircle(
   manifold.type = b2Manifold.e_faceA;
   manifold.localPoint.Assign(A);
   point.id.key = 0;
-  setFeature(point.id.cf, 0, 0, b2ContactFeature.e_face, b2ContactFeature.e_vertex);
+  setFeature(point.id, 0, 0, b2ContactFeature.e_face, b2ContactFeature.e_vertex);
   point.localPoint.Assign(circleB.m_p);
 }
 
@@ -449,11 +449,14 @@ class b2EPCollider {
     if (primaryAxis.type === b2EPAxis.e_edgeA) {
       manifold.type = b2Manifold.e_faceA;
 
-      // Search for the polygon normal that is most anti-parallel to the edge normal.
+      // Search for the polygon normal that is most anti-parallel to the edge normal. The dot
+      // products here and for the side offsets below are written out: this function is past
+      // V8's inlining budget, and a b2Dot left a call returns its double boxed (an allocation).
       let bestIndex = 0;
-      let bestValue = b2Dot(normal, polygon.normals[0]);
+      let bestValue = normal.x * polygon.normals[0].x + normal.y * polygon.normals[0].y;
       for (let i = 1; i < polygon.count; ++i) {
-        const value = b2Dot(normal, polygon.normals[i]);
+        const n = polygon.normals[i];
+        const value = normal.x * n.x + normal.y * n.y;
         if (value < bestValue) {
           bestValue = value;
           bestIndex = i;
@@ -464,10 +467,10 @@ class b2EPCollider {
       const i2 = i1 + 1 < polygon.count ? i1 + 1 : 0;
 
       ie[0].v.Assign(polygon.vertices[i1]);
-      setFeature(ie[0].id.cf, 0, i1, b2ContactFeature.e_face, b2ContactFeature.e_vertex);
+      setFeature(ie[0].id, 0, i1, b2ContactFeature.e_face, b2ContactFeature.e_vertex);
 
       ie[1].v.Assign(polygon.vertices[i2]);
-      setFeature(ie[1].id.cf, 0, i2, b2ContactFeature.e_face, b2ContactFeature.e_vertex);
+      setFeature(ie[1].id, 0, i2, b2ContactFeature.e_face, b2ContactFeature.e_vertex);
 
       if (this.m_front) {
         rf.i1 = 0;
@@ -486,10 +489,10 @@ class b2EPCollider {
       manifold.type = b2Manifold.e_faceB;
 
       ie[0].v.Assign(v1);
-      setFeature(ie[0].id.cf, 0, primaryAxis.index, b2ContactFeature.e_vertex, b2ContactFeature.e_face);
+      setFeature(ie[0].id, 0, primaryAxis.index, b2ContactFeature.e_vertex, b2ContactFeature.e_face);
 
       ie[1].v.Assign(v2);
-      setFeature(ie[1].id.cf, 0, primaryAxis.index, b2ContactFeature.e_vertex, b2ContactFeature.e_face);
+      setFeature(ie[1].id, 0, primaryAxis.index, b2ContactFeature.e_vertex, b2ContactFeature.e_face);
 
       rf.i1 = primaryAxis.index;
       rf.i2 = rf.i1 + 1 < polygon.count ? rf.i1 + 1 : 0;
@@ -500,8 +503,8 @@ class b2EPCollider {
 
     rf.sideNormal1.Set(rf.normal.y, -rf.normal.x);
     neg(rf.sideNormal2, rf.sideNormal1);
-    rf.sideOffset1 = b2Dot(rf.sideNormal1, rf.v1);
-    rf.sideOffset2 = b2Dot(rf.sideNormal2, rf.v2);
+    rf.sideOffset1 = rf.sideNormal1.x * rf.v1.x + rf.sideNormal1.y * rf.v1.y;
+    rf.sideOffset2 = rf.sideNormal2.x * rf.v2.x + rf.sideNormal2.y * rf.v2.y;
 
     // Clip incident edge against extruded edge1 side edges.
     const clipPoints1 = s_clipPoints1;
@@ -546,8 +549,8 @@ class b2EPCollider {
           cp.id.Assign(clipPoint.id);
         } else {
           cp.localPoint.Assign(clipPoint.v);
-          const cf = clipPoint.id.cf;
-          setFeature(cp.id.cf, cf.indexB, cf.indexA, cf.typeB, cf.typeA);
+          const cf = clipPoint.id;
+          setFeature(cp.id, cf.indexB, cf.indexA, cf.typeB, cf.typeA);
         }
 
         ++pointCount;

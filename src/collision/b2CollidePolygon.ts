@@ -195,19 +195,19 @@ function b2FindIncidentEdge(
   const c0 = c[0];
   c0.v.x = xf2.q.c * a.x - xf2.q.s * a.y + xf2.p.x;
   c0.v.y = xf2.q.s * a.x + xf2.q.c * a.y + xf2.p.y;
-  c0.id.cf.indexA = edge1 & 0xff;
-  c0.id.cf.indexB = i1 & 0xff;
-  c0.id.cf.typeA = b2ContactFeature.e_face;
-  c0.id.cf.typeB = b2ContactFeature.e_vertex;
+  c0.id.indexA = edge1 & 0xff;
+  c0.id.indexB = i1 & 0xff;
+  c0.id.typeA = b2ContactFeature.e_face;
+  c0.id.typeB = b2ContactFeature.e_vertex;
 
   const b = vertices2[i2];
   const c1 = c[1];
   c1.v.x = xf2.q.c * b.x - xf2.q.s * b.y + xf2.p.x;
   c1.v.y = xf2.q.s * b.x + xf2.q.c * b.y + xf2.p.y;
-  c1.id.cf.indexA = edge1 & 0xff;
-  c1.id.cf.indexB = i2 & 0xff;
-  c1.id.cf.typeA = b2ContactFeature.e_face;
-  c1.id.cf.typeB = b2ContactFeature.e_vertex;
+  c1.id.indexA = edge1 & 0xff;
+  c1.id.indexB = i2 & 0xff;
+  c1.id.typeA = b2ContactFeature.e_face;
+  c1.id.typeB = b2ContactFeature.e_vertex;
 }
 
 const s_edgeA = [0];
@@ -353,7 +353,7 @@ export function b2CollidePolygons(
       cp.id.Assign(clipPoints2[i].id);
       if (flip) {
         // Swap features
-        const cf = cp.id.cf;
+        const cf = cp.id;
         const indexA = cf.indexA;
         const typeA = cf.typeA;
         cf.indexA = cf.indexB;
