@@ -52,8 +52,8 @@ export class b2ContactFeature {
  * uint32 view (`key`, x86 byte order): here the id is its own feature record, so `cf` returns the
  * id itself, and a manifold point holds one object for both views where a separate b2ContactFeature
  * would cost the step a pointer chase per point; `key` is computed from the bytes, and writing it
- * writes them. The engine reads and writes the bytes on the id (`id.indexA` is `id.cf.indexA`):
- * the getter call, though inlined, counts against V8's inlining budget in the collide functions.
+ * writes them. The engine reads and writes the bytes on the id itself (`id.indexA` is
+ * `id.cf.indexA`), which saves the getter.
  */
 export class b2ContactID extends b2ContactFeature {
   /** The feature bytes: the id itself, as in the C++ union. */
