@@ -3,6 +3,7 @@
  * (b2CollideEdge.cpp).
  */
 
+import { b2MakeArray } from '../common/b2MakeArray';
 import { b2Min, b2MulRV, b2MulTXV, b2MulTXX, b2MulXV, b2Transform, b2Vec2 } from '../common/b2Math';
 import {
   b2_angularSlop,
@@ -173,16 +174,9 @@ class b2EPAxis {
 
 /** This holds polygon B expressed in frame A. */
 class b2TempPolygon {
-  readonly vertices: b2Vec2[] = [];
-  readonly normals: b2Vec2[] = [];
+  readonly vertices: b2Vec2[] = b2MakeArray(b2_maxPolygonVertices, () => new b2Vec2());
+  readonly normals: b2Vec2[] = b2MakeArray(b2_maxPolygonVertices, () => new b2Vec2());
   count = 0;
-
-  constructor() {
-    for (let i = 0; i < b2_maxPolygonVertices; ++i) {
-      this.vertices.push(new b2Vec2());
-      this.normals.push(new b2Vec2());
-    }
-  }
 }
 
 /** Reference face used for clipping */

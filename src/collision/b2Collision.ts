@@ -3,19 +3,12 @@
  * (b2Collision.h, b2Collision.cpp).
  */
 
+import { b2MakeArray } from '../common/b2MakeArray';
 import { b2Abs, b2Max, b2Min, b2MulRV, b2MulXV, b2Vec2 } from '../common/b2Math';
 import type { b2Transform } from '../common/b2Math';
 import { b2_epsilon, b2_maxFloat, b2_maxManifoldPoints } from '../common/b2Settings';
 import { b2Distance, b2DistanceInput, b2DistanceOutput, b2SimplexCache } from './b2Distance';
 import type { b2Shape } from './shapes/b2Shape';
-
-/**
- * A fixed-size C++ array: `count` preallocated objects. Array.from sizes the backing store to
- * `count`; an array grown by push keeps room for 17, which every manifold would carry.
- */
-function makeArray<T>(count: number, make: () => T): T[] {
-  return Array.from({ length: count }, make);
-}
 
 /** Unused by the library; kept from the header. */
 export const b2_nullFeature = 0xff;
@@ -135,7 +128,7 @@ export class b2Manifold {
   static readonly e_faceB = 2;
 
   /** the points of contact */
-  readonly points: readonly b2ManifoldPoint[] = makeArray(b2_maxManifoldPoints, () => new b2ManifoldPoint());
+  readonly points: readonly b2ManifoldPoint[] = b2MakeArray(b2_maxManifoldPoints, () => new b2ManifoldPoint());
   /** not use for Type::e_points */
   readonly localNormal = new b2Vec2();
   /** usage depends on manifold type */
@@ -171,7 +164,7 @@ export class b2WorldManifold {
   /** world vector pointing from A to B */
   readonly normal = new b2Vec2();
   /** world contact point (point of intersection) */
-  readonly points: readonly b2Vec2[] = makeArray(b2_maxManifoldPoints, () => new b2Vec2());
+  readonly points: readonly b2Vec2[] = b2MakeArray(b2_maxManifoldPoints, () => new b2Vec2());
 
   /**
    * Evaluate the manifold with supplied transforms. This assumes modest motion from the original

@@ -5,6 +5,7 @@
 
 import { b2Assert, b2Log, b2_maxPolygonVertices } from '../common/b2Settings';
 import { b2Vec2 } from '../common/b2Math';
+import { b2MakeArray } from '../common/b2MakeArray';
 import { b2ArgumentError, b2CheckNonNegative, b2CheckObject, b2DestroyedError } from '../common/b2ArgumentError';
 import type { b2Transform } from '../common/b2Math';
 import { b2AABB } from '../collision/b2Collision';
@@ -161,9 +162,8 @@ export class b2Fixture {
 
     this.m_shape = def.shape.Clone();
 
-    // Reserve proxy space (Array.from sizes the backing store exactly; push leaves room for 17).
-    const childCount = this.m_shape.GetChildCount();
-    this.m_proxies = Array.from({ length: childCount }, () => new b2FixtureProxy(this));
+    // Reserve proxy space
+    this.m_proxies = b2MakeArray(this.m_shape.GetChildCount(), () => new b2FixtureProxy(this));
     this.m_proxyCount = 0;
 
     this.m_density = def.density;

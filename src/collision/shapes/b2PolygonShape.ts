@@ -2,6 +2,7 @@
  * A convex polygon (b2PolygonShape.h, b2PolygonShape.cpp).
  */
 
+import { b2MakeArray } from '../../common/b2MakeArray';
 import { b2Max, b2Min, b2MulRV, b2Rot, b2Vec2 } from '../../common/b2Math';
 import type { b2Transform } from '../../common/b2Math';
 import { b2_epsilon, b2_maxPolygonVertices, b2_polygonRadius, b2Assert } from '../../common/b2Settings';
@@ -10,11 +11,6 @@ import { b2Shape } from './b2Shape';
 import type { b2MassData } from './b2Shape';
 import { b2CheckPolygonVertices } from './b2ShapeValidation';
 import { b2CheckFinite, b2CheckPositive, b2CheckVec2 } from '../../common/b2ArgumentError';
-
-/** b2_maxPolygonVertices vectors; Array.from sizes the backing store exactly (push leaves room for 17). */
-function makeVertexArray(): b2Vec2[] {
-  return Array.from({ length: b2_maxPolygonVertices }, () => new b2Vec2());
-}
 
 const s_boxRot = new b2Rot();
 
@@ -67,8 +63,8 @@ function ComputeCentroid(vs: readonly b2Vec2[], count: number, out: b2Vec2): b2V
  */
 export class b2PolygonShape extends b2Shape {
   readonly m_centroid = new b2Vec2();
-  readonly m_vertices: readonly b2Vec2[] = makeVertexArray();
-  readonly m_normals: readonly b2Vec2[] = makeVertexArray();
+  readonly m_vertices: readonly b2Vec2[] = b2MakeArray(b2_maxPolygonVertices, () => new b2Vec2());
+  readonly m_normals: readonly b2Vec2[] = b2MakeArray(b2_maxPolygonVertices, () => new b2Vec2());
   m_vertexCount = 0;
 
   constructor() {

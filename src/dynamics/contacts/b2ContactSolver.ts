@@ -10,6 +10,7 @@
  */
 
 import { b2Manifold } from '../../collision/b2Collision';
+import { b2MakeArray } from '../../common/b2MakeArray';
 import { b2Clamp, b2Mat22, b2Max, b2Min, b2MulRV, b2MulXV, b2Rot, b2SubVV, b2Vec2 } from '../../common/b2Math';
 import type { b2Transform } from '../../common/b2Math';
 import {
@@ -37,7 +38,10 @@ export class b2VelocityConstraintPoint {
 }
 
 export class b2ContactVelocityConstraint {
-  readonly points: b2VelocityConstraintPoint[] = [];
+  readonly points: b2VelocityConstraintPoint[] = b2MakeArray(
+    b2_maxManifoldPoints,
+    () => new b2VelocityConstraintPoint(),
+  );
   readonly normal = new b2Vec2();
   readonly normalMass = new b2Mat22();
   readonly K = new b2Mat22();
@@ -51,16 +55,10 @@ export class b2ContactVelocityConstraint {
   restitution = 0.0;
   pointCount = 0;
   contactIndex = 0;
-
-  constructor() {
-    for (let i = 0; i < b2_maxManifoldPoints; ++i) {
-      this.points.push(new b2VelocityConstraintPoint());
-    }
-  }
 }
 
 export class b2ContactPositionConstraint {
-  readonly localPoints: b2Vec2[] = [];
+  readonly localPoints: b2Vec2[] = b2MakeArray(b2_maxManifoldPoints, () => new b2Vec2());
   readonly localNormal = new b2Vec2();
   readonly localPoint = new b2Vec2();
   indexA = 0;
@@ -75,12 +73,6 @@ export class b2ContactPositionConstraint {
   radiusA = 0.0;
   radiusB = 0.0;
   pointCount = 0;
-
-  constructor() {
-    for (let i = 0; i < b2_maxManifoldPoints; ++i) {
-      this.localPoints.push(new b2Vec2());
-    }
-  }
 }
 
 /**
