@@ -8,6 +8,8 @@ import { b2Abs, b2Max, b2Min, b2MulRV, b2MulXV, b2Vec2 } from '../common/b2Math'
 import type { b2Transform } from '../common/b2Math';
 import { b2_epsilon, b2_maxFloat, b2_maxManifoldPoints } from '../common/b2Settings';
 import { b2Distance, b2DistanceInput, b2DistanceOutput, b2SimplexCache } from './b2Distance';
+import { b2InspectCustom, b2RecordVec2 } from '../common/b2Record';
+import { b2ManifoldField, b2ManifoldPointField, b2ManifoldRecords } from './b2ManifoldRecord';
 import type { b2Shape } from './shapes/b2Shape';
 
 /** Unused by the library; kept from the header. */
@@ -43,10 +45,9 @@ export class b2ContactFeature {
 /**
  * Contact ids to facilitate warm starting. The C++ union of the feature bytes (`cf`) and their
  * uint32 view (`key`, x86 byte order): here the id is its own feature record, so `cf` returns the
- * id itself, and a manifold point holds one object for both views where a separate b2ContactFeature
- * would cost the step a pointer chase per point; `key` is computed from the bytes, and writing it
- * writes them. The engine reads and writes the bytes on the id itself (`id.indexA` is
- * `id.cf.indexA`), which saves the getter.
+ * id itself, one object for both views; `key` is computed from the bytes, and writing it writes
+ * them. The engine reads and writes the bytes on the id itself (`id.indexA` is `id.cf.indexA`),
+ * which saves the getter. A manifold point's id is a b2RecordContactID, which keeps the key.
  */
 export class b2ContactID extends b2ContactFeature {
   /** The feature bytes: the id itself, as in the C++ union. */
@@ -72,6 +73,75 @@ export class b2ContactID extends b2ContactFeature {
 }
 
 /**
+ * A manifold point's id: a b2ContactID whose bytes are the key held in the point's record
+ * (b2ManifoldPointField.key). It has b2ContactID's prototype and methods, but not its
+ * constructor, whose field writes would run these setters before the record is known.
+ */
+class b2RecordContactID {
+  constructor(
+    readonly m_record: Float64Array,
+    readonly m_offset: number,
+  ) {}
+
+  get key(): number {
+    return this.m_record[this.m_offset];
+  }
+
+  set key(value: number) {
+    this.m_record[this.m_offset] = value >>> 0;
+  }
+
+  get indexA(): number {
+    return this.m_record[this.m_offset] & 0xff;
+  }
+
+  set indexA(value: number) {
+    this.SetByte(0, value);
+  }
+
+  get indexB(): number {
+    return (this.m_record[this.m_offset] >>> 8) & 0xff;
+  }
+
+  set indexB(value: number) {
+    this.SetByte(8, value);
+  }
+
+  get typeA(): number {
+    return (this.m_record[this.m_offset] >>> 16) & 0xff;
+  }
+
+  set typeA(value: number) {
+    this.SetByte(16, value);
+  }
+
+  get typeB(): number {
+    return this.m_record[this.m_offset] >>> 24;
+  }
+
+  set typeB(value: number) {
+    this.SetByte(24, value);
+  }
+
+  toJSON(): { indexA: number; indexB: number; typeA: number; typeB: number } {
+    return { indexA: this.indexA, indexB: this.indexB, typeA: this.typeA, typeB: this.typeB };
+  }
+
+  [b2InspectCustom](): { indexA: number; indexB: number; typeA: number; typeB: number } {
+    return this.toJSON();
+  }
+
+  /** Replace the key's byte at this bit shift (the C++ writes a uint8 of the union). */
+  private SetByte(shift: number, value: number): void {
+    const key = this.m_record[this.m_offset];
+    this.m_record[this.m_offset] = ((key & ~(0xff << shift)) | ((value & 0xff) << shift)) >>> 0;
+  }
+}
+
+interface b2RecordContactID extends b2ContactID {}
+Object.setPrototypeOf(b2RecordContactID.prototype, b2ContactID.prototype);
+
+/**
  * A manifold point is a contact point belonging to a contact manifold. It holds details related
  * to the geometry and dynamics of the contact points.
  * The local point usage depends on the manifold type:
@@ -83,25 +153,58 @@ export class b2ContactID extends b2ContactFeature {
  * especially for high speed collisions.
  */
 export class b2ManifoldPoint {
+  /** The record holding this point's doubles, at m_offset (b2ManifoldPointField). */
+  readonly m_record: Float64Array;
+  readonly m_offset: number;
   /** usage depends on manifold type */
-  readonly localPoint = new b2Vec2();
-  /** the non-penetration impulse */
-  normalImpulse = 0.0;
-  /** the friction impulse */
-  tangentImpulse = 0.0;
+  readonly localPoint: b2Vec2;
   /** uniquely identifies a contact point between two shapes */
-  readonly id = new b2ContactID();
+  readonly id: b2ContactID;
+
+  /** A point of its own, or (record, offset) a point of a manifold's record. */
+  constructor(record = new Float64Array(b2ManifoldPointField.stride), offset = 0) {
+    this.m_record = record;
+    this.m_offset = offset;
+    this.localPoint = new b2RecordVec2(record, offset + b2ManifoldPointField.localPointX);
+    this.id = new b2RecordContactID(record, offset + b2ManifoldPointField.key);
+  }
+
+  /** the non-penetration impulse */
+  get normalImpulse(): number {
+    return this.m_record[this.m_offset + b2ManifoldPointField.normalImpulse];
+  }
+
+  set normalImpulse(value: number) {
+    this.m_record[this.m_offset + b2ManifoldPointField.normalImpulse] = value;
+  }
+
+  /** the friction impulse */
+  get tangentImpulse(): number {
+    return this.m_record[this.m_offset + b2ManifoldPointField.tangentImpulse];
+  }
+
+  set tangentImpulse(value: number) {
+    this.m_record[this.m_offset + b2ManifoldPointField.tangentImpulse] = value;
+  }
 
   Clone(): b2ManifoldPoint {
     return new b2ManifoldPoint().Assign(this);
   }
 
   Assign(mp: Readonly<b2ManifoldPoint>): this {
-    this.localPoint.Assign(mp.localPoint);
-    this.normalImpulse = mp.normalImpulse;
-    this.tangentImpulse = mp.tangentImpulse;
-    this.id.Assign(mp.id);
+    for (let i = 0; i < b2ManifoldPointField.stride; ++i) {
+      this.m_record[this.m_offset + i] = mp.m_record[mp.m_offset + i];
+    }
     return this;
+  }
+
+  toJSON(): object {
+    const { localPoint, normalImpulse, tangentImpulse, id } = this;
+    return { localPoint, normalImpulse, tangentImpulse, id };
+  }
+
+  [b2InspectCustom](): object {
+    return this.toJSON();
   }
 }
 
@@ -127,15 +230,31 @@ export class b2Manifold {
   static readonly e_faceA = 1;
   static readonly e_faceB = 2;
 
+  /** The record holding this manifold's doubles, at m_offset (b2ManifoldField). */
+  readonly m_record: Float64Array;
+  readonly m_offset: number;
   /** the points of contact */
-  readonly points: readonly b2ManifoldPoint[] = b2MakeArray(b2_maxManifoldPoints, () => new b2ManifoldPoint());
+  readonly points: readonly b2ManifoldPoint[];
   /** not use for Type::e_points */
-  readonly localNormal = new b2Vec2();
+  readonly localNormal: b2Vec2;
   /** usage depends on manifold type */
-  readonly localPoint = new b2Vec2();
+  readonly localPoint: b2Vec2;
   type = b2Manifold.e_circles;
   /** the number of manifold points */
   pointCount = 0;
+
+  constructor() {
+    const offset = b2ManifoldRecords.Allocate();
+    const record = b2ManifoldRecords.chunk;
+    this.m_record = record;
+    this.m_offset = offset;
+    this.points = b2MakeArray(
+      b2_maxManifoldPoints,
+      (i) => new b2ManifoldPoint(record, offset + b2ManifoldField.points + i * b2ManifoldPointField.stride),
+    );
+    this.localNormal = new b2RecordVec2(record, offset + b2ManifoldField.localNormalX);
+    this.localPoint = new b2RecordVec2(record, offset + b2ManifoldField.localPointX);
+  }
 
   Clone(): b2Manifold {
     return new b2Manifold().Assign(this);
@@ -143,14 +262,21 @@ export class b2Manifold {
 
   /** Deep copy, as the C++ struct assignment. */
   Assign(m: Readonly<b2Manifold>): this {
-    for (let i = 0; i < b2_maxManifoldPoints; ++i) {
-      this.points[i].Assign(m.points[i]);
+    for (let i = 0; i < b2ManifoldField.points + b2_maxManifoldPoints * b2ManifoldPointField.stride; ++i) {
+      this.m_record[this.m_offset + i] = m.m_record[m.m_offset + i];
     }
-    this.localNormal.Assign(m.localNormal);
-    this.localPoint.Assign(m.localPoint);
     this.type = m.type;
     this.pointCount = m.pointCount;
     return this;
+  }
+
+  toJSON(): object {
+    const { points, localNormal, localPoint, type, pointCount } = this;
+    return { points, localNormal, localPoint, type, pointCount };
+  }
+
+  [b2InspectCustom](): object {
+    return this.toJSON();
   }
 }
 

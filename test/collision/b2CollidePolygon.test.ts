@@ -31,11 +31,11 @@ describe('b2CollidePolygons', () => {
     b2CollidePolygons(manifold, ground, new b2Transform(), box, new b2Transform(new b2Vec2(0.0, 0.99)));
     expect(manifold.pointCount).toBe(2);
     expect(manifold.type).toBe(b2Manifold.e_faceA);
-    expect(manifold.localNormal).toEqual(new b2Vec2(0.0, 1.0));
-    expect(manifold.localPoint).toEqual(new b2Vec2(0.0, 0.5));
+    expect(manifold.localNormal.Clone()).toEqual(new b2Vec2(0.0, 1.0));
+    expect(manifold.localPoint.Clone()).toEqual(new b2Vec2(0.0, 0.5));
     // The incident face is the box's bottom face (edge 0, vertices 0 and 1), in B's frame.
-    expect(manifold.points[0].localPoint).toEqual(new b2Vec2(-0.5, -0.5));
-    expect(manifold.points[1].localPoint).toEqual(new b2Vec2(0.5, -0.5));
+    expect(manifold.points[0].localPoint.Clone()).toEqual(new b2Vec2(-0.5, -0.5));
+    expect(manifold.points[1].localPoint.Clone()).toEqual(new b2Vec2(0.5, -0.5));
     expect(manifold.points[0].id.cf).toMatchObject({ indexA: 2, indexB: 0, typeA: 1, typeB: 0 });
     expect(manifold.points[1].id.cf).toMatchObject({ indexA: 2, indexB: 1, typeA: 1, typeB: 0 });
   });

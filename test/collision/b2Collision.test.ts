@@ -98,9 +98,9 @@ describe('b2Manifold', () => {
     a.localNormal.x = -1;
     expect(b.type).toBe(b2Manifold.e_faceB);
     expect(b.pointCount).toBe(2);
-    expect(b.localNormal).toEqual(new b2Vec2(0, 1));
-    expect(b.localPoint).toEqual(new b2Vec2(2, 3));
-    expect(b.points[1].localPoint).toEqual(new b2Vec2(4, 5));
+    expect(b.localNormal.Clone()).toEqual(new b2Vec2(0, 1));
+    expect(b.localPoint.Clone()).toEqual(new b2Vec2(2, 3));
+    expect(b.points[1].localPoint.Clone()).toEqual(new b2Vec2(4, 5));
     expect(b.points[1].normalImpulse).toBe(6);
     expect(b.points[1].tangentImpulse).toBe(7);
     expect(b.points[1].id.key).toBe(0x01000200);

@@ -11,11 +11,21 @@ import * as webphysics from '../../src/index';
 
 type Snapshot = (number | boolean)[];
 
+/**
+ * The names of an object's state: its own enumerable properties, or for an object with toJSON
+ * (the classes whose doubles live in a record, common/b2Record.ts) the names toJSON gives, read
+ * and written through the object's accessors.
+ */
+function stateKeys(value: object): string[] {
+  const toJSON = (value as { toJSON?: () => object }).toJSON;
+  return Object.keys(typeof toJSON === 'function' ? toJSON.call(value) : value);
+}
+
 /** Set every number (distinct small integers, so masked fields keep them) and flip every boolean. */
 function fill(value: unknown, next: { n: number }, depth = 0): void {
   if (depth > 6 || typeof value !== 'object' || value === null) return;
   const record = value as Record<string, unknown>;
-  for (const key of Object.keys(record)) {
+  for (const key of stateKeys(record)) {
     const field = record[key];
     if (typeof field === 'number') {
       try {
@@ -35,7 +45,7 @@ function fill(value: unknown, next: { n: number }, depth = 0): void {
 
 function snapshot(value: unknown, out: Snapshot = [], depth = 0): Snapshot {
   if (depth > 6 || typeof value !== 'object' || value === null) return out;
-  for (const key of Object.keys(value)) {
+  for (const key of stateKeys(value)) {
     const field = (value as Record<string, unknown>)[key];
     if (typeof field === 'number' || typeof field === 'boolean') out.push(field);
     else if (Array.isArray(field)) {
@@ -51,7 +61,7 @@ function snapshot(value: unknown, out: Snapshot = [], depth = 0): Snapshot {
 function objects(value: unknown, out = new Set<object>(), depth = 0): Set<object> {
   if (depth > 6 || typeof value !== 'object' || value === null) return out;
   out.add(value);
-  for (const key of Object.keys(value)) objects((value as Record<string, unknown>)[key], out, depth + 1);
+  for (const key of stateKeys(value)) objects((value as Record<string, unknown>)[key], out, depth + 1);
   return out;
 }
 

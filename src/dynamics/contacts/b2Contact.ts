@@ -8,6 +8,7 @@
  */
 
 import { b2Manifold, b2TestOverlapShapes } from '../../collision/b2Collision';
+import { b2ManifoldField, b2ManifoldPointField } from '../../collision/b2ManifoldRecord';
 import type { b2WorldManifold } from '../../collision/b2Collision';
 import { b2Shape } from '../../collision/shapes/b2Shape';
 import type { b2Transform } from '../../common/b2Math';
@@ -454,6 +455,9 @@ export abstract class b2Contact {
       s_oldManifold.Assign(manifold);
     }
     const oldPointCount = manifold.pointCount;
+    const record = manifold.m_record;
+    const p0 = manifold.m_offset + b2ManifoldField.points;
+    const p1 = p0 + b2ManifoldPointField.stride;
     let oldKey0 = 0;
     let oldNormalImpulse0 = 0.0;
     let oldTangentImpulse0 = 0.0;
@@ -461,15 +465,13 @@ export abstract class b2Contact {
     let oldNormalImpulse1 = 0.0;
     let oldTangentImpulse1 = 0.0;
     if (oldPointCount > 0) {
-      const mp1 = manifold.points[0];
-      oldKey0 = mp1.id.key;
-      oldNormalImpulse0 = mp1.normalImpulse;
-      oldTangentImpulse0 = mp1.tangentImpulse;
+      oldKey0 = record[p0 + b2ManifoldPointField.key];
+      oldNormalImpulse0 = record[p0 + b2ManifoldPointField.normalImpulse];
+      oldTangentImpulse0 = record[p0 + b2ManifoldPointField.tangentImpulse];
       if (oldPointCount > 1) {
-        const mp2 = manifold.points[1];
-        oldKey1 = mp2.id.key;
-        oldNormalImpulse1 = mp2.normalImpulse;
-        oldTangentImpulse1 = mp2.tangentImpulse;
+        oldKey1 = record[p1 + b2ManifoldPointField.key];
+        oldNormalImpulse1 = record[p1 + b2ManifoldPointField.normalImpulse];
+        oldTangentImpulse1 = record[p1 + b2ManifoldPointField.tangentImpulse];
       }
     }
 
@@ -503,18 +505,18 @@ export abstract class b2Contact {
       // Match old contact ids to new contact ids and copy the
       // stored impulses to warm start the solver.
       for (let i = 0; i < manifold.pointCount; ++i) {
-        const mp2 = manifold.points[i];
-        mp2.normalImpulse = 0.0;
-        mp2.tangentImpulse = 0.0;
-        const key2 = mp2.id.key;
+        const mp2 = p0 + i * b2ManifoldPointField.stride;
+        record[mp2 + b2ManifoldPointField.normalImpulse] = 0.0;
+        record[mp2 + b2ManifoldPointField.tangentImpulse] = 0.0;
+        const key2 = record[mp2 + b2ManifoldPointField.key];
 
         // for (j = 0; j < oldManifold.pointCount; ++j): the first old point with this key.
         if (oldPointCount > 0 && oldKey0 === key2) {
-          mp2.normalImpulse = oldNormalImpulse0;
-          mp2.tangentImpulse = oldTangentImpulse0;
+          record[mp2 + b2ManifoldPointField.normalImpulse] = oldNormalImpulse0;
+          record[mp2 + b2ManifoldPointField.tangentImpulse] = oldTangentImpulse0;
         } else if (oldPointCount > 1 && oldKey1 === key2) {
-          mp2.normalImpulse = oldNormalImpulse1;
-          mp2.tangentImpulse = oldTangentImpulse1;
+          record[mp2 + b2ManifoldPointField.normalImpulse] = oldNormalImpulse1;
+          record[mp2 + b2ManifoldPointField.tangentImpulse] = oldTangentImpulse1;
         }
       }
 

@@ -10,6 +10,7 @@
  */
 
 import { b2Manifold } from '../../collision/b2Collision';
+import { b2ManifoldField, b2ManifoldPointField } from '../../collision/b2ManifoldRecord';
 import { b2MakeArray } from '../../common/b2MakeArray';
 import { b2Clamp, b2Mat22, b2Max, b2Min, b2MulRV, b2MulXV, b2Rot, b2SubVV, b2Vec2 } from '../../common/b2Math';
 import type { b2Transform } from '../../common/b2Math';
@@ -86,6 +87,12 @@ export class b2ContactSolverDef {
   count = 0;
   positions = new Float64Array(0);
   velocities = new Float64Array(0);
+  /**
+   * Not in the C++: each island body's inverse mass, inverse rotational inertia and local center
+   * (x, y), four doubles a body, which Initialize reads there rather than from the bodies and their
+   * sweeps: one record for each body, not four heap objects for each of its contacts.
+   */
+  masses = new Float64Array(0);
 }
 
 export class b2PositionSolverManifold {
@@ -377,6 +384,7 @@ export class b2ContactSolver {
     }
     this.m_positions = def.positions;
     this.m_velocities = def.velocities;
+    const masses = def.masses;
     this.m_contacts = def.contacts;
     if (this.m_rotCache.length < this.m_positions.length) {
       this.m_rotCache = new Float64Array(this.m_positions.length).fill(NaN);
@@ -411,12 +419,18 @@ export class b2ContactSolver {
       const scalars = contact.m_scalars;
       vf[o + VcF.friction] = scalars.friction;
       vf[o + VcF.restitution] = scalars.restitution;
-      vi[oi + VcI.indexA] = bodyA.m_islandIndex;
-      vi[oi + VcI.indexB] = bodyB.m_islandIndex;
-      vf[o + VcF.invMassA] = bodyA.m_invMass;
-      vf[o + VcF.invMassB] = bodyB.m_invMass;
-      vf[o + VcF.invIA] = bodyA.m_invI;
-      vf[o + VcF.invIB] = bodyB.m_invI;
+      const indexA = bodyA.m_islandIndex & Mask.index;
+      const indexB = bodyB.m_islandIndex & Mask.index;
+      const invMassA = masses[4 * indexA];
+      const invIA = masses[4 * indexA + 1];
+      const invMassB = masses[4 * indexB];
+      const invIB = masses[4 * indexB + 1];
+      vi[oi + VcI.indexA] = indexA;
+      vi[oi + VcI.indexB] = indexB;
+      vf[o + VcF.invMassA] = invMassA;
+      vf[o + VcF.invMassB] = invMassB;
+      vf[o + VcF.invIA] = invIA;
+      vf[o + VcF.invIB] = invIB;
       vi[oi + VcI.contactIndex] = i;
       vi[oi + VcI.pointCount] = pointCount;
       vf[o + VcF.KExX] = 0.0;
@@ -430,34 +444,34 @@ export class b2ContactSolver {
 
       const q = (i * PcF.stride) & Mask.offset;
       const qi = (i * PcI.stride) & Mask.offset;
-      pi[qi + PcI.indexA] = bodyA.m_islandIndex;
-      pi[qi + PcI.indexB] = bodyB.m_islandIndex;
-      pf[q + PcF.invMassA] = bodyA.m_invMass;
-      pf[q + PcF.invMassB] = bodyB.m_invMass;
-      const localCenterA = bodyA.m_sweep.localCenter;
-      const localCenterB = bodyB.m_sweep.localCenter;
-      pf[q + PcF.localCenterAX] = localCenterA.x;
-      pf[q + PcF.localCenterAY] = localCenterA.y;
-      pf[q + PcF.localCenterBX] = localCenterB.x;
-      pf[q + PcF.localCenterBY] = localCenterB.y;
-      pf[q + PcF.invIA] = bodyA.m_invI;
-      pf[q + PcF.invIB] = bodyB.m_invI;
-      pf[q + PcF.localNormalX] = manifold.localNormal.x;
-      pf[q + PcF.localNormalY] = manifold.localNormal.y;
-      pf[q + PcF.localPointX] = manifold.localPoint.x;
-      pf[q + PcF.localPointY] = manifold.localPoint.y;
+      pi[qi + PcI.indexA] = indexA;
+      pi[qi + PcI.indexB] = indexB;
+      pf[q + PcF.invMassA] = invMassA;
+      pf[q + PcF.invMassB] = invMassB;
+      pf[q + PcF.localCenterAX] = masses[4 * indexA + 2];
+      pf[q + PcF.localCenterAY] = masses[4 * indexA + 3];
+      pf[q + PcF.localCenterBX] = masses[4 * indexB + 2];
+      pf[q + PcF.localCenterBY] = masses[4 * indexB + 3];
+      pf[q + PcF.invIA] = invIA;
+      pf[q + PcF.invIB] = invIB;
+      const record = manifold.m_record;
+      const mo = manifold.m_offset;
+      pf[q + PcF.localNormalX] = record[mo + b2ManifoldField.localNormalX];
+      pf[q + PcF.localNormalY] = record[mo + b2ManifoldField.localNormalY];
+      pf[q + PcF.localPointX] = record[mo + b2ManifoldField.localPointX];
+      pf[q + PcF.localPointY] = record[mo + b2ManifoldField.localPointY];
       pi[qi + PcI.pointCount] = pointCount;
       pf[q + PcF.radiusA] = radiusA;
       pf[q + PcF.radiusB] = radiusB;
       pi[qi + PcI.type] = manifold.type;
 
       for (let j = 0; j < pointCount; ++j) {
-        const cp = manifold.points[j];
+        const mp = mo + b2ManifoldField.points + j * b2ManifoldPointField.stride;
         const op = o + VcF.points + j * VcP.stride;
 
         if (warmStarting) {
-          vf[op + VcP.normalImpulse] = dtRatio * cp.normalImpulse;
-          vf[op + VcP.tangentImpulse] = dtRatio * cp.tangentImpulse;
+          vf[op + VcP.normalImpulse] = dtRatio * record[mp + b2ManifoldPointField.normalImpulse];
+          vf[op + VcP.tangentImpulse] = dtRatio * record[mp + b2ManifoldPointField.tangentImpulse];
         } else {
           vf[op + VcP.normalImpulse] = 0.0;
           vf[op + VcP.tangentImpulse] = 0.0;
@@ -471,8 +485,8 @@ export class b2ContactSolver {
         vf[op + VcP.tangentMass] = 0.0;
         vf[op + VcP.velocityBias] = 0.0;
 
-        pf[q + PcF.localPoint0X + 2 * j] = cp.localPoint.x;
-        pf[q + PcF.localPoint0Y + 2 * j] = cp.localPoint.y;
+        pf[q + PcF.localPoint0X + 2 * j] = record[mp + b2ManifoldPointField.localPointX];
+        pf[q + PcF.localPoint0Y + 2 * j] = record[mp + b2ManifoldPointField.localPointY];
       }
     }
     return this;
@@ -1084,13 +1098,14 @@ export class b2ContactSolver {
       const o = (i * VcF.stride) & Mask.offset;
       const oi = (i * VcI.stride) & Mask.offset;
       const manifold = this.m_contacts[vi[oi + VcI.contactIndex]].GetManifold();
+      const record = manifold.m_record;
 
       const pointCount = vi[oi + VcI.pointCount] & Mask.pointCount;
       for (let j = 0; j < pointCount; ++j) {
         const op = o + VcF.points + j * VcP.stride;
-        const mp = manifold.points[j];
-        mp.normalImpulse = vf[op + VcP.normalImpulse];
-        mp.tangentImpulse = vf[op + VcP.tangentImpulse];
+        const mo = manifold.m_offset + b2ManifoldField.points + j * b2ManifoldPointField.stride;
+        record[mo + b2ManifoldPointField.normalImpulse] = vf[op + VcP.normalImpulse];
+        record[mo + b2ManifoldPointField.tangentImpulse] = vf[op + VcP.tangentImpulse];
       }
     }
   }
