@@ -236,8 +236,6 @@ export class b2ContactManager {
     while (c) {
       const fixtureA = c.GetFixtureA();
       const fixtureB = c.GetFixtureB();
-      const indexA = c.GetChildIndexA();
-      const indexB = c.GetChildIndexB();
       const bodyA = fixtureA.GetBody();
       const bodyB = fixtureB.GetBody();
 
@@ -272,9 +270,9 @@ export class b2ContactManager {
         continue;
       }
 
-      const proxyIdA = fixtureA.m_proxies[indexA].proxyId;
-      const proxyIdB = fixtureB.m_proxies[indexB].proxyId;
-      const overlap = this.m_broadPhase.TestOverlap(proxyIdA, proxyIdB);
+      // fixtureA.m_proxies[indexA].proxyId and fixtureB's, which LinkContact copied into the
+      // contact: a proxy keeps its id until its fixture's contacts are destroyed.
+      const overlap = this.m_broadPhase.TestOverlap(c.m_proxyIdA, c.m_proxyIdB);
 
       // Here we destroy contacts that cease to overlap in the broad-phase.
       if (overlap === false) {

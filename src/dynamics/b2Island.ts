@@ -43,11 +43,6 @@ export class b2Island {
    */
   m_positions = new Float64Array(0);
   m_velocities = new Float64Array(0);
-  /**
-   * Not in the C++: the island bodies' mass data for the contact solver (see b2ContactSolverDef),
-   * four doubles each. Grown with m_positions.
-   */
-  m_masses = new Float64Array(0);
 
   m_bodyCount = 0;
   m_jointCount = 0;
@@ -88,12 +83,10 @@ export class b2Island {
       const newLength = b2Max(bodyCapacity, 2 * length);
       this.m_positions = new Float64Array(3 * newLength);
       this.m_velocities = new Float64Array(3 * newLength);
-      this.m_masses = new Float64Array(4 * newLength);
       this.m_solverData.positions = this.m_positions;
       this.m_solverData.velocities = this.m_velocities;
       this.m_contactSolverDef.positions = this.m_positions;
       this.m_contactSolverDef.velocities = this.m_velocities;
-      this.m_contactSolverDef.masses = this.m_masses;
     }
   }
 
@@ -399,15 +392,6 @@ export class b2Island {
 
   /** The C++ constructs a b2ContactSolver here; the island re-initialises its own. */
   private CreateContactSolver(step: Readonly<b2TimeStep>): b2ContactSolver {
-    const masses = this.m_masses;
-    for (let i = 0; i < this.m_bodyCount; ++i) {
-      const b = this.m_bodies[i];
-      const localCenter = b.m_sweep.localCenter;
-      masses[4 * i] = b.m_invMass;
-      masses[4 * i + 1] = b.m_invI;
-      masses[4 * i + 2] = localCenter.x;
-      masses[4 * i + 3] = localCenter.y;
-    }
     const def = this.m_contactSolverDef;
     def.step.Assign(step);
     def.count = this.m_contactCount;

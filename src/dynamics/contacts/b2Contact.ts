@@ -131,6 +131,16 @@ export abstract class b2Contact {
   m_prev: b2Contact | null = null;
   m_next: b2Contact | null = null;
 
+  /**
+   * Not in the C++: the broad-phase proxies of fixture A's and fixture B's children while the
+   * contact is linked into a world (b2ContactManager.LinkContact), -1 otherwise. The world's pair
+   * set is keyed on them, b2ContactManager.Collide reads them rather than the fixtures' proxies
+   * (next to m_flags and m_next, which it also reads), and b2Body.SetActive destroys the proxies
+   * before the contacts.
+   */
+  m_proxyIdA = -1;
+  m_proxyIdB = -1;
+
   // Nodes for connecting bodies.
   readonly m_nodeA: b2ContactEdge;
   readonly m_nodeB: b2ContactEdge;
@@ -155,15 +165,6 @@ export abstract class b2Contact {
   /** Not in the C++: the storage of m_toi, m_friction and m_restitution (see b2ContactScalars). */
   readonly m_scalars = new b2ContactScalars();
 
-  /**
-   * Not in the C++: the broad-phase proxies of fixture A's and fixture B's children while the
-   * contact is linked into a world (b2ContactManager.LinkContact), -1 otherwise. The world's pair
-   * set is keyed on them, and b2Body.SetActive destroys the proxies before the contacts. Set last
-   * in the constructor: V8 lays fields out in the order they are first set, and these, read only
-   * when a contact is linked or destroyed, then sit past the 128 bytes the per-step passes read.
-   */
-  m_proxyIdA: number;
-  m_proxyIdB: number;
 
   // The C++ leaves m_toi uninitialised; b2World.SolveTOI writes it before any read.
   get m_toi(): number {
@@ -191,8 +192,6 @@ export abstract class b2Contact {
     this.m_nodeA = new b2ContactEdge(this, fixtureB.GetBody());
     this.m_nodeB = new b2ContactEdge(this, fixtureA.GetBody());
     this.Init(fixtureA, indexA, fixtureB, indexB);
-    this.m_proxyIdA = -1;
-    this.m_proxyIdB = -1;
   }
 
   /**

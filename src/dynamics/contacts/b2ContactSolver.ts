@@ -87,12 +87,6 @@ export class b2ContactSolverDef {
   count = 0;
   positions = new Float64Array(0);
   velocities = new Float64Array(0);
-  /**
-   * Not in the C++: each island body's inverse mass, inverse rotational inertia and local center
-   * (x, y), four doubles a body, which Initialize reads there rather than from the bodies and their
-   * sweeps: one record for each body, not four heap objects for each of its contacts.
-   */
-  masses = new Float64Array(0);
 }
 
 export class b2PositionSolverManifold {
@@ -384,7 +378,6 @@ export class b2ContactSolver {
     }
     this.m_positions = def.positions;
     this.m_velocities = def.velocities;
-    const masses = def.masses;
     this.m_contacts = def.contacts;
     if (this.m_rotCache.length < this.m_positions.length) {
       this.m_rotCache = new Float64Array(this.m_positions.length).fill(NaN);
@@ -419,18 +412,12 @@ export class b2ContactSolver {
       const scalars = contact.m_scalars;
       vf[o + VcF.friction] = scalars.friction;
       vf[o + VcF.restitution] = scalars.restitution;
-      const indexA = bodyA.m_islandIndex & Mask.index;
-      const indexB = bodyB.m_islandIndex & Mask.index;
-      const invMassA = masses[4 * indexA];
-      const invIA = masses[4 * indexA + 1];
-      const invMassB = masses[4 * indexB];
-      const invIB = masses[4 * indexB + 1];
-      vi[oi + VcI.indexA] = indexA;
-      vi[oi + VcI.indexB] = indexB;
-      vf[o + VcF.invMassA] = invMassA;
-      vf[o + VcF.invMassB] = invMassB;
-      vf[o + VcF.invIA] = invIA;
-      vf[o + VcF.invIB] = invIB;
+      vi[oi + VcI.indexA] = bodyA.m_islandIndex;
+      vi[oi + VcI.indexB] = bodyB.m_islandIndex;
+      vf[o + VcF.invMassA] = bodyA.m_invMass;
+      vf[o + VcF.invMassB] = bodyB.m_invMass;
+      vf[o + VcF.invIA] = bodyA.m_invI;
+      vf[o + VcF.invIB] = bodyB.m_invI;
       vi[oi + VcI.contactIndex] = i;
       vi[oi + VcI.pointCount] = pointCount;
       vf[o + VcF.KExX] = 0.0;
@@ -444,16 +431,18 @@ export class b2ContactSolver {
 
       const q = (i * PcF.stride) & Mask.offset;
       const qi = (i * PcI.stride) & Mask.offset;
-      pi[qi + PcI.indexA] = indexA;
-      pi[qi + PcI.indexB] = indexB;
-      pf[q + PcF.invMassA] = invMassA;
-      pf[q + PcF.invMassB] = invMassB;
-      pf[q + PcF.localCenterAX] = masses[4 * indexA + 2];
-      pf[q + PcF.localCenterAY] = masses[4 * indexA + 3];
-      pf[q + PcF.localCenterBX] = masses[4 * indexB + 2];
-      pf[q + PcF.localCenterBY] = masses[4 * indexB + 3];
-      pf[q + PcF.invIA] = invIA;
-      pf[q + PcF.invIB] = invIB;
+      pi[qi + PcI.indexA] = bodyA.m_islandIndex;
+      pi[qi + PcI.indexB] = bodyB.m_islandIndex;
+      pf[q + PcF.invMassA] = bodyA.m_invMass;
+      pf[q + PcF.invMassB] = bodyB.m_invMass;
+      const localCenterA = bodyA.m_sweep.localCenter;
+      const localCenterB = bodyB.m_sweep.localCenter;
+      pf[q + PcF.localCenterAX] = localCenterA.x;
+      pf[q + PcF.localCenterAY] = localCenterA.y;
+      pf[q + PcF.localCenterBX] = localCenterB.x;
+      pf[q + PcF.localCenterBY] = localCenterB.y;
+      pf[q + PcF.invIA] = bodyA.m_invI;
+      pf[q + PcF.invIB] = bodyB.m_invI;
       const record = manifold.m_record;
       const mo = manifold.m_offset;
       pf[q + PcF.localNormalX] = record[mo + b2ManifoldField.localNormalX];

@@ -55,8 +55,8 @@ function makeIsland(options: IslandOptions) {
   });
 
   const shape = { m_radius: 0.0 };
-  const bodyA = { m_islandIndex: 0 };
-  const bodyB = { m_islandIndex: 1 };
+  const bodyA = { m_islandIndex: 0, m_invMass: options.invMassA ?? 0.0, m_invI: options.invIA ?? 0.0, m_sweep: { localCenter: new b2Vec2() } };
+  const bodyB = { m_islandIndex: 1, m_invMass: 1.0, m_invI: 6.0, m_sweep: { localCenter: new b2Vec2() } };
   const contact = {
     m_fixtureA: { GetShape: () => shape, GetBody: () => bodyA },
     m_fixtureB: { GetShape: () => shape, GetBody: () => bodyB },
@@ -71,8 +71,6 @@ function makeIsland(options: IslandOptions) {
   velocityData[3] = options.vB[0];
   velocityData[4] = options.vB[1];
   velocityData[5] = options.wB ?? 0.0;
-  // The island's mass records: inverse mass, inverse inertia and local center, four doubles a body.
-  const massData = Float64Array.of(options.invMassA ?? 0.0, options.invIA ?? 0.0, 0.0, 0.0, 1.0, 6.0, 0.0, 0.0);
 
   const def = new b2ContactSolverDef();
   def.step.dt = 1.0 / 60.0;
@@ -83,7 +81,6 @@ function makeIsland(options: IslandOptions) {
   def.count = 1;
   def.positions = positionData;
   def.velocities = velocityData;
-  def.masses = massData;
 
   const solver = new b2ContactSolver(def);
   // The records read as the C++ structs: positions[i].c.y, velocities[i].w...
@@ -95,7 +92,7 @@ function makeIsland(options: IslandOptions) {
     v: { get x() { return velocityData[3 * i]; }, get y() { return velocityData[3 * i + 1]; } },
     get w() { return velocityData[3 * i + 2]; },
   }));
-  return { solver, manifold, positions, velocities, positionData, velocityData, massData };
+  return { solver, manifold, positions, velocities, positionData, velocityData };
 }
 
 const digits = 12;
@@ -258,7 +255,6 @@ describe('b2ContactSolver warm starting and impulse storage', () => {
     def.count = 1;
     def.positions = second.positionData;
     def.velocities = second.velocityData;
-    def.masses = second.massData;
     first.solver.Initialize(def);
     expect(first.solver.m_velocityConstraints[0]).toBe(constraint);
     expect(constraint.K.ex.x).toBe(0.0);
