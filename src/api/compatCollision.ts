@@ -274,7 +274,10 @@ defineAccessor(b2ManifoldPoint.prototype, 'm_id', function () {
 });
 defineMethods(b2ManifoldPoint.prototype, {
   Reset() {
-    this.localPoint.SetZero();
+    // Coordinates written one by one: the vector is a view onto the manifold's record, which
+    // engine code keeps away from b2Vec2's methods (docs/PORTING.md, records).
+    this.localPoint.x = 0.0;
+    this.localPoint.y = 0.0;
     this.normalImpulse = 0.0;
     this.tangentImpulse = 0.0;
     this.id.key = 0;
@@ -295,8 +298,10 @@ defineAccessor(b2Manifold.prototype, 'm_points', function () {
 defineMethods(b2Manifold.prototype, {
   Reset() {
     for (const point of this.points) point.Reset();
-    this.localNormal.SetZero();
-    this.localPoint.SetZero();
+    this.localNormal.x = 0.0;
+    this.localNormal.y = 0.0;
+    this.localPoint.x = 0.0;
+    this.localPoint.y = 0.0;
     this.type = b2Manifold.e_circles;
     this.pointCount = 0;
   },

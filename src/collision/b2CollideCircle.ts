@@ -2,16 +2,19 @@
  * Circle-circle and polygon-circle manifolds (b2CollideCircle.cpp).
  */
 
-import { b2MulTXV, b2MulXV, b2Vec2 } from '../common/b2Math';
+import { b2MulTXV, b2MulXV, b2Vec2, b2Vec2_zero } from '../common/b2Math';
 import type { b2Transform } from '../common/b2Math';
 import { b2_epsilon, b2_maxFloat } from '../common/b2Settings';
 import { b2Manifold } from './b2Collision';
+import { b2SetManifoldFace, b2SetManifoldPoint } from './b2ManifoldRecord';
 import type { b2CircleShape } from './shapes/b2CircleShape';
 import type { b2PolygonShape } from './shapes/b2PolygonShape';
 
 const s_pA = new b2Vec2();
 const s_pB = new b2Vec2();
 const s_cLocal = new b2Vec2();
+const s_normal = new b2Vec2();
+const s_faceCenter = new b2Vec2();
 
 /** Compute the collision manifold between two circles. */
 export function b2CollideCircles(
@@ -37,12 +40,10 @@ export function b2CollideCircles(
   }
 
   manifold.type = b2Manifold.e_circles;
-  manifold.localPoint.Assign(circleA.m_p);
-  manifold.localNormal.SetZero();
+  b2SetManifoldFace(manifold, b2Vec2_zero, circleA.m_p);
   manifold.pointCount = 1;
 
-  manifold.points[0].localPoint.Assign(circleB.m_p);
-  manifold.points[0].id.key = 0;
+  b2SetManifoldPoint(manifold, 0, circleB.m_p, 0);
 }
 
 /** Compute the collision manifold between a polygon and a circle. */
@@ -95,10 +96,8 @@ export function b2CollidePolygonAndCircle(
   if (separation < b2_epsilon) {
     manifold.pointCount = 1;
     manifold.type = b2Manifold.e_faceA;
-    manifold.localNormal.Assign(normals[normalIndex]);
-    manifold.localPoint.Set(0.5 * (v1.x + v2.x), 0.5 * (v1.y + v2.y));
-    manifold.points[0].localPoint.Assign(circleB.m_p);
-    manifold.points[0].id.key = 0;
+    b2SetManifoldFace(manifold, normals[normalIndex], s_faceCenter.Set(0.5 * (v1.x + v2.x), 0.5 * (v1.y + v2.y)));
+    b2SetManifoldPoint(manifold, 0, circleB.m_p, 0);
     return;
   }
 
@@ -114,11 +113,10 @@ export function b2CollidePolygonAndCircle(
 
     manifold.pointCount = 1;
     manifold.type = b2Manifold.e_faceA;
-    manifold.localNormal.Set(cx - v1.x, cy - v1.y);
-    manifold.localNormal.Normalize();
-    manifold.localPoint.Assign(v1);
-    manifold.points[0].localPoint.Assign(circleB.m_p);
-    manifold.points[0].id.key = 0;
+    const n = s_normal.Set(cx - v1.x, cy - v1.y);
+    n.Normalize();
+    b2SetManifoldFace(manifold, n, v1);
+    b2SetManifoldPoint(manifold, 0, circleB.m_p, 0);
   } else if (u2 <= 0.0) {
     const dx = cx - v2.x;
     const dy = cy - v2.y;
@@ -128,11 +126,10 @@ export function b2CollidePolygonAndCircle(
 
     manifold.pointCount = 1;
     manifold.type = b2Manifold.e_faceA;
-    manifold.localNormal.Set(cx - v2.x, cy - v2.y);
-    manifold.localNormal.Normalize();
-    manifold.localPoint.Assign(v2);
-    manifold.points[0].localPoint.Assign(circleB.m_p);
-    manifold.points[0].id.key = 0;
+    const n = s_normal.Set(cx - v2.x, cy - v2.y);
+    n.Normalize();
+    b2SetManifoldFace(manifold, n, v2);
+    b2SetManifoldPoint(manifold, 0, circleB.m_p, 0);
   } else {
     const faceCenterX = 0.5 * (v1.x + v2.x);
     const faceCenterY = 0.5 * (v1.y + v2.y);
@@ -144,9 +141,7 @@ export function b2CollidePolygonAndCircle(
 
     manifold.pointCount = 1;
     manifold.type = b2Manifold.e_faceA;
-    manifold.localNormal.Assign(n1);
-    manifold.localPoint.Set(faceCenterX, faceCenterY);
-    manifold.points[0].localPoint.Assign(circleB.m_p);
-    manifold.points[0].id.key = 0;
+    b2SetManifoldFace(manifold, n1, s_faceCenter.Set(faceCenterX, faceCenterY));
+    b2SetManifoldPoint(manifold, 0, circleB.m_p, 0);
   }
 }

@@ -4,7 +4,7 @@
  */
 
 import { b2MakeArray } from '../common/b2MakeArray';
-import { b2Min, b2MulRV, b2MulTXV, b2MulTXX, b2MulXV, b2Transform, b2Vec2 } from '../common/b2Math';
+import { b2Min, b2MulRV, b2MulTXV, b2MulTXX, b2MulXV, b2Transform, b2Vec2, b2Vec2_zero } from '../common/b2Math';
 import {
   b2_angularSlop,
   b2_maxFloat,
@@ -13,13 +13,18 @@ import {
   b2_polygonRadius,
   b2Assert,
 } from '../common/b2Settings';
-import { b2ClipSegment, b2ClipSegmentOffset, b2ClipVertex, b2ContactFeature, b2Manifold } from './b2Collision';
+import { b2ClipSegment, b2ClipSegmentOffset, b2ClipVertex, b2ContactFeature, b2ContactID, b2Manifold } from './b2Collision';
+import { b2SetManifoldFace, b2SetManifoldPoint } from './b2ManifoldRecord';
 import type { b2CircleShape } from './shapes/b2CircleShape';
 import type { b2EdgeShape } from './shapes/b2EdgeShape';
 import type { b2PolygonShape } from './shapes/b2PolygonShape';
 
 const s_pB = new b2Vec2();
 const s_Q = new b2Vec2();
+const s_normal = new b2Vec2();
+const s_localPoint = new b2Vec2();
+/** The feature bytes of the point being written, whose key goes to the manifold's record. */
+const s_cf = new b2ContactID();
 
 /**
  * Compute contact points for edge versus circle.
@@ -50,7 +55,7 @@ export function b2CollideEdgeAndCircle(
 
   // The C++ builds the feature in a local b2ContactFeature cf; indexB and typeB are always
   // 0 and e_vertex here.
-  const point = manifold.points[0];
+  const cf = s_cf;
 
   // Region A
   if (v <= 0.0) {
@@ -78,11 +83,9 @@ export function b2CollideEdgeAndCircle(
 
     manifold.pointCount = 1;
     manifold.type = b2Manifold.e_circles;
-    manifold.localNormal.SetZero();
-    manifold.localPoint.Assign(P);
-    point.id.key = 0;
-    setFeature(point.id, 0, 0, b2ContactFeature.e_vertex, b2ContactFeature.e_vertex);
-    point.localPoint.Assign(circleB.m_p);
+    b2SetManifoldFace(manifold, b2Vec2_zero, P);
+    setFeature(cf, 0, 0, b2ContactFeature.e_vertex, b2ContactFeature.e_vertex);
+    b2SetManifoldPoint(manifold, 0, circleB.m_p, cf.key);
     return;
   }
 
@@ -112,11 +115,9 @@ export function b2CollideEdgeAndCircle(
 
     manifold.pointCount = 1;
     manifold.type = b2Manifold.e_circles;
-    manifold.localNormal.SetZero();
-    manifold.localPoint.Assign(P);
-    point.id.key = 0;
-    setFeature(point.id, 1, 0, b2ContactFeature.e_vertex, b2ContactFeature.e_vertex);
-    point.localPoint.Assign(circleB.m_p);
+    b2SetManifoldFace(manifold, b2Vec2_zero, P);
+    setFeature(cf, 1, 0, b2ContactFeature.e_vertex, b2ContactFeature.e_vertex);
+    b2SetManifoldPoint(manifold, 0, circleB.m_p, cf.key);
     return;
   }
 
@@ -132,7 +133,7 @@ export function b2CollideEdgeAndCircle(
     return;
   }
 
-  const n = manifold.localNormal.Set(-ey, ex);
+  const n = s_normal.Set(-ey, ex);
   if (n.x * (Q.x - A.x) + n.y * (Q.y - A.y) < 0.0) {
     n.Set(-n.x, -n.y);
   }
@@ -140,10 +141,9 @@ export function b2CollideEdgeAndCircle(
 
   manifold.pointCount = 1;
   manifold.type = b2Manifold.e_faceA;
-  manifold.localPoint.Assign(A);
-  point.id.key = 0;
-  setFeature(point.id, 0, 0, b2ContactFeature.e_face, b2ContactFeature.e_vertex);
-  point.localPoint.Assign(circleB.m_p);
+  b2SetManifoldFace(manifold, n, A);
+  setFeature(cf, 0, 0, b2ContactFeature.e_face, b2ContactFeature.e_vertex);
+  b2SetManifoldPoint(manifold, 0, circleB.m_p, cf.key);
 }
 
 /** cf = {indexA, indexB, typeA, typeB} */
@@ -523,11 +523,9 @@ class b2EPCollider {
 
     // Now clipPoints2 contains the clipped points.
     if (primaryAxis.type === b2EPAxis.e_edgeA) {
-      manifold.localNormal.Assign(rf.normal);
-      manifold.localPoint.Assign(rf.v1);
+      b2SetManifoldFace(manifold, rf.normal, rf.v1);
     } else {
-      manifold.localNormal.Assign(polygonB.m_normals[rf.i1]);
-      manifold.localPoint.Assign(polygonB.m_vertices[rf.i1]);
+      b2SetManifoldFace(manifold, polygonB.m_normals[rf.i1], polygonB.m_vertices[rf.i1]);
     }
 
     let pointCount = 0;
@@ -536,15 +534,12 @@ class b2EPCollider {
       const separation = rf.normal.x * (clipPoint.v.x - rf.v1.x) + rf.normal.y * (clipPoint.v.y - rf.v1.y);
 
       if (separation <= this.m_radius) {
-        const cp = manifold.points[pointCount];
-
         if (primaryAxis.type === b2EPAxis.e_edgeA) {
-          b2MulTXV(xf, clipPoint.v, cp.localPoint);
-          cp.id.Assign(clipPoint.id);
+          b2SetManifoldPoint(manifold, pointCount, b2MulTXV(xf, clipPoint.v, s_localPoint), clipPoint.id.key);
         } else {
-          cp.localPoint.Assign(clipPoint.v);
           const cf = clipPoint.id;
-          setFeature(cp.id, cf.indexB, cf.indexA, cf.typeB, cf.typeA);
+          setFeature(s_cf, cf.indexB, cf.indexA, cf.typeB, cf.typeA);
+          b2SetManifoldPoint(manifold, pointCount, clipPoint.v, s_cf.key);
         }
 
         ++pointCount;

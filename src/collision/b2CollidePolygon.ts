@@ -7,7 +7,6 @@ import type { b2Transform } from '../common/b2Math';
 import { b2_maxFloat, b2_maxManifoldPoints, b2Assert } from '../common/b2Settings';
 import { b2ClipSegment, b2ClipSegmentOffset, b2ClipVertex, b2ContactFeature, b2Manifold } from './b2Collision';
 import { b2ManifoldField, b2ManifoldPointField } from './b2ManifoldRecord';
-import { b2PolygonField } from './shapes/b2PolygonShape';
 import type { b2PolygonShape } from './shapes/b2PolygonShape';
 
 // The separations the two functions below compute are returned in these slots: a double returned
@@ -27,15 +26,12 @@ function b2EdgeSeparation(
   xf2: Readonly<b2Transform>,
 ): void {
   const count2 = poly2.m_vertexCount;
-  const r1 = poly1.m_record;
-  const o1 = poly1.m_offset + b2PolygonField.vertexStride * edge1;
-  const r2 = poly2.m_record;
-  const o2 = poly2.m_offset;
+  const vertices2 = poly2.m_vertices;
 
   b2Assert(0 <= edge1 && edge1 < poly1.m_vertexCount);
 
-  // The transforms' parts in locals: V8 inlines a function only up to 460 bytes of bytecode, and
-  // each repeated xf.q.c is two property loads.
+  // The transforms' parts in locals, poly1's arrays read where used: V8 inlines a function only up
+  // to 460 bytes of bytecode, and each repeated xf.q.c is two property loads.
   const q1c = xf1.q.c;
   const q1s = xf1.q.s;
   const p1 = xf1.p;
@@ -44,10 +40,9 @@ function b2EdgeSeparation(
   const p2 = xf2.p;
 
   // Convert normal from poly1's frame into poly2's frame.
-  const nx = r1[o1 + b2PolygonField.normals];
-  const ny = r1[o1 + b2PolygonField.normals + 1];
-  const normal1WorldX = q1c * nx - q1s * ny;
-  const normal1WorldY = q1s * nx + q1c * ny;
+  const n = poly1.m_normals[edge1];
+  const normal1WorldX = q1c * n.x - q1s * n.y;
+  const normal1WorldY = q1s * n.x + q1c * n.y;
   const normal1X = q2c * normal1WorldX + q2s * normal1WorldY;
   const normal1Y = -q2s * normal1WorldX + q2c * normal1WorldY;
 
@@ -56,23 +51,20 @@ function b2EdgeSeparation(
   let minDot = +b2_maxFloat; // unary plus: docs/PORTING.md
 
   for (let i = 0; i < count2; ++i) {
-    const v = o2 + b2PolygonField.vertexStride * i;
-    const dot = r2[v] * normal1X + r2[v + 1] * normal1Y;
+    const v = vertices2[i];
+    const dot = v.x * normal1X + v.y * normal1Y;
     if (dot < minDot) {
       minDot = dot;
       index = i;
     }
   }
 
-  const ax = r1[o1 + b2PolygonField.vertices];
-  const ay = r1[o1 + b2PolygonField.vertices + 1];
-  const v1x = q1c * ax - q1s * ay + p1.x;
-  const v1y = q1s * ax + q1c * ay + p1.y;
-  const b = o2 + b2PolygonField.vertexStride * index;
-  const bx = r2[b];
-  const by = r2[b + 1];
-  const v2x = q2c * bx - q2s * by + p2.x;
-  const v2y = q2s * bx + q2c * by + p2.y;
+  const a = poly1.m_vertices[edge1];
+  const v1x = q1c * a.x - q1s * a.y + p1.x;
+  const v1y = q1s * a.x + q1c * a.y + p1.y;
+  const b = vertices2[index];
+  const v2x = q2c * b.x - q2s * b.y + p2.x;
+  const v2y = q2s * b.x + q2c * b.y + p2.y;
   const separation = (v2x - v1x) * normal1WorldX + (v2y - v1y) * normal1WorldY;
   s_edgeSeparation[0] = separation;
 }
@@ -89,18 +81,13 @@ function b2FindMaxSeparation(
   xf2: Readonly<b2Transform>,
 ): void {
   const count1 = poly1.m_vertexCount;
-  const r1 = poly1.m_record;
-  const o1 = poly1.m_offset;
-  const r2 = poly2.m_record;
-  const o2 = poly2.m_offset;
+  const normals1 = poly1.m_normals;
 
   // Vector pointing from the centroid of poly1 to the centroid of poly2.
-  const c2x = r2[o2 + b2PolygonField.centroidX];
-  const c2y = r2[o2 + b2PolygonField.centroidY];
-  const c1x = r1[o1 + b2PolygonField.centroidX];
-  const c1y = r1[o1 + b2PolygonField.centroidY];
-  const dx = xf2.q.c * c2x - xf2.q.s * c2y + xf2.p.x - (xf1.q.c * c1x - xf1.q.s * c1y + xf1.p.x);
-  const dy = xf2.q.s * c2x + xf2.q.c * c2y + xf2.p.y - (xf1.q.s * c1x + xf1.q.c * c1y + xf1.p.y);
+  const c2 = poly2.m_centroid;
+  const c1 = poly1.m_centroid;
+  const dx = xf2.q.c * c2.x - xf2.q.s * c2.y + xf2.p.x - (xf1.q.c * c1.x - xf1.q.s * c1.y + xf1.p.x);
+  const dy = xf2.q.s * c2.x + xf2.q.c * c2.y + xf2.p.y - (xf1.q.s * c1.x + xf1.q.c * c1.y + xf1.p.y);
   const dLocal1X = xf1.q.c * dx + xf1.q.s * dy;
   const dLocal1Y = -xf1.q.s * dx + xf1.q.c * dy;
 
@@ -108,8 +95,7 @@ function b2FindMaxSeparation(
   let edge = 0;
   let maxDot = -b2_maxFloat;
   for (let i = 0; i < count1; ++i) {
-    const n = o1 + b2PolygonField.normals + b2PolygonField.vertexStride * i;
-    const dot = r1[n] * dLocal1X + r1[n + 1] * dLocal1Y;
+    const dot = normals1[i].x * dLocal1X + normals1[i].y * dLocal1Y;
     if (dot > maxDot) {
       maxDot = dot;
       edge = i;
@@ -176,20 +162,18 @@ function b2FindIncidentEdge(
   poly2: Readonly<b2PolygonShape>,
   xf2: Readonly<b2Transform>,
 ): void {
-  const r1 = poly1.m_record;
-  const n = poly1.m_offset + b2PolygonField.normals + b2PolygonField.vertexStride * edge1;
+  const normals1 = poly1.m_normals;
 
   const count2 = poly2.m_vertexCount;
-  const r2 = poly2.m_record;
-  const o2 = poly2.m_offset;
+  const vertices2 = poly2.m_vertices;
+  const normals2 = poly2.m_normals;
 
   b2Assert(0 <= edge1 && edge1 < poly1.m_vertexCount);
 
   // Get the normal of the reference edge in poly2's frame.
-  const nx = r1[n];
-  const ny = r1[n + 1];
-  const wx = xf1.q.c * nx - xf1.q.s * ny;
-  const wy = xf1.q.s * nx + xf1.q.c * ny;
+  const n = normals1[edge1];
+  const wx = xf1.q.c * n.x - xf1.q.s * n.y;
+  const wy = xf1.q.s * n.x + xf1.q.c * n.y;
   const normal1X = xf2.q.c * wx + xf2.q.s * wy;
   const normal1Y = -xf2.q.s * wx + xf2.q.c * wy;
 
@@ -197,8 +181,7 @@ function b2FindIncidentEdge(
   let index = 0;
   let minDot = +b2_maxFloat; // unary plus: docs/PORTING.md
   for (let i = 0; i < count2; ++i) {
-    const n2 = o2 + b2PolygonField.normals + b2PolygonField.vertexStride * i;
-    const dot = normal1X * r2[n2] + normal1Y * r2[n2 + 1];
+    const dot = normal1X * normals2[i].x + normal1Y * normals2[i].y;
     if (dot < minDot) {
       minDot = dot;
       index = i;
@@ -209,23 +192,19 @@ function b2FindIncidentEdge(
   const i1 = index;
   const i2 = i1 + 1 < count2 ? i1 + 1 : 0;
 
-  const a = o2 + b2PolygonField.vertexStride * i1;
-  const ax = r2[a];
-  const ay = r2[a + 1];
+  const a = vertices2[i1];
   const c0 = c[0];
-  c0.v.x = xf2.q.c * ax - xf2.q.s * ay + xf2.p.x;
-  c0.v.y = xf2.q.s * ax + xf2.q.c * ay + xf2.p.y;
+  c0.v.x = xf2.q.c * a.x - xf2.q.s * a.y + xf2.p.x;
+  c0.v.y = xf2.q.s * a.x + xf2.q.c * a.y + xf2.p.y;
   c0.id.indexA = edge1 & 0xff;
   c0.id.indexB = i1 & 0xff;
   c0.id.typeA = b2ContactFeature.e_face;
   c0.id.typeB = b2ContactFeature.e_vertex;
 
-  const b = o2 + b2PolygonField.vertexStride * i2;
-  const bx = r2[b];
-  const by = r2[b + 1];
+  const b = vertices2[i2];
   const c1 = c[1];
-  c1.v.x = xf2.q.c * bx - xf2.q.s * by + xf2.p.x;
-  c1.v.y = xf2.q.s * bx + xf2.q.c * by + xf2.p.y;
+  c1.v.x = xf2.q.c * b.x - xf2.q.s * b.y + xf2.p.x;
+  c1.v.y = xf2.q.s * b.x + xf2.q.c * b.y + xf2.p.y;
   c1.id.indexA = edge1 & 0xff;
   c1.id.indexB = i2 & 0xff;
   c1.id.typeA = b2ContactFeature.e_face;
@@ -303,27 +282,22 @@ export function b2CollidePolygons(
   b2FindIncidentEdge(incidentEdge, poly1, xf1, edge1, poly2, xf2);
 
   const count1 = poly1.m_vertexCount;
-  const r1 = poly1.m_record;
+  const vertices1 = poly1.m_vertices;
 
   const iv1 = edge1;
   const iv2 = edge1 + 1 < count1 ? edge1 + 1 : 0;
 
-  // The reference edge's vertices in poly1's frame (l11, l12) and in the world (v11, v12).
-  const a11 = poly1.m_offset + b2PolygonField.vertexStride * iv1;
-  const a12 = poly1.m_offset + b2PolygonField.vertexStride * iv2;
-  const l11x = r1[a11];
-  const l11y = r1[a11 + 1];
-  const l12x = r1[a12];
-  const l12y = r1[a12 + 1];
+  const v11 = vertices1[iv1];
+  const v12 = vertices1[iv2];
 
-  const localTangent = s_localTangent.Set(l12x - l11x, l12y - l11y);
+  const localTangent = s_localTangent.Set(v12.x - v11.x, v12.y - v11.y);
   localTangent.Normalize();
 
   // b2Cross(localTangent, 1.0)
   const localNormalX = 1.0 * localTangent.y;
   const localNormalY = -1.0 * localTangent.x;
-  const planePointX = 0.5 * (l11x + l12x);
-  const planePointY = 0.5 * (l11y + l12y);
+  const planePointX = 0.5 * (v11.x + v12.x);
+  const planePointY = 0.5 * (v11.y + v12.y);
 
   const qc = xf1.q.c;
   const qs = xf1.q.s;
@@ -332,10 +306,10 @@ export function b2CollidePolygons(
   const normalX = 1.0 * tangentY;
   const normalY = -1.0 * tangentX;
 
-  const v11x = qc * l11x - qs * l11y + xf1.p.x;
-  const v11y = qs * l11x + qc * l11y + xf1.p.y;
-  const v12x = qc * l12x - qs * l12y + xf1.p.x;
-  const v12y = qs * l12x + qc * l12y + xf1.p.y;
+  const v11x = qc * v11.x - qs * v11.y + xf1.p.x;
+  const v11y = qs * v11.x + qc * v11.y + xf1.p.y;
+  const v12x = qc * v12.x - qs * v12.y + xf1.p.x;
+  const v12y = qs * v12.x + qc * v12.y + xf1.p.y;
 
   // Face offset.
   const frontOffset = normalX * v11x + normalY * v11y;

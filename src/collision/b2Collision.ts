@@ -8,7 +8,7 @@ import { b2Abs, b2Max, b2Min, b2MulRV, b2MulXV, b2Vec2 } from '../common/b2Math'
 import type { b2Transform } from '../common/b2Math';
 import { b2_epsilon, b2_maxFloat, b2_maxManifoldPoints } from '../common/b2Settings';
 import { b2Distance, b2DistanceInput, b2DistanceOutput, b2SimplexCache } from './b2Distance';
-import { b2InspectCustom, b2RecordVec2 } from '../common/b2Record';
+import { b2InspectAsJSON, b2RecordVec2 } from '../common/b2Record';
 import { b2ManifoldField, b2ManifoldPointField, b2ManifoldRecords } from './b2ManifoldRecord';
 import type { b2Shape } from './shapes/b2Shape';
 
@@ -127,10 +127,6 @@ class b2RecordContactID {
     return { indexA: this.indexA, indexB: this.indexB, typeA: this.typeA, typeB: this.typeB };
   }
 
-  [b2InspectCustom](): { indexA: number; indexB: number; typeA: number; typeB: number } {
-    return this.toJSON();
-  }
-
   /** Replace the key's byte at this bit shift (the C++ writes a uint8 of the union). */
   private SetByte(shift: number, value: number): void {
     const key = this.m_record[this.m_offset];
@@ -140,6 +136,7 @@ class b2RecordContactID {
 
 interface b2RecordContactID extends b2ContactID {}
 Object.setPrototypeOf(b2RecordContactID.prototype, b2ContactID.prototype);
+b2InspectAsJSON(b2RecordContactID);
 
 /**
  * A manifold point is a contact point belonging to a contact manifold. It holds details related
@@ -202,11 +199,8 @@ export class b2ManifoldPoint {
     const { localPoint, normalImpulse, tangentImpulse, id } = this;
     return { localPoint, normalImpulse, tangentImpulse, id };
   }
-
-  [b2InspectCustom](): object {
-    return this.toJSON();
-  }
 }
+b2InspectAsJSON(b2ManifoldPoint);
 
 /**
  * A manifold for two touching convex shapes.
@@ -274,16 +268,23 @@ export class b2Manifold {
     const { points, localNormal, localPoint, type, pointCount } = this;
     return { points, localNormal, localPoint, type, pointCount };
   }
-
-  [b2InspectCustom](): object {
-    return this.toJSON();
-  }
 }
+b2InspectAsJSON(b2Manifold);
 
 const s_pointA = new b2Vec2();
 const s_pointB = new b2Vec2();
 const s_planePoint = new b2Vec2();
 const s_clipPoint = new b2Vec2();
+const s_localNormal = new b2Vec2();
+const s_localPoint = new b2Vec2();
+const s_pointLocalPoint = new b2Vec2();
+
+/** Manifold point i's local point, read from the manifold's record into a plain vector. */
+function PointLocalPoint(manifold: Readonly<b2Manifold>, i: number): b2Vec2 {
+  const p = manifold.m_offset + b2ManifoldField.points + i * b2ManifoldPointField.stride;
+  const r = manifold.m_record;
+  return s_pointLocalPoint.Set(r[p + b2ManifoldPointField.localPointX], r[p + b2ManifoldPointField.localPointY]);
+}
 
 /** This is used to compute the current state of a contact manifold. */
 export class b2WorldManifold {
@@ -308,12 +309,18 @@ export class b2WorldManifold {
       return;
     }
 
+    // The manifold's vectors, read from its record into plain vectors (see b2SetManifoldFace).
+    const r = manifold.m_record;
+    const o = manifold.m_offset;
+    const localNormal = s_localNormal.Set(r[o + b2ManifoldField.localNormalX], r[o + b2ManifoldField.localNormalY]);
+    const localPoint = s_localPoint.Set(r[o + b2ManifoldField.localPointX], r[o + b2ManifoldField.localPointY]);
+
     const normal = this.normal;
     switch (manifold.type) {
       case b2Manifold.e_circles: {
         normal.Set(1.0, 0.0);
-        const pointA = b2MulXV(xfA, manifold.localPoint, s_pointA);
-        const pointB = b2MulXV(xfB, manifold.points[0].localPoint, s_pointB);
+        const pointA = b2MulXV(xfA, localPoint, s_pointA);
+        const pointB = b2MulXV(xfB, PointLocalPoint(manifold, 0), s_pointB);
         const dx = pointA.x - pointB.x;
         const dy = pointA.y - pointB.y;
         if (dx * dx + dy * dy > b2_epsilon * b2_epsilon) {
@@ -332,11 +339,11 @@ export class b2WorldManifold {
       }
 
       case b2Manifold.e_faceA: {
-        b2MulRV(xfA.q, manifold.localNormal, normal);
-        const planePoint = b2MulXV(xfA, manifold.localPoint, s_planePoint);
+        b2MulRV(xfA.q, localNormal, normal);
+        const planePoint = b2MulXV(xfA, localPoint, s_planePoint);
 
         for (let i = 0; i < manifold.pointCount; ++i) {
-          const clipPoint = b2MulXV(xfB, manifold.points[i].localPoint, s_clipPoint);
+          const clipPoint = b2MulXV(xfB, PointLocalPoint(manifold, i), s_clipPoint);
           const k = radiusA - ((clipPoint.x - planePoint.x) * normal.x + (clipPoint.y - planePoint.y) * normal.y);
           const cAx = clipPoint.x + k * normal.x;
           const cAy = clipPoint.y + k * normal.y;
@@ -349,11 +356,11 @@ export class b2WorldManifold {
       }
 
       case b2Manifold.e_faceB: {
-        b2MulRV(xfB.q, manifold.localNormal, normal);
-        const planePoint = b2MulXV(xfB, manifold.localPoint, s_planePoint);
+        b2MulRV(xfB.q, localNormal, normal);
+        const planePoint = b2MulXV(xfB, localPoint, s_planePoint);
 
         for (let i = 0; i < manifold.pointCount; ++i) {
-          const clipPoint = b2MulXV(xfA, manifold.points[i].localPoint, s_clipPoint);
+          const clipPoint = b2MulXV(xfA, PointLocalPoint(manifold, i), s_clipPoint);
           const k = radiusB - ((clipPoint.x - planePoint.x) * normal.x + (clipPoint.y - planePoint.y) * normal.y);
           const cBx = clipPoint.x + k * normal.x;
           const cBy = clipPoint.y + k * normal.y;

@@ -5,6 +5,8 @@
  * that visits thousands of them waits on memory. A record keeps such a struct's doubles at fixed
  * offsets in a Float64Array shared with its neighbours; the engine's hot paths read and write it,
  * and the struct's public vectors are b2RecordVec2 views onto it, so users see the same objects.
+ * Engine code never passes a view to b2Vec2's methods or b2Math's functions, which would then be
+ * compiled for two layouts wherever they are inlined (docs/PORTING.md).
  *
  * Invariant: a record belongs to one object for that object's life and is never handed out again;
  * its chunk is garbage once all of its owners are.
@@ -39,10 +41,17 @@ export class b2RecordPool {
 }
 
 /**
- * Node's util.inspect hook. Record views hold their chunk, thousands of doubles; console.log and
- * JSON.stringify show their values instead, as plain objects showed them.
+ * Show the instances of a class that holds a record (a view, or an object with views) to
+ * console.log as their toJSON() shows them to JSON.stringify: their values, as plain objects
+ * showed them, not the chunk of thousands of doubles they hold (Node's util.inspect hook).
  */
-export const b2InspectCustom = Symbol.for('nodejs.util.inspect.custom');
+export function b2InspectAsJSON(target: { prototype: { toJSON(): object } }): void {
+  Object.defineProperty(target.prototype, Symbol.for('nodejs.util.inspect.custom'), {
+    value: function inspect(this: { toJSON(): object }): object {
+      return this.toJSON();
+    },
+  });
+}
 
 /**
  * A b2Vec2 whose coordinates are two doubles of a record: reading and writing x and y reads and
@@ -74,11 +83,8 @@ export class b2RecordVec2 {
   toJSON(): { x: number; y: number } {
     return { x: this.x, y: this.y };
   }
-
-  [b2InspectCustom](): { x: number; y: number } {
-    return this.toJSON();
-  }
 }
 
 export interface b2RecordVec2 extends b2Vec2 {}
 Object.setPrototypeOf(b2RecordVec2.prototype, b2Vec2.prototype);
+b2InspectAsJSON(b2RecordVec2);

@@ -473,17 +473,22 @@ export function b2dJsonReadState(
     const ms = obj(cs.manifold, `${p}.manifold`);
     const m = c.m_manifold;
     m.type = int(ms.type, `${p}.manifold.type`, 0, 2);
+    // Coordinates written one by one: the manifold's vectors are views onto its record, which
+    // engine code keeps away from b2Vec2's methods (docs/PORTING.md, records).
     const ln = nums(ms.localNormal, `${p}.manifold.localNormal`, 2);
-    m.localNormal.Set(ln[0], ln[1]);
+    m.localNormal.x = ln[0];
+    m.localNormal.y = ln[1];
     const lp = nums(ms.localPoint, `${p}.manifold.localPoint`, 2);
-    m.localPoint.Set(lp[0], lp[1]);
+    m.localPoint.x = lp[0];
+    m.localPoint.y = lp[1];
     const points = arr(ms.points, `${p}.manifold.points`);
     if (points.length > m.points.length) fail(`${p}.manifold.points`, `expected at most ${m.points.length} points`);
     m.pointCount = points.length;
     for (let k = 0; k < points.length; ++k) {
       const q = nums(points[k], `${p}.manifold.points[${k}]`, 5);
       const mp = m.points[k];
-      mp.localPoint.Set(q[0], q[1]);
+      mp.localPoint.x = q[0];
+      mp.localPoint.y = q[1];
       mp.normalImpulse = q[2];
       mp.tangentImpulse = q[3];
       mp.id.key = int(q[4], `${p}.manifold.points[${k}][4]`, 0, 0xffffffff);

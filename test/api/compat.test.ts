@@ -9,7 +9,6 @@ import * as wp from '../../src/index';
 import { b2Vec2, b2World, b2BodyDef, b2FixtureDef, b2PolygonShape, b2CircleShape, Box2D } from '../../src/index';
 import { b2World as b2WorldEngine } from '../../src/dynamics/b2World';
 import { b2CircleShape as b2CircleShapeEngine } from '../../src/collision/shapes/b2CircleShape';
-import { b2PolygonField } from '../../src/collision/shapes/b2PolygonShape';
 import { loadGoldenScene, readTrajectory, stateDigest } from '../support/scene';
 
 function dynamicBody(world: wp.b2World, x: number, y: number, shape: wp.b2Shape, density = 1): wp.b2Body {
@@ -258,21 +257,19 @@ describe('Box2D.Collision', () => {
   });
 
   it('b2PolygonShape builders match the 2.2.1 calls bit for bit', () => {
-    // Type, radius, count, and every double of the vertices, normals and centroid.
-    const bits = (p: b2PolygonShape) => [p.m_type, p.m_radius, p.m_vertexCount, ...p.m_record.subarray(p.m_offset, p.m_offset + b2PolygonField.stride)];
     const vertices = [new b2Vec2(0, 0), new b2Vec2(2, 0.1), new b2Vec2(1.5, 1.7), new b2Vec2(-0.2, 1)];
-    expect(bits(b2PolygonShape.AsArray(vertices, 0))).toEqual(bits(new b2PolygonShape().Set(vertices)));
-    expect(bits(b2PolygonShape.AsVector(vertices, 3))).toEqual(bits(new b2PolygonShape().Set(vertices, 3)));
-    expect(bits(b2PolygonShape.AsBox(1, 2))).toEqual(bits(new b2PolygonShape().SetAsBox(1, 2)));
-    expect(bits(b2PolygonShape.AsOrientedBox(1, 2, new b2Vec2(3, 4), 0.5))).toEqual(
-      bits(new b2PolygonShape().SetAsBox(1, 2, new b2Vec2(3, 4), 0.5)),
+    expect(b2PolygonShape.AsArray(vertices, 0)).toEqual(new b2PolygonShape().Set(vertices));
+    expect(b2PolygonShape.AsVector(vertices, 3)).toEqual(new b2PolygonShape().Set(vertices, 3));
+    expect(b2PolygonShape.AsBox(1, 2)).toEqual(new b2PolygonShape().SetAsBox(1, 2));
+    expect(b2PolygonShape.AsOrientedBox(1, 2, new b2Vec2(3, 4), 0.5)).toEqual(
+      new b2PolygonShape().SetAsBox(1, 2, new b2Vec2(3, 4), 0.5),
     );
     const shape = new b2PolygonShape();
     shape.SetAsArray(vertices);
-    expect(shape.GetVertices().map((v) => v.Clone())).toEqual(vertices);
+    expect(shape.GetVertices()).toEqual(vertices);
     expect(shape.GetVertices()[0]).toBe(shape.m_vertices[0]);
     expect(shape.GetNormals()).toHaveLength(4);
-    expect(b2PolygonShape.ComputeCentroid(vertices, 4)).toEqual(shape.m_centroid.Clone());
+    expect(b2PolygonShape.ComputeCentroid(vertices, 4)).toEqual(shape.m_centroid);
   });
 
   it('SetAsEdge makes a two-vertex polygon that becomes an edge fixture a box can rest on', () => {

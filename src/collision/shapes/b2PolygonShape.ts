@@ -11,7 +11,6 @@ import { b2Shape } from './b2Shape';
 import type { b2MassData } from './b2Shape';
 import { b2CheckPolygonVertices } from './b2ShapeValidation';
 import { b2CheckFinite, b2CheckPositive, b2CheckVec2 } from '../../common/b2ArgumentError';
-import { b2InspectCustom, b2RecordPool, b2RecordVec2 } from '../../common/b2Record';
 
 const s_boxRot = new b2Rot();
 
@@ -58,48 +57,18 @@ function ComputeCentroid(vs: readonly b2Vec2[], count: number, out: b2Vec2): b2V
 }
 
 /**
- * Doubles of a polygon's record (common/b2Record.ts), from its offset: vertex i and its edge's
- * normal side by side, so that a box's geometry is two 64-byte lines, then the centroid.
- */
-export const enum b2PolygonField {
-  vertices = 0,
-  normals = 2,
-  /** From vertex i (or normal i) to vertex i + 1. */
-  vertexStride = 4,
-  centroidX = 4 * 8,
-  centroidY = 4 * 8 + 1,
-  stride = 4 * 8 + 2,
-}
-
-// The record has room for eight vertices.
-b2Assert(b2_maxPolygonVertices === 8);
-
-/** Every polygon's record, 32 to a chunk. */
-const b2PolygonRecords = new b2RecordPool(b2PolygonField.stride, 32);
-
-/**
  * A convex polygon. It is assumed that the interior of the polygon is to the left of each edge.
  * Polygons have a maximum number of vertices equal to b2_maxPolygonVertices.
  * In most cases you should not need many vertices for a convex polygon.
  */
 export class b2PolygonShape extends b2Shape {
-  /** The record holding the vertices, normals and centroid, at m_offset (b2PolygonField). */
-  readonly m_record: Float64Array;
-  readonly m_offset: number;
-  readonly m_centroid: b2Vec2;
-  readonly m_vertices: readonly b2Vec2[];
-  readonly m_normals: readonly b2Vec2[];
+  readonly m_centroid = new b2Vec2();
+  readonly m_vertices: readonly b2Vec2[] = b2MakeArray(b2_maxPolygonVertices, () => new b2Vec2());
+  readonly m_normals: readonly b2Vec2[] = b2MakeArray(b2_maxPolygonVertices, () => new b2Vec2());
   m_vertexCount = 0;
 
   constructor() {
     super(b2Shape.e_polygon, b2_polygonRadius);
-    const offset = b2PolygonRecords.Allocate();
-    const record = b2PolygonRecords.chunk;
-    this.m_record = record;
-    this.m_offset = offset;
-    this.m_centroid = new b2RecordVec2(record, offset + b2PolygonField.centroidX);
-    this.m_vertices = b2MakeArray(b2_maxPolygonVertices, (i) => new b2RecordVec2(record, offset + b2PolygonField.vertices + b2PolygonField.vertexStride * i));
-    this.m_normals = b2MakeArray(b2_maxPolygonVertices, (i) => new b2RecordVec2(record, offset + b2PolygonField.normals + b2PolygonField.vertexStride * i));
   }
 
   /** Implement b2Shape. */
@@ -107,8 +76,10 @@ export class b2PolygonShape extends b2Shape {
     const clone = new b2PolygonShape();
     clone.m_type = this.m_type;
     clone.m_radius = this.m_radius;
-    for (let i = 0; i < b2PolygonField.stride; ++i) {
-      clone.m_record[clone.m_offset + i] = this.m_record[this.m_offset + i];
+    clone.m_centroid.Assign(this.m_centroid);
+    for (let i = 0; i < b2_maxPolygonVertices; ++i) {
+      clone.m_vertices[i].Assign(this.m_vertices[i]);
+      clone.m_normals[i].Assign(this.m_normals[i]);
     }
     clone.m_vertexCount = this.m_vertexCount;
     return clone;
@@ -295,20 +266,16 @@ export class b2PolygonShape extends b2Shape {
     const qs = xf.q.s;
     const px = xf.p.x;
     const py = xf.p.y;
-    const record = this.m_record;
-    const o = this.m_offset + b2PolygonField.vertices;
-    const v0x = record[o];
-    const v0y = record[o + 1];
-    let lowerX = qc * v0x - qs * v0y + px;
-    let lowerY = qs * v0x + qc * v0y + py;
+    const v0 = this.m_vertices[0];
+    let lowerX = qc * v0.x - qs * v0.y + px;
+    let lowerY = qs * v0.x + qc * v0.y + py;
     let upperX = lowerX;
     let upperY = lowerY;
 
     for (let i = 1; i < this.m_vertexCount; ++i) {
-      const vix = record[o + b2PolygonField.vertexStride * i];
-      const viy = record[o + b2PolygonField.vertexStride * i + 1];
-      const vx = qc * vix - qs * viy + px;
-      const vy = qs * vix + qc * viy + py;
+      const vi = this.m_vertices[i];
+      const vx = qc * vi.x - qs * vi.y + px;
+      const vy = qs * vi.x + qc * vi.y + py;
       lowerX = b2Min(lowerX, vx);
       lowerY = b2Min(lowerY, vy);
       upperX = b2Max(upperX, vx);
@@ -425,15 +392,5 @@ export class b2PolygonShape extends b2Shape {
   GetVertex(index: number): Readonly<b2Vec2> {
     b2Assert(0 <= index && index < this.m_vertexCount);
     return this.m_vertices[index];
-  }
-
-  /** The polygon's fields without its record (common/b2Record.ts), for JSON.stringify. */
-  toJSON(): object {
-    const { m_type, m_radius, m_centroid, m_vertices, m_normals, m_vertexCount } = this;
-    return { m_type, m_radius, m_centroid, m_vertices, m_normals, m_vertexCount };
-  }
-
-  [b2InspectCustom](): object {
-    return this.toJSON();
   }
 }
