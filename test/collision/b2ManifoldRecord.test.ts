@@ -1,8 +1,12 @@
 import { inspect } from 'node:util';
 import { describe, expect, it } from 'vitest';
-import { b2ContactID, b2Manifold, b2ManifoldPoint } from '../../src/collision/b2Collision';
-import { b2ManifoldField, b2ManifoldPointField } from '../../src/collision/b2ManifoldRecord';
+import { b2ContactID, b2Manifold, b2ManifoldPoint, b2WorldManifold } from '../../src/collision/b2Collision';
+import { b2ManifoldField, b2ManifoldPointField, b2SetManifoldFace, b2SetManifoldPoint } from '../../src/collision/b2ManifoldRecord';
 import { b2Vec2 } from '../../src/common/b2Math';
+import { b2RecordVec2 } from '../../src/common/b2Record';
+import { b2dJsonRead } from '../../src/io/b2dJsonRead';
+import { b2dJsonWriteString } from '../../src/io/b2dJsonWrite';
+import { goldenSceneNames, loadGoldenScene } from '../support/scene';
 
 describe('manifold records', () => {
   it('keeps a manifold’s vectors, impulses and ids at the record offsets the engine reads', () => {
@@ -124,4 +128,46 @@ describe('manifold records', () => {
     expect(inspect(m, { depth: 4 })).not.toContain('Float64Array');
     expect(inspect(m.localNormal)).toBe('{ x: 0, y: 1 }');
   });
+
+  it('writes faces and points through b2SetManifoldFace and b2SetManifoldPoint, leaving the impulses', () => {
+    const m = new b2Manifold();
+    m.points[1].normalImpulse = 9;
+    b2SetManifoldFace(m, new b2Vec2(0, -1), new b2Vec2(2, 3));
+    b2SetManifoldPoint(m, 1, new b2Vec2(4, 5), 0x00010200);
+    expect([m.localNormal.x, m.localNormal.y, m.localPoint.x, m.localPoint.y]).toEqual([0, -1, 2, 3]);
+    expect([m.points[1].localPoint.x, m.points[1].localPoint.y, m.points[1].id.key]).toEqual([4, 5, 0x00010200]);
+    expect([m.points[1].id.indexB, m.points[1].id.typeA]).toEqual([2, 1]);
+    expect(m.points[1].normalImpulse).toBe(9);
+    expect(m.points[0].localPoint.x).toBe(0);
+  });
+
+  it('is never handed to b2Vec2 methods by the engine: every golden scene, its world manifolds and a state round trip', () => {
+    // A b2Vec2 method that runs on a view is compiled for two layouts wherever V8 inlines it, and
+    // then boxes the doubles it stores (docs/PORTING.md): the engine reads and writes the record.
+    const proto = b2Vec2.prototype as unknown as Record<string, unknown>;
+    const names = Object.getOwnPropertyNames(proto).filter((n) => n !== 'constructor' && typeof proto[n] === 'function');
+    const original = new Map(names.map((n) => [n, proto[n] as (...args: unknown[]) => unknown]));
+    const misuses = new Set<string>();
+    for (const [name, method] of original) {
+      proto[name] = function (this: unknown, ...args: unknown[]) {
+        if (this instanceof b2RecordVec2) misuses.add(`${name}: ${new Error().stack?.split('\n')[2]?.trim()}`);
+        return method.apply(this, args);
+      };
+    }
+    try {
+      const worldManifold = new b2WorldManifold();
+      for (const name of goldenSceneNames()) {
+        const scene = loadGoldenScene(name);
+        for (let i = 0; i < 30; ++i) {
+          scene.step();
+          for (let c = scene.world.GetContactList(); c; c = c.GetNext()) c.GetWorldManifold(worldManifold);
+        }
+        b2dJsonRead(b2dJsonWriteString(scene, '', { solverState: true })).step();
+      }
+    } finally {
+      for (const [name, method] of original) proto[name] = method;
+    }
+    expect([...misuses]).toEqual([]);
+  });
 });
+
