@@ -165,7 +165,6 @@ export abstract class b2Contact {
   /** Not in the C++: the storage of m_toi, m_friction and m_restitution (see b2ContactScalars). */
   readonly m_scalars = new b2ContactScalars();
 
-
   // The C++ leaves m_toi uninitialised; b2World.SolveTOI writes it before any read.
   get m_toi(): number {
     return this.m_scalars.toi;
