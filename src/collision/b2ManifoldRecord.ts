@@ -18,7 +18,14 @@ export const enum b2ManifoldField {
   localPointY = 3,
   /** The first point's record (b2ManifoldPointField); the second follows it. */
   points = 4,
-  /** Two points of five doubles after the four above, rounded up to two 64-byte lines. */
+  /**
+   * Not the manifold's: its contact's friction and restitution (b2Contact.m_friction and
+   * m_restitution), which the contact solver reads with the manifold. Unused outside a contact;
+   * Assign and Clone leave them.
+   */
+  friction = 14,
+  restitution = 15,
+  /** Two 64-byte lines. */
   stride = 16,
 }
 

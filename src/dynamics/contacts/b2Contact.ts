@@ -69,16 +69,14 @@ export class b2ContactEdge {
 }
 
 /**
- * Not in the C++: a contact's TOI, friction and restitution, in an object of one class. The solver
- * and SolveTOI read them from contacts of every pair of shape types (seven classes, so seven object
- * layouts), and V8 boxes a double read from or written to a field at a site that sees that many
- * layouts: a heap allocation per contact and step. b2Contact.m_toi, m_friction and m_restitution
- * are accessors to these fields.
+ * Not in the C++: a contact's TOI, in an object of one class. SolveTOI reads it from contacts of
+ * every pair of shape types (seven classes, so seven object layouts), and V8 boxes a double read
+ * from or written to a field at a site that sees that many layouts: a heap allocation per contact
+ * and step. b2Contact.m_toi is an accessor to this field; m_friction and m_restitution are
+ * accessors to the manifold's record (b2ManifoldField.friction), where the solver reads them.
  */
 export class b2ContactScalars {
   toi = 1.0;
-  friction = 0.0;
-  restitution = 0.0;
 }
 
 /** A manifold as constructed, which b2Contact.Init copies into a reused contact's. */
@@ -162,7 +160,7 @@ export abstract class b2Contact {
    */
   m_toiSearch = 0;
 
-  /** Not in the C++: the storage of m_toi, m_friction and m_restitution (see b2ContactScalars). */
+  /** Not in the C++: the storage of m_toi (see b2ContactScalars). */
   readonly m_scalars = new b2ContactScalars();
 
   // The C++ leaves m_toi uninitialised; b2World.SolveTOI writes it before any read.
@@ -174,17 +172,17 @@ export abstract class b2Contact {
   }
 
   get m_friction(): number {
-    return this.m_scalars.friction;
+    return this.m_manifold.m_record[this.m_manifold.m_offset + b2ManifoldField.friction];
   }
   set m_friction(friction: number) {
-    this.m_scalars.friction = friction;
+    this.m_manifold.m_record[this.m_manifold.m_offset + b2ManifoldField.friction] = friction;
   }
 
   get m_restitution(): number {
-    return this.m_scalars.restitution;
+    return this.m_manifold.m_record[this.m_manifold.m_offset + b2ManifoldField.restitution];
   }
   set m_restitution(restitution: number) {
-    this.m_scalars.restitution = restitution;
+    this.m_manifold.m_record[this.m_manifold.m_offset + b2ManifoldField.restitution] = restitution;
   }
 
   constructor(fixtureA: b2Fixture, indexA: number, fixtureB: b2Fixture, indexB: number) {
@@ -227,11 +225,12 @@ export abstract class b2Contact {
 
     this.m_toiCount = 0;
     this.m_toiSearch = 0;
-    const scalars = this.m_scalars;
-    scalars.toi = 1.0;
+    this.m_scalars.toi = 1.0;
 
-    scalars.friction = b2MixFriction(this.m_fixtureA.m_friction, this.m_fixtureB.m_friction);
-    scalars.restitution = b2MixRestitution(this.m_fixtureA.m_restitution, this.m_fixtureB.m_restitution);
+    const record = this.m_manifold.m_record;
+    const o = this.m_manifold.m_offset;
+    record[o + b2ManifoldField.friction] = b2MixFriction(this.m_fixtureA.m_friction, this.m_fixtureB.m_friction);
+    record[o + b2ManifoldField.restitution] = b2MixRestitution(this.m_fixtureA.m_restitution, this.m_fixtureB.m_restitution);
   }
 
   /**

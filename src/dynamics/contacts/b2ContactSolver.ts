@@ -409,9 +409,10 @@ export class b2ContactSolver {
 
       const o = (i * VcF.stride) & Mask.offset;
       const oi = (i * VcI.stride) & Mask.offset;
-      const scalars = contact.m_scalars;
-      vf[o + VcF.friction] = scalars.friction;
-      vf[o + VcF.restitution] = scalars.restitution;
+      const record = manifold.m_record;
+      const mo = manifold.m_offset;
+      vf[o + VcF.friction] = record[mo + b2ManifoldField.friction];
+      vf[o + VcF.restitution] = record[mo + b2ManifoldField.restitution];
       vi[oi + VcI.indexA] = bodyA.m_islandIndex;
       vi[oi + VcI.indexB] = bodyB.m_islandIndex;
       vf[o + VcF.invMassA] = bodyA.m_invMass;
@@ -443,8 +444,6 @@ export class b2ContactSolver {
       pf[q + PcF.localCenterBY] = localCenterB.y;
       pf[q + PcF.invIA] = bodyA.m_invI;
       pf[q + PcF.invIB] = bodyB.m_invI;
-      const record = manifold.m_record;
-      const mo = manifold.m_offset;
       pf[q + PcF.localNormalX] = record[mo + b2ManifoldField.localNormalX];
       pf[q + PcF.localNormalY] = record[mo + b2ManifoldField.localNormalY];
       pf[q + PcF.localPointX] = record[mo + b2ManifoldField.localPointX];

@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import type { b2Manifold } from '../../../src/collision/b2Collision';
+import { b2Manifold } from '../../../src/collision/b2Collision';
+import { b2ManifoldField } from '../../../src/collision/b2ManifoldRecord';
 import { b2ChainShape } from '../../../src/collision/shapes/b2ChainShape';
 import { b2CircleShape } from '../../../src/collision/shapes/b2CircleShape';
 import { b2EdgeShape } from '../../../src/collision/shapes/b2EdgeShape';
@@ -181,16 +182,21 @@ describe('b2Contact construction', () => {
     expect(contact.GetRestitution()).toBe(0.7);
   });
 
-  it('keeps m_toi, m_friction and m_restitution in its b2ContactScalars (the fields are accessors to it)', () => {
+  it('keeps m_toi in its b2ContactScalars and m_friction, m_restitution in its manifold record (the fields are accessors)', () => {
     const world = newWorld();
     const contact = b2Contact.Create(addFixture(world, makeShape('polygon')), 0, addFixture(world, makeShape('circle'), { x: 3.0 }), 0)!;
     contact.m_toi = 0.25;
     contact.m_friction = 0.5;
     contact.m_restitution = 0.75;
-    expect({ ...contact.m_scalars }).toEqual({ toi: 0.25, friction: 0.5, restitution: 0.75 });
+    expect({ ...contact.m_scalars }).toEqual({ toi: 0.25 });
+    const m = contact.GetManifold();
+    expect([m.m_record[m.m_offset + b2ManifoldField.friction], m.m_record[m.m_offset + b2ManifoldField.restitution]]).toEqual([0.5, 0.75]);
     contact.m_scalars.toi = 0.125;
     expect(contact.m_toi).toBe(0.125);
     expect(contact.GetFriction()).toBe(0.5);
+    // The manifold's own copies leave them: they belong to the contact.
+    m.Assign(new b2Manifold());
+    expect([contact.GetFriction(), contact.GetRestitution()]).toEqual([0.5, 0.75]);
   });
 
   it('starts enabled, not touching, with an empty manifold, no TOI count and unlinked edges', () => {

@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { b2Manifold } from '../../../src/collision/b2Collision';
+import { b2ManifoldField } from '../../../src/collision/b2ManifoldRecord';
 import { b2CircleShape } from '../../../src/collision/shapes/b2CircleShape';
 import { b2PolygonShape } from '../../../src/collision/shapes/b2PolygonShape';
 import type { b2Shape } from '../../../src/collision/shapes/b2Shape';
@@ -54,13 +55,17 @@ function makeIsland(options: IslandOptions) {
     mp.tangentImpulse = options.tangentImpulses?.[i] ?? 0.0;
   });
 
+  // The contact's friction and restitution, which its manifold's record holds.
+  manifold.m_record[manifold.m_offset + b2ManifoldField.friction] = options.friction ?? 0.0;
+  manifold.m_record[manifold.m_offset + b2ManifoldField.restitution] = options.restitution ?? 0.0;
+
   const shape = { m_radius: 0.0 };
   const bodyA = { m_islandIndex: 0, m_invMass: options.invMassA ?? 0.0, m_invI: options.invIA ?? 0.0, m_sweep: { localCenter: new b2Vec2() } };
   const bodyB = { m_islandIndex: 1, m_invMass: 1.0, m_invI: 6.0, m_sweep: { localCenter: new b2Vec2() } };
   const contact = {
     m_fixtureA: { GetShape: () => shape, GetBody: () => bodyA },
     m_fixtureB: { GetShape: () => shape, GetBody: () => bodyB },
-    m_scalars: { toi: 1.0, friction: options.friction ?? 0.0, restitution: options.restitution ?? 0.0 },
+    m_scalars: { toi: 1.0 },
     GetManifold: () => manifold,
   } as unknown as b2Contact;
 
