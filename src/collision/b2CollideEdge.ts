@@ -13,7 +13,7 @@ import {
   b2_polygonRadius,
   b2Assert,
 } from '../common/b2Settings';
-import { b2ClipSegment, b2ClipSegmentOffset, b2ClipVertex, b2ContactFeature, b2ContactID, b2Manifold } from './b2Collision';
+import { b2ClipSegment, b2ClipSegmentOffset, b2ClipVertex, b2ContactFeature, b2ContactKey, b2Manifold } from './b2Collision';
 import { b2SetManifoldFace, b2SetManifoldPoint } from './b2ManifoldRecord';
 import type { b2CircleShape } from './shapes/b2CircleShape';
 import type { b2EdgeShape } from './shapes/b2EdgeShape';
@@ -23,8 +23,6 @@ const s_pB = new b2Vec2();
 const s_Q = new b2Vec2();
 const s_normal = new b2Vec2();
 const s_localPoint = new b2Vec2();
-/** The feature bytes of the point being written, whose key goes to the manifold's record. */
-const s_cf = new b2ContactID();
 
 /**
  * Compute contact points for edge versus circle.
@@ -53,9 +51,8 @@ export function b2CollideEdgeAndCircle(
 
   const radius = edgeA.m_radius + circleB.m_radius;
 
-  // The C++ builds the feature in a local b2ContactFeature cf; indexB and typeB are always
-  // 0 and e_vertex here.
-  const cf = s_cf;
+  // The C++ builds the feature in a local b2ContactFeature cf and copies it into the point's id;
+  // here its key goes to the manifold's record. indexB and typeB are always 0 and e_vertex.
 
   // Region A
   if (v <= 0.0) {
@@ -84,8 +81,7 @@ export function b2CollideEdgeAndCircle(
     manifold.pointCount = 1;
     manifold.type = b2Manifold.e_circles;
     b2SetManifoldFace(manifold, b2Vec2_zero, P);
-    setFeature(cf, 0, 0, b2ContactFeature.e_vertex, b2ContactFeature.e_vertex);
-    b2SetManifoldPoint(manifold, 0, circleB.m_p, cf.key);
+    b2SetManifoldPoint(manifold, 0, circleB.m_p, b2ContactKey(0, 0, b2ContactFeature.e_vertex, b2ContactFeature.e_vertex));
     return;
   }
 
@@ -116,8 +112,7 @@ export function b2CollideEdgeAndCircle(
     manifold.pointCount = 1;
     manifold.type = b2Manifold.e_circles;
     b2SetManifoldFace(manifold, b2Vec2_zero, P);
-    setFeature(cf, 1, 0, b2ContactFeature.e_vertex, b2ContactFeature.e_vertex);
-    b2SetManifoldPoint(manifold, 0, circleB.m_p, cf.key);
+    b2SetManifoldPoint(manifold, 0, circleB.m_p, b2ContactKey(1, 0, b2ContactFeature.e_vertex, b2ContactFeature.e_vertex));
     return;
   }
 
@@ -142,8 +137,7 @@ export function b2CollideEdgeAndCircle(
   manifold.pointCount = 1;
   manifold.type = b2Manifold.e_faceA;
   b2SetManifoldFace(manifold, n, A);
-  setFeature(cf, 0, 0, b2ContactFeature.e_face, b2ContactFeature.e_vertex);
-  b2SetManifoldPoint(manifold, 0, circleB.m_p, cf.key);
+  b2SetManifoldPoint(manifold, 0, circleB.m_p, b2ContactKey(0, 0, b2ContactFeature.e_face, b2ContactFeature.e_vertex));
 }
 
 /** cf = {indexA, indexB, typeA, typeB} */
@@ -538,8 +532,7 @@ class b2EPCollider {
           b2SetManifoldPoint(manifold, pointCount, b2MulTXV(xf, clipPoint.v, s_localPoint), clipPoint.id.key);
         } else {
           const cf = clipPoint.id;
-          setFeature(s_cf, cf.indexB, cf.indexA, cf.typeB, cf.typeA);
-          b2SetManifoldPoint(manifold, pointCount, clipPoint.v, s_cf.key);
+          b2SetManifoldPoint(manifold, pointCount, clipPoint.v, b2ContactKey(cf.indexB, cf.indexA, cf.typeB, cf.typeA));
         }
 
         ++pointCount;

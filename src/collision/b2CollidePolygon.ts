@@ -5,7 +5,7 @@
 import { b2Vec2 } from '../common/b2Math';
 import type { b2Transform } from '../common/b2Math';
 import { b2_maxFloat, b2_maxManifoldPoints, b2Assert } from '../common/b2Settings';
-import { b2ClipSegment, b2ClipSegmentOffset, b2ClipVertex, b2ContactFeature, b2Manifold } from './b2Collision';
+import { b2ClipSegment, b2ClipSegmentOffset, b2ClipVertex, b2ContactFeature, b2ContactKey, b2Manifold } from './b2Collision';
 import { b2ManifoldField, b2ManifoldPointField } from './b2ManifoldRecord';
 import type { b2PolygonShape } from './shapes/b2PolygonShape';
 
@@ -357,9 +357,7 @@ export function b2CollidePolygons(
       record[mp + b2ManifoldPointField.localPointY] = -xf2.q.s * px + xf2.q.c * py;
       const cf = clipPoints2[i].id;
       // The id's key; with flip, the features swapped (indexA with indexB, typeA with typeB).
-      record[mp + b2ManifoldPointField.key] = flip
-        ? (cf.indexB | (cf.indexA << 8) | (cf.typeB << 16) | (cf.typeA << 24)) >>> 0
-        : cf.key;
+      record[mp + b2ManifoldPointField.key] = flip ? b2ContactKey(cf.indexB, cf.indexA, cf.typeB, cf.typeA) : cf.key;
       ++pointCount;
     }
   }

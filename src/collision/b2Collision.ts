@@ -43,6 +43,14 @@ export class b2ContactFeature {
 }
 
 /**
+ * The uint32 key of these feature bytes (x86 byte order of the C++ union): b2ContactID.key, and
+ * what the collision functions write to a manifold's record.
+ */
+export function b2ContactKey(indexA: number, indexB: number, typeA: number, typeB: number): number {
+  return (indexA | (indexB << 8) | (typeA << 16) | (typeB << 24)) >>> 0;
+}
+
+/**
  * Contact ids to facilitate warm starting. The C++ union of the feature bytes (`cf`) and their
  * uint32 view (`key`, x86 byte order): here the id is its own feature record, so `cf` returns the
  * id itself, one object for both views; `key` is computed from the bytes, and writing it writes
@@ -57,7 +65,7 @@ export class b2ContactID extends b2ContactFeature {
 
   /** Used to quickly compare contact ids. */
   get key(): number {
-    return (this.indexA | (this.indexB << 8) | (this.typeA << 16) | (this.typeB << 24)) >>> 0;
+    return b2ContactKey(this.indexA, this.indexB, this.typeA, this.typeB);
   }
 
   set key(value: number) {
