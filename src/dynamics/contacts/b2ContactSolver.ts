@@ -199,7 +199,8 @@ const enum VcI {
   indexB = 1,
   pointCount = 2,
   contactIndex = 3,
-  stride = 4,
+  manifoldOffset = 4,
+  stride = 5,
 }
 
 /** Doubles of a position constraint record in m_pcFloats. */
@@ -264,6 +265,11 @@ export class b2ContactSolver {
   m_pcFloats = new Float64Array(0);
   m_pcInts = new Int32Array(0);
   private m_capacity = 0;
+  /**
+   * Constraint i's manifold record (its offset is VcI.manifoldOffset), so StoreImpulses writes the
+   * impulses back without reading the contact and its manifold, two objects elsewhere in memory.
+   */
+  private readonly m_manifoldRecords: Float64Array[] = [];
 
   /**
    * Per island body: the last angle whose rotation was computed, and its sine and cosine (three
@@ -420,6 +426,8 @@ export class b2ContactSolver {
       vf[o + VcF.invIA] = bodyA.m_invI;
       vf[o + VcF.invIB] = bodyB.m_invI;
       vi[oi + VcI.contactIndex] = i;
+      vi[oi + VcI.manifoldOffset] = mo;
+      this.m_manifoldRecords[i] = record;
       vi[oi + VcI.pointCount] = pointCount;
       vf[o + VcF.KExX] = 0.0;
       vf[o + VcF.KEyX] = 0.0;
@@ -1085,15 +1093,15 @@ export class b2ContactSolver {
     for (let i = 0; i < this.m_count; ++i) {
       const o = (i * VcF.stride) & Mask.offset;
       const oi = (i * VcI.stride) & Mask.offset;
-      const manifold = this.m_contacts[vi[oi + VcI.contactIndex]].GetManifold();
-      const record = manifold.m_record;
+      const record = this.m_manifoldRecords[i];
+      const mo = vi[oi + VcI.manifoldOffset] + b2ManifoldField.points;
 
       const pointCount = vi[oi + VcI.pointCount] & Mask.pointCount;
       for (let j = 0; j < pointCount; ++j) {
         const op = o + VcF.points + j * VcP.stride;
-        const mo = manifold.m_offset + b2ManifoldField.points + j * b2ManifoldPointField.stride;
-        record[mo + b2ManifoldPointField.normalImpulse] = vf[op + VcP.normalImpulse];
-        record[mo + b2ManifoldPointField.tangentImpulse] = vf[op + VcP.tangentImpulse];
+        const mp = mo + j * b2ManifoldPointField.stride;
+        record[mp + b2ManifoldPointField.normalImpulse] = vf[op + VcP.normalImpulse];
+        record[mp + b2ManifoldPointField.tangentImpulse] = vf[op + VcP.tangentImpulse];
       }
     }
   }
