@@ -8,14 +8,14 @@
 // rounds are pooled for the median and p95. The last round then runs `allocSteps` more steps to
 // count allocated bytes (see memory.mjs), and reads the heap growth, counts and sanity check.
 import { execFileSync } from 'node:child_process';
-import { mkdirSync, mkdtempSync, writeFileSync, rmSync } from 'node:fs';
+import { mkdirSync, mkdtempSync, readdirSync, readFileSync, writeFileSync, rmSync } from 'node:fs';
 import os from 'node:os';
 import v8 from 'node:v8';
 import path from 'node:path';
 import { Bench, hrtimeNow } from 'tinybench';
 import { SCENE_IDS, makeScene, sceneStepper, totalBodies } from './scenes.mjs';
 import { fullGC, retainedHeap, measureAllocation } from './memory.mjs';
-import { formatSceneTables, chartSvg, markdownSummary, compactSummary } from './report.mjs';
+import { formatSceneTables, chartSvg, markdownSummary, compactSummary, describeCaches } from './report.mjs';
 import { repoRoot } from './engines/common.mjs';
 import webphysics from './engines/webphysics.mjs';
 import box2dWasm from './engines/box2d-wasm.mjs';
@@ -96,11 +96,47 @@ function machine() {
     cpus: cpus.length,
     cpuModel: cpus[0]?.model ?? 'unknown',
     memoryGiB: Math.round(os.totalmem() / 2 ** 30),
+    caches: cpuCaches(),
     node: process.version,
     v8: process.versions.v8,
     platform: `${os.platform()} ${os.release()} ${os.arch()}`,
   };
 }
+
+/**
+ * The first CPU's data caches, as Linux lists them in sysfs: [{ level, kib, sharedBy }], sharedBy
+ * the number of CPUs sharing that cache; [] where sysfs has no such list. Recorded because the
+ * ratio of a JavaScript engine to a WebAssembly one moves with them more than with anything else:
+ * bench2d's data fits a 2 MiB cache for box2d-wasm and not for WebPhysics (bench/README.md).
+ */
+export function cpuCaches(dir = '/sys/devices/system/cpu/cpu0/cache') {
+  let entries;
+  try {
+    entries = readdirSync(dir).filter((e) => /^index\d+$/.test(e));
+  } catch {
+    return [];
+  }
+  const read = (e, f) => readFileSync(path.join(dir, e, f), 'utf8').trim();
+  const out = [];
+  for (const e of entries) {
+    if (read(e, 'type') === 'Instruction') continue;
+    const size = /^(\d+)K$/.exec(read(e, 'size'));
+    if (!size) continue;
+    out.push({ level: Number(read(e, 'level')), kib: Number(size[1]), sharedBy: cpuCount(read(e, 'shared_cpu_list')) });
+  }
+  return out.sort((a, b) => a.level - b.level);
+}
+
+/** The number of CPUs in a sysfs CPU list such as "0-3,8". */
+function cpuCount(list) {
+  let n = 0;
+  for (const part of list.split(',')) {
+    const [lo, hi = lo] = part.split('-').map(Number);
+    n += hi - lo + 1;
+  }
+  return n;
+}
+
 
 function quantile(sorted, q) {
   if (sorted.length === 0) return null;
@@ -211,7 +247,8 @@ export async function runBench(options = {}) {
   v8.setFlagsFromString('--no-flush-bytecode');
   const started = new Date();
   const m = machine();
-  o.log(`webphysics bench: ${m.cpus} x ${m.cpuModel}, Node ${m.node}, ${started.toISOString()}`);
+  const caches = m.caches.length ? `, ${describeCaches(m.caches)}` : '';
+  o.log(`webphysics bench: ${m.cpus} x ${m.cpuModel}${caches}, Node ${m.node}, ${started.toISOString()}`);
 
   let built = null;
   let oursBundle = o.ours;

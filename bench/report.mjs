@@ -150,6 +150,15 @@ export function chartSvg(scene, run) {
 const md = (v) => (v === null || v === undefined ? '–' : ms(v));
 
 /**
+ * "L1 48 KiB, L2 2 MiB, L3 480 MiB shared by 2 CPUs": a machine's data caches (harness.mjs
+ * cpuCaches) in words; "" for none (results from before they were recorded have none).
+ */
+export function describeCaches(caches = []) {
+  const size = (kib) => (kib >= 1024 && kib % 1024 === 0 ? `${kib / 1024} MiB` : `${kib} KiB`);
+  return caches.map((c) => `L${c.level} ${size(c.kib)}${c.sharedBy > 1 ? ` shared by ${c.sharedBy} CPUs` : ''}`).join(', ');
+}
+
+/**
  * Markdown tables of a results object, one per scene: median (p95) ms per step with sleeping off
  * and on, the ratio to WebPhysics, and allocation per step. For the README's Benchmarks section.
  */
@@ -157,7 +166,7 @@ export function markdownSummary(run, chartDir = 'bench/results') {
   const out = [];
   const m = run.machine;
   out.push(
-    `Measured ${run.date.slice(0, 10)} on ${m.cpus} cores (${m.cpuModel}), Node ${m.node}, ${m.platform}; ` +
+    `Measured ${run.date.slice(0, 10)} on ${m.cpus} cores (${m.cpuModel}${m.caches?.length ? `; ${describeCaches(m.caches)}` : ''}), Node ${m.node}, ${m.platform}; ` +
       `whole run ${Math.round(run.durationSeconds / 60)} min. Median (p95) ms per step; x ours = median / WebPhysics median ` +
       `(below 1: faster than WebPhysics); alloc = JavaScript heap bytes allocated per step (with sleeping off when that was run).`,
   );

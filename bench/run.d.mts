@@ -72,13 +72,25 @@ export interface SceneResult {
 export interface BenchResults {
   schema: 'webphysics-bench/1';
   date: string;
-  machine: { cpus: number; cpuModel: string; memoryGiB: number; node: string; v8: string; platform: string };
+  machine: { cpus: number; cpuModel: string; memoryGiB: number; caches: CpuCache[]; node: string; v8: string; platform: string };
   options: Record<string, unknown>;
   engines: { id: string; name: string; package: string; version: string | null; family: string; notes: string[]; loadError: string | null }[];
   scenes: SceneResult[];
   durationSeconds: number;
   files?: string[];
 }
+
+/** A data cache of the first CPU: its level, size and how many CPUs share it. */
+export interface CpuCache {
+  level: number;
+  kib: number;
+  sharedBy: number;
+}
+
+/** The first CPU's data caches from Linux's sysfs (`dir`, default /sys/devices/system/cpu/cpu0/cache); [] where there is none. */
+export function cpuCaches(dir?: string): CpuCache[];
+/** The caches in words, e.g. "L1 48 KiB, L2 2 MiB, L3 480 MiB shared by 2 CPUs"; "" for none. */
+export function describeCaches(caches?: CpuCache[]): string;
 
 export const SCENE_IDS: string[];
 export const ENGINE_IDS: string[];

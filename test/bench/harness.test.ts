@@ -1,10 +1,10 @@
 // Smoke test of the benchmark harness (bench/): one small scene, our engine and one peer, quick mode.
 // No timing assertions: speed is what `npm run bench` measures, never a unit test.
-import { mkdtempSync, readFileSync, readdirSync, rmSync } from 'node:fs';
+import { mkdirSync, mkdtempSync, readFileSync, readdirSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { runBench, type BenchResults } from '../../bench/run.mjs';
+import { cpuCaches, describeCaches, runBench, type BenchResults } from '../../bench/run.mjs';
 import { makeScene, SCENE_IDS } from '../../bench/scenes.mjs';
 import { measureAllocation } from '../../bench/memory.mjs';
 import { loadBox2DWeb } from '../../bench/engines/box2dweb.mjs';
@@ -48,6 +48,7 @@ describe('runBench in quick mode', () => {
     expect(json.schema).toBe('webphysics-bench/1');
     expect(json.machine.node).toBe(process.version);
     expect(json.machine.cpus).toBeGreaterThan(0);
+    expect(json.machine.caches).toEqual(cpuCaches());
     expect(json.engines.map((e) => e.id)).toEqual(['webphysics', 'planck']);
     for (const e of json.engines) {
       expect(e.loadError).toBeNull();
@@ -146,5 +147,38 @@ describe('Box2DWeb 2.1a loader', () => {
     body.CreateFixture(fd);
     for (let i = 0; i < 60; i++) world.Step(1 / 60, 8, 3);
     expect(body.GetPosition().y).toBeLessThan(0);
+  });
+});
+
+describe('the machine record', () => {
+  it("reads the first CPU's data caches from sysfs, skipping instruction caches, and says them in words", () => {
+    const dir = mkdtempSync(path.join(tmpdir(), 'webphysics-caches-'));
+    try {
+      const index = (n: number, level: number, type: string, size: string, shared: string): void => {
+        const d = path.join(dir, `index${n}`);
+        mkdirSync(d);
+        for (const [f, v] of Object.entries({ level, type, size, shared_cpu_list: shared })) writeFileSync(path.join(d, f), `${v}\n`);
+      };
+      index(0, 1, 'Data', '32K', '0');
+      index(1, 1, 'Instruction', '32K', '0');
+      index(2, 2, 'Unified', '2048K', '0');
+      index(3, 3, 'Unified', '491520K', '0-1,4,6-7');
+      writeFileSync(path.join(dir, 'uevent'), '');
+      const caches = cpuCaches(dir);
+      expect(caches).toEqual([
+        { level: 1, kib: 32, sharedBy: 1 },
+        { level: 2, kib: 2048, sharedBy: 1 },
+        { level: 3, kib: 491520, sharedBy: 5 },
+      ]);
+      expect(describeCaches(caches)).toBe('L1 32 KiB, L2 2 MiB, L3 480 MiB shared by 5 CPUs');
+    } finally {
+      rmSync(dir, { recursive: true, force: true });
+    }
+  });
+
+  it('has no caches where sysfs lists none, and says nothing of them', () => {
+    expect(cpuCaches(path.join(tmpdir(), 'webphysics-no-such-dir'))).toEqual([]);
+    expect(describeCaches([])).toBe('');
+    expect(describeCaches()).toBe('');
   });
 });
