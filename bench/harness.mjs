@@ -119,10 +119,14 @@ export function cpuCaches(dir = '/sys/devices/system/cpu/cpu0/cache') {
   const read = (e, f) => readFileSync(path.join(dir, e, f), 'utf8').trim();
   const out = [];
   for (const e of entries) {
-    if (read(e, 'type') === 'Instruction') continue;
-    const size = /^(\d+)K$/.exec(read(e, 'size'));
-    if (!size) continue;
-    out.push({ level: Number(read(e, 'level')), kib: Number(size[1]), sharedBy: cpuCount(read(e, 'shared_cpu_list')) });
+    try {
+      if (read(e, 'type') === 'Instruction') continue;
+      const size = /^(\d+)K$/.exec(read(e, 'size'));
+      if (!size) continue;
+      out.push({ level: Number(read(e, 'level')), kib: Number(size[1]), sharedBy: cpuCount(read(e, 'shared_cpu_list')) });
+    } catch {
+      // An entry without the files above (some kernels and containers): left out.
+    }
   }
   return out.sort((a, b) => a.level - b.level);
 }
@@ -136,7 +140,6 @@ function cpuCount(list) {
   }
   return n;
 }
-
 
 function quantile(sorted, q) {
   if (sorted.length === 0) return null;

@@ -151,7 +151,7 @@ describe('Box2DWeb 2.1a loader', () => {
 });
 
 describe('the machine record', () => {
-  it("reads the first CPU's data caches from sysfs, skipping instruction caches, and says them in words", () => {
+  it("reads the first CPU's data caches from sysfs, skipping instruction caches and unreadable entries, and says them in words", () => {
     const dir = mkdtempSync(path.join(tmpdir(), 'webphysics-caches-'));
     try {
       const index = (n: number, level: number, type: string, size: string, shared: string): void => {
@@ -163,6 +163,7 @@ describe('the machine record', () => {
       index(1, 1, 'Instruction', '32K', '0');
       index(2, 2, 'Unified', '2048K', '0');
       index(3, 3, 'Unified', '491520K', '0-1,4,6-7');
+      mkdirSync(path.join(dir, 'index4'));
       writeFileSync(path.join(dir, 'uevent'), '');
       const caches = cpuCaches(dir);
       expect(caches).toEqual([
