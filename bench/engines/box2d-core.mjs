@@ -87,6 +87,10 @@ export default {
     const iterations = { velocityIterations: scene.velocityIterations, positionIterations: scene.positionIterations };
     return {
       step: () => world.Step(dt, iterations),
+      setIterations: (v, p) => {
+        iterations.velocityIterations = v;
+        iterations.positionIterations = p;
+      },
       add,
       bodyCount: () => world.GetBodyCount(),
       contactCount: () => world.GetContactCount(),

@@ -131,9 +131,14 @@ export default {
     }
     freeTemp();
 
-    const { dt, velocityIterations: vi, positionIterations: pi } = scene;
+    const { dt } = scene;
+    let { velocityIterations: vi, positionIterations: pi } = scene;
     return {
       step: () => world.Step(dt, vi, pi),
+      setIterations: (v, p) => {
+        vi = v;
+        pi = p;
+      },
       add,
       bodyCount: () => world.GetBodyCount(),
       contactCount: () => world.GetContactCount(),

@@ -134,11 +134,16 @@ export default {
       world.CreateJoint(jd);
     }
 
-    const { dt, velocityIterations: vi, positionIterations: pi } = scene;
+    const { dt } = scene;
+    let { velocityIterations: vi, positionIterations: pi } = scene;
     return {
       step: () => {
         world.Step(dt, vi, pi);
         world.ClearForces();
+      },
+      setIterations: (v, p) => {
+        vi = v;
+        pi = p;
       },
       add,
       bodyCount: () => world.GetBodyCount(),

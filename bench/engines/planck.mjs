@@ -71,9 +71,14 @@ export default {
       );
     }
 
-    const { dt, velocityIterations: vi, positionIterations: pi } = scene;
+    const { dt } = scene;
+    let { velocityIterations: vi, positionIterations: pi } = scene;
     return {
       step: () => world.step(dt, vi, pi),
+      setIterations: (v, p) => {
+        vi = v;
+        pi = p;
+      },
       add,
       bodyCount: () => world.getBodyCount(),
       contactCount: () => world.getContactCount(),

@@ -90,10 +90,14 @@ export default {
     }
 
     const dt = scene.dt;
-    const vi = scene.velocityIterations;
-    const pi = scene.positionIterations;
+    let vi = scene.velocityIterations;
+    let pi = scene.positionIterations;
     return {
       step: () => world.Step(dt, vi, pi),
+      setIterations: (v, p) => {
+        vi = v;
+        pi = p;
+      },
       add,
       bodyCount: () => world.GetBodyCount(),
       contactCount: () => world.GetContactCount(),
