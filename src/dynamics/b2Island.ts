@@ -25,7 +25,8 @@ import { b2SolverData, type b2Profile, type b2TimeStep } from './b2TimeStep';
 import { b2ContactImpulse, b2ContactListener } from './b2WorldCallbacks';
 import type { b2Contact } from './contacts/b2Contact';
 import { b2ContactSolver, b2ContactSolverDef, type b2ContactVelocityConstraint } from './contacts/b2ContactSolver';
-import type { b2Joint } from './joints/b2Joint';
+import { b2JointType, type b2Joint } from './joints/b2Joint';
+import { b2RevoluteSolvePosition, b2RevoluteSolveVelocity, type b2RevoluteJoint } from './joints/b2RevoluteJoint';
 
 /** This is an internal class. */
 export class b2Island {
@@ -43,6 +44,15 @@ export class b2Island {
    */
   m_positions = new Float64Array(0);
   m_velocities = new Float64Array(0);
+
+  /**
+   * Not in the C++: the solver record of joint i (a revolute joint's m_solverRecord, null for the
+   * other kinds) and its offset, noted after the joint's InitVelocityConstraints. The velocity and
+   * position passes run the revolute joints on their records (b2RevoluteSolveVelocity,
+   * b2RevoluteSolvePosition) without loading the joint objects, scattered over the heap.
+   */
+  private readonly m_jointRecords: (Float64Array | null)[] = [];
+  private m_jointRecordOffsets = new Int32Array(0);
 
   m_bodyCount = 0;
   m_jointCount = 0;
@@ -163,8 +173,20 @@ export class b2Island {
     }
 
     solverData.jointRecordCount = 0;
+    if (this.m_jointRecordOffsets.length < this.m_jointCount) {
+      this.m_jointRecordOffsets = new Int32Array(b2Max(this.m_jointCount, 2 * this.m_jointRecordOffsets.length));
+    }
+    const jointRecords = this.m_jointRecords;
+    const jointRecordOffsets = this.m_jointRecordOffsets;
     for (let i = 0; i < this.m_jointCount; ++i) {
-      this.m_joints[i].InitVelocityConstraints(solverData);
+      const joint = this.m_joints[i];
+      joint.InitVelocityConstraints(solverData);
+      if (joint.m_type === b2JointType.e_revoluteJoint) {
+        jointRecords[i] = (joint as b2RevoluteJoint).m_solverRecord;
+        jointRecordOffsets[i] = (joint as b2RevoluteJoint).m_recordOffset;
+      } else {
+        jointRecords[i] = null;
+      }
     }
 
     if (profile !== null) profile.solveInit = timer.GetMilliseconds();
@@ -173,7 +195,12 @@ export class b2Island {
     if (profile !== null) timer.Reset();
     for (let i = 0; i < step.velocityIterations; ++i) {
       for (let j = 0; j < this.m_jointCount; ++j) {
-        this.m_joints[j].SolveVelocityConstraints(solverData);
+        const record = jointRecords[j];
+        if (record !== null) {
+          b2RevoluteSolveVelocity(record, jointRecordOffsets[j], solverData);
+        } else {
+          this.m_joints[j].SolveVelocityConstraints(solverData);
+        }
       }
 
       contactSolver.SolveVelocityConstraints();
@@ -199,7 +226,11 @@ export class b2Island {
 
       let jointsOkay = true;
       for (let j = 0; j < this.m_jointCount; ++j) {
-        const jointOkay = this.m_joints[j].SolvePositionConstraints(solverData);
+        const record = jointRecords[j];
+        const jointOkay =
+          record !== null
+            ? b2RevoluteSolvePosition(record, jointRecordOffsets[j], solverData)
+            : this.m_joints[j].SolvePositionConstraints(solverData);
         jointsOkay = jointsOkay && jointOkay;
       }
 

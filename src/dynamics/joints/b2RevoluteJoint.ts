@@ -43,43 +43,57 @@ const s_noRecord = new Float64Array(0);
  * m_rA, m_mass...; StoreImpulses writes m_impulse and m_motorImpulse back after the velocity
  * iterations): the record only spares the solver's eight velocity and three position passes the
  * twenty-odd small heap objects those fields are (V8 boxes every double in an object field). In
- * a 10,000-body joint grid those passes were bound by memory latency.
+ * a 10,000-body joint grid those passes were bound by memory latency. The record holds all the
+ * passes read, so b2Island runs them (b2RevoluteSolveVelocity, b2RevoluteSolvePosition) without
+ * loading the joint objects either: with 19,800 joints that took a quarter to a third off a
+ * velocity pass (docs/PORTING.md).
  */
 const enum RJ {
-  rAx = 0,
-  rAy = 1,
-  rBx = 2,
-  rBy = 3,
-  invMassA = 4,
-  invMassB = 5,
-  invIA = 6,
-  invIB = 7,
+  // m_indexA, m_indexB and the flags the passes test (RJFlag), first: every pass reads them
+  indexA = 0,
+  indexB = 1,
+  flags = 2,
+  rAx = 3,
+  rAy = 4,
+  rBx = 5,
+  rBy = 6,
+  invMassA = 7,
+  invMassB = 8,
+  invIA = 9,
+  invIB = 10,
   // m_mass, column by column as b2Mat33: ex.x, ex.y, ex.z, ey.x...
-  massExX = 8,
-  massExY = 9,
-  massExZ = 10,
-  massEyX = 11,
-  massEyY = 12,
-  massEyZ = 13,
-  massEzX = 14,
-  massEzY = 15,
-  massEzZ = 16,
-  motorMass = 17,
-  impulseX = 18,
-  impulseY = 19,
-  impulseZ = 20,
-  motorImpulse = 21,
-  motorSpeed = 22,
-  maxMotorTorque = 23,
-  referenceAngle = 24,
-  lowerAngle = 25,
-  upperAngle = 26,
+  massExX = 11,
+  massExY = 12,
+  massExZ = 13,
+  massEyX = 14,
+  massEyY = 15,
+  massEyZ = 16,
+  massEzX = 17,
+  massEzY = 18,
+  massEzZ = 19,
+  motorMass = 20,
+  impulseX = 21,
+  impulseY = 22,
+  impulseZ = 23,
+  motorImpulse = 24,
+  motorSpeed = 25,
+  maxMotorTorque = 26,
+  referenceAngle = 27,
+  lowerAngle = 28,
+  upperAngle = 29,
   // m_localAnchorA - m_localCenterA and the same for B, as SolvePositionConstraints computes them
-  localAnchorAX = 27,
-  localAnchorAY = 28,
-  localAnchorBX = 29,
-  localAnchorBY = 30,
-  size = 31,
+  localAnchorAX = 30,
+  localAnchorAY = 31,
+  localAnchorBX = 32,
+  localAnchorBY = 33,
+  size = 34,
+}
+
+/** Bits of a solver record's RJ.flags: m_enableMotor, m_enableLimit and m_limitState above them. */
+const enum RJFlag {
+  enableMotor = 1,
+  enableLimit = 2,
+  limitStateShift = 2,
 }
 
 /**
@@ -340,6 +354,12 @@ export class b2RevoluteJoint extends b2Joint {
     t[rec + RJ.localAnchorAY] = this.m_localAnchorA.y - this.m_localCenterA.y;
     t[rec + RJ.localAnchorBX] = this.m_localAnchorB.x - this.m_localCenterB.x;
     t[rec + RJ.localAnchorBY] = this.m_localAnchorB.y - this.m_localCenterB.y;
+    t[rec + RJ.indexA] = this.m_indexA;
+    t[rec + RJ.indexB] = this.m_indexB;
+    t[rec + RJ.flags] =
+      (this.m_enableMotor ? RJFlag.enableMotor : 0) |
+      (this.m_enableLimit ? RJFlag.enableLimit : 0) |
+      (this.m_limitState << RJFlag.limitStateShift);
 
     velocities[oA] = vAx;
     velocities[oA + 1] = vAy;
@@ -350,146 +370,7 @@ export class b2RevoluteJoint extends b2Joint {
   }
 
   override SolveVelocityConstraints(data: b2SolverData): void {
-    const t = this.m_solverRecord;
-    const rec = this.m_recordOffset;
-    const oA = 3 * this.m_indexA;
-    const velocities = data.velocities;
-    const oB = 3 * this.m_indexB;
-    let vAx = velocities[oA];
-    let vAy = velocities[oA + 1];
-    let wA = velocities[oA + 2];
-    let vBx = velocities[oB];
-    let vBy = velocities[oB + 1];
-    let wB = velocities[oB + 2];
-
-    const mA = t[rec + RJ.invMassA];
-    const mB = t[rec + RJ.invMassB];
-    const iA = t[rec + RJ.invIA];
-    const iB = t[rec + RJ.invIB];
-    const rAx = t[rec + RJ.rAx];
-    const rAy = t[rec + RJ.rAy];
-    const rBx = t[rec + RJ.rBx];
-    const rBy = t[rec + RJ.rBy];
-
-    const fixedRotation = iA + iB === 0.0;
-
-    // Solve motor constraint.
-    if (this.m_enableMotor && this.m_limitState !== b2LimitState.e_equalLimits && fixedRotation === false) {
-      const Cdot = wB - wA - t[rec + RJ.motorSpeed];
-      let impulse = -t[rec + RJ.motorMass] * Cdot;
-      const oldImpulse = t[rec + RJ.motorImpulse];
-      const maxImpulse = data.step.dt * t[rec + RJ.maxMotorTorque];
-      const motorImpulse = b2Clamp(oldImpulse + impulse, -maxImpulse, maxImpulse);
-      t[rec + RJ.motorImpulse] = motorImpulse;
-      impulse = motorImpulse - oldImpulse;
-
-      wA -= iA * impulse;
-      wB += iB * impulse;
-    }
-
-    // Solve limit constraint.
-    if (this.m_enableLimit && this.m_limitState !== b2LimitState.e_inactiveLimit && fixedRotation === false) {
-      const Cdot1x = vBx - wB * rBy - vAx + wA * rAy;
-      const Cdot1y = vBy + wB * rBx - vAy - wA * rAx;
-      const Cdot2 = wB - wA;
-
-      // impulse = -m_mass.Solve33(Cdot), as b2Mat33.Solve33 computes it
-      const exx = t[rec + RJ.massExX];
-      const exy = t[rec + RJ.massExY];
-      const exz = t[rec + RJ.massExZ];
-      const eyx = t[rec + RJ.massEyX];
-      const eyy = t[rec + RJ.massEyY];
-      const eyz = t[rec + RJ.massEyZ];
-      const ezx = t[rec + RJ.massEzX];
-      const ezy = t[rec + RJ.massEzY];
-      const ezz = t[rec + RJ.massEzZ];
-      let det = exx * (eyy * ezz - eyz * ezy) + exy * (eyz * ezx - eyx * ezz) + exz * (eyx * ezy - eyy * ezx);
-      if (det !== 0.0) {
-        det = 1.0 / det;
-      }
-      let impulseX = -(det * (Cdot1x * (eyy * ezz - eyz * ezy) + Cdot1y * (eyz * ezx - eyx * ezz) + Cdot2 * (eyx * ezy - eyy * ezx)));
-      let impulseY = -(det * (exx * (Cdot1y * ezz - Cdot2 * ezy) + exy * (Cdot2 * ezx - Cdot1x * ezz) + exz * (Cdot1x * ezy - Cdot1y * ezx)));
-      let impulseZ = -(det * (exx * (eyy * Cdot2 - eyz * Cdot1y) + exy * (eyz * Cdot1x - eyx * Cdot2) + exz * (eyx * Cdot1y - eyy * Cdot1x)));
-
-      let reduced = false;
-      if (this.m_limitState === b2LimitState.e_atLowerLimit) {
-        reduced = t[rec + RJ.impulseZ] + impulseZ < 0.0;
-      } else if (this.m_limitState === b2LimitState.e_atUpperLimit) {
-        reduced = t[rec + RJ.impulseZ] + impulseZ > 0.0;
-      }
-
-      if (reduced) {
-        // The limit impulse would change sign: solve the point constraint alone with the limit
-        // impulse removed. reduced = m_mass.Solve22(rhs), as b2Mat33.Solve22 computes it.
-        const oldImpulseZ = t[rec + RJ.impulseZ];
-        const rhsX = -Cdot1x + oldImpulseZ * ezx;
-        const rhsY = -Cdot1y + oldImpulseZ * ezy;
-        let det2 = exx * eyy - eyx * exy;
-        if (det2 !== 0.0) {
-          det2 = 1.0 / det2;
-        }
-        const reducedX = det2 * (eyy * rhsX - eyx * rhsY);
-        const reducedY = det2 * (exx * rhsY - exy * rhsX);
-        impulseX = reducedX;
-        impulseY = reducedY;
-        impulseZ = -oldImpulseZ;
-        t[rec + RJ.impulseX] += reducedX;
-        t[rec + RJ.impulseY] += reducedY;
-        t[rec + RJ.impulseZ] = 0.0;
-      } else {
-        // m_impulse += impulse (e_equalLimits, or a limit impulse that keeps its sign)
-        t[rec + RJ.impulseX] += impulseX;
-        t[rec + RJ.impulseY] += impulseY;
-        t[rec + RJ.impulseZ] += impulseZ;
-      }
-
-      const Px = impulseX;
-      const Py = impulseY;
-
-      vAx -= mA * Px;
-      vAy -= mA * Py;
-      wA -= iA * (rAx * Py - rAy * Px + impulseZ);
-
-      vBx += mB * Px;
-      vBy += mB * Py;
-      wB += iB * (rBx * Py - rBy * Px + impulseZ);
-    } else {
-      // Solve point-to-point constraint
-      const Cdotx = vBx - wB * rBy - vAx + wA * rAy;
-      const Cdoty = vBy + wB * rBx - vAy - wA * rAx;
-
-      // impulse = m_mass.Solve22(-Cdot), as b2Mat33.Solve22 computes it
-      const a11 = t[rec + RJ.massExX];
-      const a12 = t[rec + RJ.massEyX];
-      const a21 = t[rec + RJ.massExY];
-      const a22 = t[rec + RJ.massEyY];
-      let det = a11 * a22 - a12 * a21;
-      if (det !== 0.0) {
-        det = 1.0 / det;
-      }
-      const bx = -Cdotx;
-      const by = -Cdoty;
-      const impulseX = det * (a22 * bx - a12 * by);
-      const impulseY = det * (a11 * by - a21 * bx);
-
-      t[rec + RJ.impulseX] += impulseX;
-      t[rec + RJ.impulseY] += impulseY;
-
-      vAx -= mA * impulseX;
-      vAy -= mA * impulseY;
-      wA -= iA * (rAx * impulseY - rAy * impulseX);
-
-      vBx += mB * impulseX;
-      vBy += mB * impulseY;
-      wB += iB * (rBx * impulseY - rBy * impulseX);
-    }
-
-    velocities[oA] = vAx;
-    velocities[oA + 1] = vAy;
-    velocities[oA + 2] = wA;
-    velocities[oB] = vBx;
-    velocities[oB + 1] = vBy;
-    velocities[oB + 2] = wB;
+    b2RevoluteSolveVelocity(this.m_solverRecord, this.m_recordOffset, data);
   }
 
   /** The impulses the velocity iterations accumulated in the solver record, back to the fields. */
@@ -503,105 +384,7 @@ export class b2RevoluteJoint extends b2Joint {
   }
 
   override SolvePositionConstraints(data: b2SolverData): boolean {
-    const t = this.m_solverRecord;
-    const rec = this.m_recordOffset;
-    const oA = 3 * this.m_indexA;
-    const positions = data.positions;
-    const oB = 3 * this.m_indexB;
-    let cAx = positions[oA];
-    let cAy = positions[oA + 1];
-    let aA = positions[oA + 2];
-    let cBx = positions[oB];
-    let cBy = positions[oB + 1];
-    let aB = positions[oB + 2];
-
-    let angularError = 0.0;
-    let positionError = 0.0;
-
-    const mA = t[rec + RJ.invMassA];
-    const mB = t[rec + RJ.invMassB];
-    const iA = t[rec + RJ.invIA];
-    const iB = t[rec + RJ.invIB];
-
-    const fixedRotation = iA + iB === 0.0;
-
-    // Solve angular limit constraint.
-    if (this.m_enableLimit && this.m_limitState !== b2LimitState.e_inactiveLimit && fixedRotation === false) {
-      const angle = aB - aA - t[rec + RJ.referenceAngle];
-      let limitImpulse = 0.0;
-
-      if (this.m_limitState === b2LimitState.e_equalLimits) {
-        // Prevent large angular corrections
-        const C = b2Clamp(angle - t[rec + RJ.lowerAngle], -b2_maxAngularCorrection, b2_maxAngularCorrection);
-        limitImpulse = -t[rec + RJ.motorMass] * C;
-        angularError = b2Abs(C);
-      } else if (this.m_limitState === b2LimitState.e_atLowerLimit) {
-        let C = angle - t[rec + RJ.lowerAngle];
-        angularError = -C;
-
-        // Prevent large angular corrections and allow some slop.
-        C = b2Clamp(C + b2_angularSlop, -b2_maxAngularCorrection, 0.0);
-        limitImpulse = -t[rec + RJ.motorMass] * C;
-      } else if (this.m_limitState === b2LimitState.e_atUpperLimit) {
-        let C = angle - t[rec + RJ.upperAngle];
-        angularError = C;
-
-        // Prevent large angular corrections and allow some slop.
-        C = b2Clamp(C - b2_angularSlop, 0.0, b2_maxAngularCorrection);
-        limitImpulse = -t[rec + RJ.motorMass] * C;
-      }
-
-      aA -= iA * limitImpulse;
-      aB += iB * limitImpulse;
-    }
-
-    // Solve point-to-point constraint.
-    {
-      // The C++ also builds qA/qB from the initial angles; only these rotations are ever read.
-      const qA = s_qA.Set(aA);
-      const qB = s_qB.Set(aB);
-      // rA = b2Mul(qA, m_localAnchorA - m_localCenterA); likewise rB.
-      const lAx = t[rec + RJ.localAnchorAX];
-      const lAy = t[rec + RJ.localAnchorAY];
-      const lBx = t[rec + RJ.localAnchorBX];
-      const lBy = t[rec + RJ.localAnchorBY];
-      const rAx = qA.c * lAx - qA.s * lAy;
-      const rAy = qA.s * lAx + qA.c * lAy;
-      const rBx = qB.c * lBx - qB.s * lBy;
-      const rBy = qB.s * lBx + qB.c * lBy;
-
-      const Cx = cBx + rBx - cAx - rAx;
-      const Cy = cBy + rBy - cAy - rAy;
-      positionError = Math.sqrt(Cx * Cx + Cy * Cy);
-
-      // K = [[k11, k12], [k12, k22]]; impulse = -K.Solve(C), as b2Mat22.Solve computes it
-      const k11 = mA + mB + iA * rAy * rAy + iB * rBy * rBy;
-      const k12 = -iA * rAx * rAy - iB * rBx * rBy;
-      const k22 = mA + mB + iA * rAx * rAx + iB * rBx * rBx;
-      let det = k11 * k22 - k12 * k12;
-      if (det !== 0.0) {
-        det = 1.0 / det;
-      }
-      const impulseX = -(det * (k22 * Cx - k12 * Cy));
-      const impulseY = -(det * (k11 * Cy - k12 * Cx));
-
-      cAx -= mA * impulseX;
-      cAy -= mA * impulseY;
-      aA -= iA * (rAx * impulseY - rAy * impulseX);
-
-      cBx += mB * impulseX;
-      cBy += mB * impulseY;
-      aB += iB * (rBx * impulseY - rBy * impulseX);
-    }
-
-    positions[oA] = cAx;
-    positions[oA + 1] = cAy;
-    positions[oA + 2] = aA;
-    positions[oB] = cBx;
-    positions[oB + 1] = cBy;
-    positions[oB + 2] = aB;
-
-    return positionError <= b2_linearSlop && angularError <= b2_angularSlop;
+    return b2RevoluteSolvePosition(this.m_solverRecord, this.m_recordOffset, data);
   }
 
   override GetAnchorA(out: b2Vec2): b2Vec2 {
@@ -755,4 +538,251 @@ export class b2RevoluteJoint extends b2Joint {
     b2Log('  jd.maxMotorTorque = %.15lef;\n', this.m_maxMotorTorque);
     b2Log('  joints[%d] = m_world->CreateJoint(&jd);\n', this.m_index);
   }
+}
+
+/** b2RevoluteJoint.SolveVelocityConstraints on the joint's solver record (RJ) at rec in t. */
+export function b2RevoluteSolveVelocity(t: Float64Array, rec: number, data: b2SolverData): void {
+  const oA = 3 * t[rec + RJ.indexA];
+  const velocities = data.velocities;
+  const oB = 3 * t[rec + RJ.indexB];
+  const flags = t[rec + RJ.flags];
+  const limitState = flags >> RJFlag.limitStateShift;
+  let vAx = velocities[oA];
+  let vAy = velocities[oA + 1];
+  let wA = velocities[oA + 2];
+  let vBx = velocities[oB];
+  let vBy = velocities[oB + 1];
+  let wB = velocities[oB + 2];
+
+  const mA = t[rec + RJ.invMassA];
+  const mB = t[rec + RJ.invMassB];
+  const iA = t[rec + RJ.invIA];
+  const iB = t[rec + RJ.invIB];
+  const rAx = t[rec + RJ.rAx];
+  const rAy = t[rec + RJ.rAy];
+  const rBx = t[rec + RJ.rBx];
+  const rBy = t[rec + RJ.rBy];
+
+  const fixedRotation = iA + iB === 0.0;
+
+  // Solve motor constraint.
+  if ((flags & RJFlag.enableMotor) !== 0 && limitState !== b2LimitState.e_equalLimits && fixedRotation === false) {
+    const Cdot = wB - wA - t[rec + RJ.motorSpeed];
+    let impulse = -t[rec + RJ.motorMass] * Cdot;
+    const oldImpulse = t[rec + RJ.motorImpulse];
+    const maxImpulse = data.step.dt * t[rec + RJ.maxMotorTorque];
+    const motorImpulse = b2Clamp(oldImpulse + impulse, -maxImpulse, maxImpulse);
+    t[rec + RJ.motorImpulse] = motorImpulse;
+    impulse = motorImpulse - oldImpulse;
+
+    wA -= iA * impulse;
+    wB += iB * impulse;
+  }
+
+  // Solve limit constraint.
+  if ((flags & RJFlag.enableLimit) !== 0 && limitState !== b2LimitState.e_inactiveLimit && fixedRotation === false) {
+    const Cdot1x = vBx - wB * rBy - vAx + wA * rAy;
+    const Cdot1y = vBy + wB * rBx - vAy - wA * rAx;
+    const Cdot2 = wB - wA;
+
+    // impulse = -m_mass.Solve33(Cdot), as b2Mat33.Solve33 computes it
+    const exx = t[rec + RJ.massExX];
+    const exy = t[rec + RJ.massExY];
+    const exz = t[rec + RJ.massExZ];
+    const eyx = t[rec + RJ.massEyX];
+    const eyy = t[rec + RJ.massEyY];
+    const eyz = t[rec + RJ.massEyZ];
+    const ezx = t[rec + RJ.massEzX];
+    const ezy = t[rec + RJ.massEzY];
+    const ezz = t[rec + RJ.massEzZ];
+    let det = exx * (eyy * ezz - eyz * ezy) + exy * (eyz * ezx - eyx * ezz) + exz * (eyx * ezy - eyy * ezx);
+    if (det !== 0.0) {
+      det = 1.0 / det;
+    }
+    let impulseX = -(det * (Cdot1x * (eyy * ezz - eyz * ezy) + Cdot1y * (eyz * ezx - eyx * ezz) + Cdot2 * (eyx * ezy - eyy * ezx)));
+    let impulseY = -(det * (exx * (Cdot1y * ezz - Cdot2 * ezy) + exy * (Cdot2 * ezx - Cdot1x * ezz) + exz * (Cdot1x * ezy - Cdot1y * ezx)));
+    let impulseZ = -(det * (exx * (eyy * Cdot2 - eyz * Cdot1y) + exy * (eyz * Cdot1x - eyx * Cdot2) + exz * (eyx * Cdot1y - eyy * Cdot1x)));
+
+    let reduced = false;
+    if (limitState === b2LimitState.e_atLowerLimit) {
+      reduced = t[rec + RJ.impulseZ] + impulseZ < 0.0;
+    } else if (limitState === b2LimitState.e_atUpperLimit) {
+      reduced = t[rec + RJ.impulseZ] + impulseZ > 0.0;
+    }
+
+    if (reduced) {
+      // The limit impulse would change sign: solve the point constraint alone with the limit
+      // impulse removed. reduced = m_mass.Solve22(rhs), as b2Mat33.Solve22 computes it.
+      const oldImpulseZ = t[rec + RJ.impulseZ];
+      const rhsX = -Cdot1x + oldImpulseZ * ezx;
+      const rhsY = -Cdot1y + oldImpulseZ * ezy;
+      let det2 = exx * eyy - eyx * exy;
+      if (det2 !== 0.0) {
+        det2 = 1.0 / det2;
+      }
+      const reducedX = det2 * (eyy * rhsX - eyx * rhsY);
+      const reducedY = det2 * (exx * rhsY - exy * rhsX);
+      impulseX = reducedX;
+      impulseY = reducedY;
+      impulseZ = -oldImpulseZ;
+      t[rec + RJ.impulseX] += reducedX;
+      t[rec + RJ.impulseY] += reducedY;
+      t[rec + RJ.impulseZ] = 0.0;
+    } else {
+      // m_impulse += impulse (e_equalLimits, or a limit impulse that keeps its sign)
+      t[rec + RJ.impulseX] += impulseX;
+      t[rec + RJ.impulseY] += impulseY;
+      t[rec + RJ.impulseZ] += impulseZ;
+    }
+
+    const Px = impulseX;
+    const Py = impulseY;
+
+    vAx -= mA * Px;
+    vAy -= mA * Py;
+    wA -= iA * (rAx * Py - rAy * Px + impulseZ);
+
+    vBx += mB * Px;
+    vBy += mB * Py;
+    wB += iB * (rBx * Py - rBy * Px + impulseZ);
+  } else {
+    // Solve point-to-point constraint
+    const Cdotx = vBx - wB * rBy - vAx + wA * rAy;
+    const Cdoty = vBy + wB * rBx - vAy - wA * rAx;
+
+    // impulse = m_mass.Solve22(-Cdot), as b2Mat33.Solve22 computes it
+    const a11 = t[rec + RJ.massExX];
+    const a12 = t[rec + RJ.massEyX];
+    const a21 = t[rec + RJ.massExY];
+    const a22 = t[rec + RJ.massEyY];
+    let det = a11 * a22 - a12 * a21;
+    if (det !== 0.0) {
+      det = 1.0 / det;
+    }
+    const bx = -Cdotx;
+    const by = -Cdoty;
+    const impulseX = det * (a22 * bx - a12 * by);
+    const impulseY = det * (a11 * by - a21 * bx);
+
+    t[rec + RJ.impulseX] += impulseX;
+    t[rec + RJ.impulseY] += impulseY;
+
+    vAx -= mA * impulseX;
+    vAy -= mA * impulseY;
+    wA -= iA * (rAx * impulseY - rAy * impulseX);
+
+    vBx += mB * impulseX;
+    vBy += mB * impulseY;
+    wB += iB * (rBx * impulseY - rBy * impulseX);
+  }
+
+  velocities[oA] = vAx;
+  velocities[oA + 1] = vAy;
+  velocities[oA + 2] = wA;
+  velocities[oB] = vBx;
+  velocities[oB + 1] = vBy;
+  velocities[oB + 2] = wB;
+}
+
+/** b2RevoluteJoint.SolvePositionConstraints on the joint's solver record (RJ) at rec in t. */
+export function b2RevoluteSolvePosition(t: Float64Array, rec: number, data: b2SolverData): boolean {
+  const oA = 3 * t[rec + RJ.indexA];
+  const positions = data.positions;
+  const oB = 3 * t[rec + RJ.indexB];
+  const flags = t[rec + RJ.flags];
+  const limitState = flags >> RJFlag.limitStateShift;
+  let cAx = positions[oA];
+  let cAy = positions[oA + 1];
+  let aA = positions[oA + 2];
+  let cBx = positions[oB];
+  let cBy = positions[oB + 1];
+  let aB = positions[oB + 2];
+
+  let angularError = 0.0;
+  let positionError = 0.0;
+
+  const mA = t[rec + RJ.invMassA];
+  const mB = t[rec + RJ.invMassB];
+  const iA = t[rec + RJ.invIA];
+  const iB = t[rec + RJ.invIB];
+
+  const fixedRotation = iA + iB === 0.0;
+
+  // Solve angular limit constraint.
+  if ((flags & RJFlag.enableLimit) !== 0 && limitState !== b2LimitState.e_inactiveLimit && fixedRotation === false) {
+    const angle = aB - aA - t[rec + RJ.referenceAngle];
+    let limitImpulse = 0.0;
+
+    if (limitState === b2LimitState.e_equalLimits) {
+      // Prevent large angular corrections
+      const C = b2Clamp(angle - t[rec + RJ.lowerAngle], -b2_maxAngularCorrection, b2_maxAngularCorrection);
+      limitImpulse = -t[rec + RJ.motorMass] * C;
+      angularError = b2Abs(C);
+    } else if (limitState === b2LimitState.e_atLowerLimit) {
+      let C = angle - t[rec + RJ.lowerAngle];
+      angularError = -C;
+
+      // Prevent large angular corrections and allow some slop.
+      C = b2Clamp(C + b2_angularSlop, -b2_maxAngularCorrection, 0.0);
+      limitImpulse = -t[rec + RJ.motorMass] * C;
+    } else if (limitState === b2LimitState.e_atUpperLimit) {
+      let C = angle - t[rec + RJ.upperAngle];
+      angularError = C;
+
+      // Prevent large angular corrections and allow some slop.
+      C = b2Clamp(C - b2_angularSlop, 0.0, b2_maxAngularCorrection);
+      limitImpulse = -t[rec + RJ.motorMass] * C;
+    }
+
+    aA -= iA * limitImpulse;
+    aB += iB * limitImpulse;
+  }
+
+  // Solve point-to-point constraint.
+  {
+    // The C++ also builds qA/qB from the initial angles; only these rotations are ever read.
+    const qA = s_qA.Set(aA);
+    const qB = s_qB.Set(aB);
+    // rA = b2Mul(qA, m_localAnchorA - m_localCenterA); likewise rB.
+    const lAx = t[rec + RJ.localAnchorAX];
+    const lAy = t[rec + RJ.localAnchorAY];
+    const lBx = t[rec + RJ.localAnchorBX];
+    const lBy = t[rec + RJ.localAnchorBY];
+    const rAx = qA.c * lAx - qA.s * lAy;
+    const rAy = qA.s * lAx + qA.c * lAy;
+    const rBx = qB.c * lBx - qB.s * lBy;
+    const rBy = qB.s * lBx + qB.c * lBy;
+
+    const Cx = cBx + rBx - cAx - rAx;
+    const Cy = cBy + rBy - cAy - rAy;
+    positionError = Math.sqrt(Cx * Cx + Cy * Cy);
+
+    // K = [[k11, k12], [k12, k22]]; impulse = -K.Solve(C), as b2Mat22.Solve computes it
+    const k11 = mA + mB + iA * rAy * rAy + iB * rBy * rBy;
+    const k12 = -iA * rAx * rAy - iB * rBx * rBy;
+    const k22 = mA + mB + iA * rAx * rAx + iB * rBx * rBx;
+    let det = k11 * k22 - k12 * k12;
+    if (det !== 0.0) {
+      det = 1.0 / det;
+    }
+    const impulseX = -(det * (k22 * Cx - k12 * Cy));
+    const impulseY = -(det * (k11 * Cy - k12 * Cx));
+
+    cAx -= mA * impulseX;
+    cAy -= mA * impulseY;
+    aA -= iA * (rAx * impulseY - rAy * impulseX);
+
+    cBx += mB * impulseX;
+    cBy += mB * impulseY;
+    aB += iB * (rBx * impulseY - rBy * impulseX);
+  }
+
+  positions[oA] = cAx;
+  positions[oA + 1] = cAy;
+  positions[oA + 2] = aA;
+  positions[oB] = cBx;
+  positions[oB + 1] = cBy;
+  positions[oB + 2] = aB;
+
+  return positionError <= b2_linearSlop && angularError <= b2_angularSlop;
 }
