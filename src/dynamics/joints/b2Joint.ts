@@ -84,6 +84,11 @@ export class b2JointEdge {
   prev: b2JointEdge | null = null;
   /** The next joint edge in the body's joint list. */
   next: b2JointEdge | null = null;
+  /**
+   * Not in the C++: the joint's slot in its world's joint island flags (b2World, the C++'s
+   * b2Joint::m_islandFlag), the same on both edges; -1 while the joint is in no world.
+   */
+  islandSlot = -1;
 
   constructor(joint: b2Joint, other: b2Body) {
     this.joint = joint;
@@ -124,7 +129,6 @@ export abstract class b2Joint {
 
   m_index = 0;
 
-  m_islandFlag = false;
   m_collideConnected = false;
 
   m_userData: any = null;
