@@ -796,6 +796,36 @@ describe('b2World bodies, joints and destruction', () => {
     expect(a.GetJointList()).toBeNull();
   });
 
+  it("gives each joint an island slot on both edges, reuses a destroyed joint's slot, and solves every joint of a chain longer than the first slot array", () => {
+    const world = new b2World(new b2Vec2(0.0, -10.0));
+    const bodies = [createBody(world, b2BodyType.b2_staticBody, 0.0, 0.0)];
+    for (let i = 1; i <= 20; ++i) {
+      const b = createBody(world, b2BodyType.b2_dynamicBody, 2.0 * i, 0.0);
+      addBox(b, 0.25, 0.25, 1.0);
+      bodies.push(b);
+    }
+    const joints: b2Joint[] = [];
+    for (let i = 0; i < 20; ++i) joints.push(world.CreateJoint(distanceJointDef(bodies[i], bodies[i + 1])));
+    const slots = joints.map((j) => j.m_edgeA.islandSlot);
+    expect(joints.every((j) => j.m_edgeB.islandSlot === j.m_edgeA.islandSlot)).toBe(true);
+    expect([...slots].sort((x, y) => x - y)).toEqual([...Array(20).keys()]);
+
+    const removed = joints[7];
+    const slot = removed.m_edgeA.islandSlot;
+    world.DestroyJoint(removed);
+    expect(removed.m_edgeA.islandSlot).toBe(-1);
+    expect(removed.m_edgeB.islandSlot).toBe(-1);
+    joints[7] = world.CreateJoint(distanceJointDef(bodies[7], bodies[8]));
+    expect(joints[7].m_edgeA.islandSlot).toBe(slot);
+
+    // A joint left out of its island would let the chain stretch as it swings down.
+    for (let i = 0; i < 120; ++i) world.Step(h, 8, 3);
+    for (let i = 0; i < 20; ++i) {
+      const d = bodies[i + 1].GetPosition().Clone().Subtract(bodies[i].GetPosition()).Length();
+      expect(Math.abs(d - 2.0)).toBeLessThan(0.05);
+    }
+  });
+
   it('calls the destruction listener for the joints, then the fixtures, of a destroyed body', () => {
     const world = new b2World(new b2Vec2(0.0, 0.0));
     const a = createBody(world, b2BodyType.b2_dynamicBody, 0.0, 0.0);
