@@ -18,7 +18,7 @@
  * `vB.y + wB * rB.x`, the same IEEE operations as the C++ vector code.
  */
 
-import { b2Abs, b2Clamp, b2Mat33, b2MulRV, b2Rot, b2SubVV, b2Vec2, b2Vec3 } from '../../common/b2Math';
+import { b2Abs, b2Clamp, b2Rot, b2Vec2, b2Vec3 } from '../../common/b2Math';
 import {
   b2_angularSlop,
   b2_linearSlop,
@@ -39,11 +39,11 @@ const s_noRecord = new Float64Array(0);
  * The joint's solver record (m_solverRecord): what SolveVelocityConstraints and
  * SolvePositionConstraints read, copied by InitVelocityConstraints into the island's joint records
  * (one Float64Array, the joints' records one after the other in solver order), and the impulses
- * they accumulate. The fields remain the C++ ones (InitVelocityConstraints still sets
- * m_rA, m_mass...; StoreImpulses writes m_impulse and m_motorImpulse back after the velocity
- * iterations): the record only spares the solver's eight velocity and three position passes the
- * twenty-odd small heap objects those fields are (V8 boxes every double in an object field). In
- * a 10,000-body joint grid those passes were bound by memory latency. The record holds all the
+ * they accumulate (StoreImpulses writes m_impulse and m_motorImpulse back after the velocity
+ * iterations). It spares the solver's eight velocity and three position passes the twenty-odd
+ * small heap objects the C++'s fields would be (V8 boxes every double in an object field), and
+ * holds the C++'s solver temporaries outright. In a 10,000-body joint grid those passes were
+ * bound by memory latency. The record holds all the
  * passes read, so b2Island runs them (b2RevoluteSolveVelocity, b2RevoluteSolvePosition) without
  * loading the joint objects either: with 19,800 joints that took a quarter to a third off a
  * velocity pass (docs/PORTING.md).
@@ -176,19 +176,9 @@ export class b2RevoluteJoint extends b2Joint {
   m_lowerAngle = 0.0;
   m_upperAngle = 0.0;
 
-  // Solver temp
-  readonly m_rA = new b2Vec2();
-  readonly m_rB = new b2Vec2();
-  readonly m_localCenterA = new b2Vec2();
-  readonly m_localCenterB = new b2Vec2();
-  m_invMassA = 0.0;
-  m_invMassB = 0.0;
-  m_invIA = 0.0;
-  m_invIB = 0.0;
-  /** Effective mass for point-to-point constraint. */
-  readonly m_mass = new b2Mat33();
-  /** Effective mass for motor/limit angular constraint. */
-  m_motorMass = 0.0;
+  // The C++'s solver temporaries (m_rA, m_rB, m_localCenterA/B, m_invMassA/B, m_invIA/B, m_mass,
+  // m_motorMass) live only in the solver record (RJ): InitVelocityConstraints computes them in
+  // locals and writes them there.
 
   constructor(def: b2RevoluteJointDef) {
     super(def);
@@ -214,12 +204,12 @@ export class b2RevoluteJoint extends b2Joint {
     const bB = this.m_bodyB;
     this.m_indexA = bA.m_islandIndex;
     this.m_indexB = bB.m_islandIndex;
-    this.m_localCenterA.Assign(bA.m_sweep.localCenter);
-    this.m_localCenterB.Assign(bB.m_sweep.localCenter);
-    this.m_invMassA = bA.m_invMass;
-    this.m_invMassB = bB.m_invMass;
-    this.m_invIA = bA.m_invI;
-    this.m_invIB = bB.m_invI;
+    const localCenterA = bA.m_sweep.localCenter;
+    const localCenterB = bB.m_sweep.localCenter;
+    const mA = bA.m_invMass;
+    const mB = bB.m_invMass;
+    const iA = bA.m_invI;
+    const iB = bB.m_invI;
 
     const oA = 3 * this.m_indexA;
     const aA = data.positions[oA + 2];
@@ -237,8 +227,15 @@ export class b2RevoluteJoint extends b2Joint {
     const qA = s_qA.Set(aA);
     const qB = s_qB.Set(aB);
 
-    const rA = b2MulRV(qA, b2SubVV(this.m_localAnchorA, this.m_localCenterA, this.m_rA), this.m_rA);
-    const rB = b2MulRV(qB, b2SubVV(this.m_localAnchorB, this.m_localCenterB, this.m_rB), this.m_rB);
+    // rA = b2Mul(qA, m_localAnchorA - m_localCenterA), likewise rB, as b2MulRV computes them.
+    const dAx = this.m_localAnchorA.x - localCenterA.x;
+    const dAy = this.m_localAnchorA.y - localCenterA.y;
+    const dBx = this.m_localAnchorB.x - localCenterB.x;
+    const dBy = this.m_localAnchorB.y - localCenterB.y;
+    const rAx = qA.c * dAx - qA.s * dAy;
+    const rAy = qA.s * dAx + qA.c * dAy;
+    const rBx = qB.c * dBx - qB.s * dBy;
+    const rBy = qB.s * dBx + qB.c * dBy;
 
     // J = [-I -r1_skew I r2_skew]
     //     [ 0       -1 0       1]
@@ -249,27 +246,19 @@ export class b2RevoluteJoint extends b2Joint {
     //     [  -r1y*iA*r1x-r2y*iB*r2x, mA+r1x^2*iA+mB+r2x^2*iB,           r1x*iA+r2x*iB]
     //     [          -r1y*iA-r2y*iB,           r1x*iA+r2x*iB,                   iA+iB]
 
-    const mA = this.m_invMassA;
-    const mB = this.m_invMassB;
-    const iA = this.m_invIA;
-    const iB = this.m_invIB;
-
     const fixedRotation = iA + iB === 0.0;
 
-    const K = this.m_mass;
-    K.ex.x = mA + mB + rA.y * rA.y * iA + rB.y * rB.y * iB;
-    K.ey.x = -rA.y * rA.x * iA - rB.y * rB.x * iB;
-    K.ez.x = -rA.y * iA - rB.y * iB;
-    K.ex.y = K.ey.x;
-    K.ey.y = mA + mB + rA.x * rA.x * iA + rB.x * rB.x * iB;
-    K.ez.y = rA.x * iA + rB.x * iB;
-    K.ex.z = K.ez.x;
-    K.ey.z = K.ez.y;
-    K.ez.z = iA + iB;
+    // m_mass = K, column by column.
+    const exx = mA + mB + rAy * rAy * iA + rBy * rBy * iB;
+    const eyx = -rAy * rAx * iA - rBy * rBx * iB;
+    const ezx = -rAy * iA - rBy * iB;
+    const eyy = mA + mB + rAx * rAx * iA + rBx * rBx * iB;
+    const ezy = rAx * iA + rBx * iB;
+    const ezz = iA + iB;
 
-    this.m_motorMass = iA + iB;
-    if (this.m_motorMass > 0.0) {
-      this.m_motorMass = 1.0 / this.m_motorMass;
+    let motorMass = iA + iB;
+    if (motorMass > 0.0) {
+      motorMass = 1.0 / motorMass;
     }
 
     if (this.m_enableMotor === false || fixedRotation) {
@@ -308,11 +297,11 @@ export class b2RevoluteJoint extends b2Joint {
 
       vAx -= mA * Px;
       vAy -= mA * Py;
-      wA -= iA * (rA.x * Py - rA.y * Px + this.m_motorImpulse + this.m_impulse.z);
+      wA -= iA * (rAx * Py - rAy * Px + this.m_motorImpulse + this.m_impulse.z);
 
       vBx += mB * Px;
       vBy += mB * Py;
-      wB += iB * (rB.x * Py - rB.y * Px + this.m_motorImpulse + this.m_impulse.z);
+      wB += iB * (rBx * Py - rBy * Px + this.m_motorImpulse + this.m_impulse.z);
     } else {
       this.m_impulse.SetZero();
       this.m_motorImpulse = 0.0;
@@ -323,24 +312,31 @@ export class b2RevoluteJoint extends b2Joint {
     const t = data.jointRecords;
     this.m_solverRecord = t;
     this.m_recordOffset = rec;
-    t[rec + RJ.rAx] = rA.x;
-    t[rec + RJ.rAy] = rA.y;
-    t[rec + RJ.rBx] = rB.x;
-    t[rec + RJ.rBy] = rB.y;
+    t[rec + RJ.indexA] = this.m_indexA;
+    t[rec + RJ.indexB] = this.m_indexB;
+    t[rec + RJ.flags] =
+      (this.m_enableMotor ? RJFlag.enableMotor : 0) |
+      (this.m_enableLimit ? RJFlag.enableLimit : 0) |
+      (this.m_limitState << RJFlag.limitStateShift);
+    t[rec + RJ.rAx] = rAx;
+    t[rec + RJ.rAy] = rAy;
+    t[rec + RJ.rBx] = rBx;
+    t[rec + RJ.rBy] = rBy;
     t[rec + RJ.invMassA] = mA;
     t[rec + RJ.invMassB] = mB;
     t[rec + RJ.invIA] = iA;
     t[rec + RJ.invIB] = iB;
-    t[rec + RJ.massExX] = K.ex.x;
-    t[rec + RJ.massExY] = K.ex.y;
-    t[rec + RJ.massExZ] = K.ex.z;
-    t[rec + RJ.massEyX] = K.ey.x;
-    t[rec + RJ.massEyY] = K.ey.y;
-    t[rec + RJ.massEyZ] = K.ey.z;
-    t[rec + RJ.massEzX] = K.ez.x;
-    t[rec + RJ.massEzY] = K.ez.y;
-    t[rec + RJ.massEzZ] = K.ez.z;
-    t[rec + RJ.motorMass] = this.m_motorMass;
+    // K is symmetric: ex.y = ey.x, ex.z = ez.x, ey.z = ez.y.
+    t[rec + RJ.massExX] = exx;
+    t[rec + RJ.massExY] = eyx;
+    t[rec + RJ.massExZ] = ezx;
+    t[rec + RJ.massEyX] = eyx;
+    t[rec + RJ.massEyY] = eyy;
+    t[rec + RJ.massEyZ] = ezy;
+    t[rec + RJ.massEzX] = ezx;
+    t[rec + RJ.massEzY] = ezy;
+    t[rec + RJ.massEzZ] = ezz;
+    t[rec + RJ.motorMass] = motorMass;
     t[rec + RJ.impulseX] = this.m_impulse.x;
     t[rec + RJ.impulseY] = this.m_impulse.y;
     t[rec + RJ.impulseZ] = this.m_impulse.z;
@@ -350,16 +346,10 @@ export class b2RevoluteJoint extends b2Joint {
     t[rec + RJ.referenceAngle] = this.m_referenceAngle;
     t[rec + RJ.lowerAngle] = this.m_lowerAngle;
     t[rec + RJ.upperAngle] = this.m_upperAngle;
-    t[rec + RJ.localAnchorAX] = this.m_localAnchorA.x - this.m_localCenterA.x;
-    t[rec + RJ.localAnchorAY] = this.m_localAnchorA.y - this.m_localCenterA.y;
-    t[rec + RJ.localAnchorBX] = this.m_localAnchorB.x - this.m_localCenterB.x;
-    t[rec + RJ.localAnchorBY] = this.m_localAnchorB.y - this.m_localCenterB.y;
-    t[rec + RJ.indexA] = this.m_indexA;
-    t[rec + RJ.indexB] = this.m_indexB;
-    t[rec + RJ.flags] =
-      (this.m_enableMotor ? RJFlag.enableMotor : 0) |
-      (this.m_enableLimit ? RJFlag.enableLimit : 0) |
-      (this.m_limitState << RJFlag.limitStateShift);
+    t[rec + RJ.localAnchorAX] = dAx;
+    t[rec + RJ.localAnchorAY] = dAy;
+    t[rec + RJ.localAnchorBX] = dBx;
+    t[rec + RJ.localAnchorBY] = dBy;
 
     velocities[oA] = vAx;
     velocities[oA + 1] = vAy;
