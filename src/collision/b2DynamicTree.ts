@@ -4,7 +4,7 @@
  * Node ids are indices into a pool that grows exactly as the C++ one does (capacity 16, doubling,
  * LIFO free list), because proxy ids, and through them pair order, contact order and solver order,
  * are part of the result. Pool entries are objects that stay in place when the pool grows, so the
- * C++ memcpy has no counterpart here, except for m_fatAABBs (the leaves' fat AABBs again, packed).
+ * C++ memcpy has no counterpart here, except for m_fatAABBs (the nodes' AABBs again, packed).
  */
 
 import { b2Abs, b2AbsV, b2CrossSV, b2Max, b2Min, b2Vec2, b2Vec2Equals } from '../common/b2Math';
@@ -115,10 +115,11 @@ export class b2DynamicTree {
   m_insertionCount: number;
 
   /**
-   * Not in the C++: each leaf's fat AABB again (lower x, lower y, upper x, upper y at 4 * proxyId;
-   * other nodes' entries mean nothing), for the broad-phase's per-step reads (MoveProxy's
-   * containment test, b2BroadPhase.TestOverlap for every contact): one typed array, where the
-   * node's aabb is a node, an AABB, two vectors and four boxed coordinates to load.
+   * Not in the C++: each node's AABB again (lower x, lower y, upper x, upper y at 4 * node id; free
+   * nodes' entries mean nothing), written wherever a node's aabb is, for the per-step reads
+   * (MoveProxy's containment test, b2BroadPhase.TestOverlap for every contact, Query for every
+   * moved proxy): one typed array, where the node's aabb is a node, an AABB, two vectors and four
+   * boxed coordinates to load.
    */
   m_fatAABBs: Float64Array;
 
@@ -306,10 +307,10 @@ export class b2DynamicTree {
     return this.m_nodes[proxyId].aabb;
   }
 
-  /** Not in the C++: copies a leaf's fat AABB into m_fatAABBs. */
-  private SetFatAABB(proxyId: number, aabb: Readonly<b2AABB>): void {
+  /** Not in the C++: copies node `id`'s AABB into m_fatAABBs. */
+  private SetFatAABB(id: number, aabb: Readonly<b2AABB>): void {
     const fat = this.m_fatAABBs;
-    const o = 4 * proxyId;
+    const o = 4 * id;
     fat[o] = aabb.lowerBound.x;
     fat[o + 1] = aabb.lowerBound.y;
     fat[o + 2] = aabb.upperBound.x;
@@ -317,13 +318,13 @@ export class b2DynamicTree {
   }
 
   /**
-   * Not in the C++: refills m_fatAABBs from the leaves, for a reader that has set m_nodes and
+   * Not in the C++: refills m_fatAABBs from the nodes, for a reader that has set m_nodes and
    * m_nodeCapacity itself.
    */
   SyncFatAABBs(): void {
     this.m_fatAABBs = new Float64Array(4 * this.m_nodeCapacity);
     for (let i = 0; i < this.m_nodeCapacity; ++i) {
-      if (this.m_nodes[i].height === 0) {
+      if (this.m_nodes[i].height >= 0) {
         this.SetFatAABB(i, this.m_nodes[i].aabb);
       }
     }
@@ -344,18 +345,28 @@ export class b2DynamicTree {
           continue;
         }
 
-        const node = this.m_nodes[nodeId];
+        // b2TestOverlap(node.aabb, aabb) on the copy in m_fatAABBs (read here each time: a
+        // callback may add proxies, which can replace it): the same subtractions and tests.
+        const fat = this.m_fatAABBs;
+        const o = 4 * nodeId;
+        if (
+          aabb.lowerBound.x - fat[o + 2] > 0.0 ||
+          aabb.lowerBound.y - fat[o + 3] > 0.0 ||
+          fat[o] - aabb.upperBound.x > 0.0 ||
+          fat[o + 1] - aabb.upperBound.y > 0.0
+        ) {
+          continue;
+        }
 
-        if (b2TestOverlap(node.aabb, aabb)) {
-          if (node.IsLeaf()) {
-            const proceed = callback.QueryCallback(nodeId);
-            if (proceed === false) {
-              return;
-            }
-          } else {
-            stack.Push(node.child1);
-            stack.Push(node.child2);
+        const node = this.m_nodes[nodeId];
+        if (node.IsLeaf()) {
+          const proceed = callback.QueryCallback(nodeId);
+          if (proceed === false) {
+            return;
           }
+        } else {
+          stack.Push(node.child1);
+          stack.Push(node.child2);
         }
       }
     } finally {
@@ -572,6 +583,7 @@ export class b2DynamicTree {
     nodes[newParent].parent = oldParent;
     nodes[newParent].userData = null;
     nodes[newParent].aabb.Combine2(leafAABB, nodes[sibling].aabb);
+    this.SetFatAABB(newParent, nodes[newParent].aabb);
     nodes[newParent].height = nodes[sibling].height + 1;
 
     if (oldParent !== b2_nullNode) {
@@ -608,6 +620,7 @@ export class b2DynamicTree {
 
       nodes[index].height = 1 + b2Max(nodes[child1].height, nodes[child2].height);
       nodes[index].aabb.Combine2(nodes[child1].aabb, nodes[child2].aabb);
+      this.SetFatAABB(index, nodes[index].aabb);
 
       index = nodes[index].parent;
     }
@@ -648,6 +661,7 @@ export class b2DynamicTree {
         const child2 = nodes[index].child2;
 
         nodes[index].aabb.Combine2(nodes[child1].aabb, nodes[child2].aabb);
+        this.SetFatAABB(index, nodes[index].aabb);
         nodes[index].height = 1 + b2Max(nodes[child1].height, nodes[child2].height);
 
         index = nodes[index].parent;
@@ -715,6 +729,8 @@ export class b2DynamicTree {
         G.parent = iA;
         A.aabb.Combine2(B.aabb, G.aabb);
         C.aabb.Combine2(A.aabb, F.aabb);
+        this.SetFatAABB(iA, A.aabb);
+        this.SetFatAABB(iC, C.aabb);
 
         A.height = 1 + b2Max(B.height, G.height);
         C.height = 1 + b2Max(A.height, F.height);
@@ -724,6 +740,8 @@ export class b2DynamicTree {
         F.parent = iA;
         A.aabb.Combine2(B.aabb, F.aabb);
         C.aabb.Combine2(A.aabb, G.aabb);
+        this.SetFatAABB(iA, A.aabb);
+        this.SetFatAABB(iC, C.aabb);
 
         A.height = 1 + b2Max(B.height, F.height);
         C.height = 1 + b2Max(A.height, G.height);
@@ -765,6 +783,8 @@ export class b2DynamicTree {
         E.parent = iA;
         A.aabb.Combine2(C.aabb, E.aabb);
         B.aabb.Combine2(A.aabb, D.aabb);
+        this.SetFatAABB(iA, A.aabb);
+        this.SetFatAABB(iB, B.aabb);
 
         A.height = 1 + b2Max(C.height, E.height);
         B.height = 1 + b2Max(A.height, D.height);
@@ -774,6 +794,8 @@ export class b2DynamicTree {
         D.parent = iA;
         A.aabb.Combine2(C.aabb, D.aabb);
         B.aabb.Combine2(A.aabb, E.aabb);
+        this.SetFatAABB(iA, A.aabb);
+        this.SetFatAABB(iB, B.aabb);
 
         A.height = 1 + b2Max(C.height, D.height);
         B.height = 1 + b2Max(A.height, E.height);
@@ -1005,6 +1027,7 @@ export class b2DynamicTree {
       parent.child2 = index2;
       parent.height = 1 + b2Max(child1.height, child2.height);
       parent.aabb.Combine2(child1.aabb, child2.aabb);
+      this.SetFatAABB(parentIndex, parent.aabb);
       parent.parent = b2_nullNode;
 
       child1.parent = parentIndex;

@@ -352,7 +352,7 @@ describe('b2DynamicTree ray casts', () => {
 });
 
 describe('b2DynamicTree under random load', () => {
-  it('stays valid with bounded height and balance, its fat AABB copy (m_fatAABBs) exact, through thousands of create/move/destroy steps', () => {
+  it("stays valid with bounded height and balance, its copy of every node's AABB (m_fatAABBs) exact, through thousands of create/move/destroy steps", () => {
     const rnd = mulberry32(2024);
     const tree = new b2DynamicTree();
     const live: { id: number; aabb: b2AABB }[] = [];
@@ -386,6 +386,12 @@ describe('b2DynamicTree under random load', () => {
         expect(tree.GetMaxBalance()).toBeLessThanOrEqual(2);
         for (const p of live) {
           expect(Array.from(tree.m_fatAABBs.subarray(4 * p.id, 4 * p.id + 4))).toEqual(bounds(tree.GetFatAABB(p.id)));
+        }
+        // The internal nodes too: Query tests them on the copy.
+        for (let id = 0; id < tree.m_nodeCapacity; id++) {
+          if (tree.m_nodes[id].height > 0) {
+            expect(Array.from(tree.m_fatAABBs.subarray(4 * id, 4 * id + 4))).toEqual(bounds(tree.m_nodes[id].aabb));
+          }
         }
       }
     }
