@@ -8,6 +8,7 @@
 
 import type { b2Vec2 } from '../common/b2Math';
 import { b2Max, b2Min } from '../common/b2Math';
+import { b2Assert } from '../common/b2Settings';
 import { b2DynamicTree } from './b2DynamicTree';
 import type { b2TreeQueryCallback, b2TreeRayCastCallback } from './b2DynamicTree';
 import type { b2AABB, b2RayCastInput } from './b2Collision';
@@ -278,22 +279,45 @@ export class b2BroadPhase implements b2TreeQueryCallback {
   }
 }
 
+/**
+ * b2SortPairs sorts the pairs' ids packed into one double each, proxyIdA * 2^26 + proxyIdB (exact
+ * while ids stay below 2^26, and ordered as b2PairLessThan orders the pairs), then writes them
+ * back: the sort compares doubles in one typed array instead of loading two objects a comparison.
+ */
+const b2_pairKeyScale = 67108864;
+let s_pairKeys = new Float64Array(16);
+
 /*
- * std::sort of pairs[0, count) under b2PairLessThan, in place and without allocating: an
- * introsort (median-of-three quicksort, heapsort past a depth limit, insertion sort for short
- * runs). Elements that compare equal are duplicates with identical ids, so the sequence of id
- * pairs it leaves is the one std::sort leaves.
+ * std::sort of pairs[0, count) under b2PairLessThan, in place and without allocating (once the key
+ * array has grown): an introsort (median-of-three quicksort, heapsort past a depth limit, insertion
+ * sort for short runs) of the packed keys. Elements that compare equal are duplicates with
+ * identical ids, so the sequence of id pairs it leaves is the one std::sort leaves.
  */
 function b2SortPairs(pairs: b2Pair[], count: number): void {
   if (count < 2) {
     return;
   }
+  if (s_pairKeys.length < count) {
+    s_pairKeys = new Float64Array(b2Max(count, 2 * s_pairKeys.length));
+  }
+  const keys = s_pairKeys;
+  for (let i = 0; i < count; ++i) {
+    const pair = pairs[i];
+    b2Assert(pair.proxyIdB < b2_pairKeyScale, 'proxy id too large to pack');
+    keys[i] = pair.proxyIdA * b2_pairKeyScale + pair.proxyIdB;
+  }
   let depthLimit = 0;
   for (let n = count; n > 1; n >>= 1) {
     depthLimit += 2;
   }
-  b2IntroSort(pairs, 0, count, depthLimit);
-  b2InsertionSort(pairs, 0, count);
+  b2IntroSort(keys, 0, count, depthLimit);
+  b2InsertionSort(keys, 0, count);
+  for (let i = 0; i < count; ++i) {
+    const key = keys[i];
+    const proxyIdA = Math.floor(key / b2_pairKeyScale);
+    pairs[i].proxyIdA = proxyIdA;
+    pairs[i].proxyIdB = key - proxyIdA * b2_pairKeyScale;
+  }
 }
 
 /**
@@ -302,115 +326,115 @@ function b2SortPairs(pairs: b2Pair[], count: number): void {
  */
 const b2_sortThreshold = 16;
 
-function b2IntroSort(pairs: b2Pair[], first: number, last: number, depthLimit: number): void {
+function b2IntroSort(keys: Float64Array, first: number, last: number, depthLimit: number): void {
   while (last - first > b2_sortThreshold) {
     if (depthLimit === 0) {
-      b2HeapSort(pairs, first, last);
+      b2HeapSort(keys, first, last);
       return;
     }
     --depthLimit;
 
-    // Median of three moved to pairs[first] as the pivot.
+    // Median of three moved to keys[first] as the pivot.
     const mid = first + ((last - first) >> 1);
-    b2MoveMedianToFirst(pairs, first, first + 1, mid, last - 1);
-    const pivot = pairs[first];
+    b2MoveMedianToFirst(keys, first, first + 1, mid, last - 1);
+    const pivot = keys[first];
 
     // Unguarded Hoare partition of [first + 1, last): the median guards both ends.
     let lo = first + 1;
     let hi = last;
     for (;;) {
-      while (b2PairLessThan(pairs[lo], pivot)) {
+      while (keys[lo] < pivot) {
         ++lo;
       }
       --hi;
-      while (b2PairLessThan(pivot, pairs[hi])) {
+      while (pivot < keys[hi]) {
         --hi;
       }
       if (!(lo < hi)) {
         break;
       }
-      const t = pairs[lo];
-      pairs[lo] = pairs[hi];
-      pairs[hi] = t;
+      const t = keys[lo];
+      keys[lo] = keys[hi];
+      keys[hi] = t;
       ++lo;
     }
 
     // Recurse into the shorter side, loop on the longer one, so the stack stays logarithmic.
     if (lo - first < last - lo) {
-      b2IntroSort(pairs, first, lo, depthLimit);
+      b2IntroSort(keys, first, lo, depthLimit);
       first = lo;
     } else {
-      b2IntroSort(pairs, lo, last, depthLimit);
+      b2IntroSort(keys, lo, last, depthLimit);
       last = lo;
     }
   }
 }
 
-function b2MoveMedianToFirst(pairs: b2Pair[], result: number, a: number, b: number, c: number): void {
-  const pa = pairs[a];
-  const pb = pairs[b];
-  const pc = pairs[c];
+function b2MoveMedianToFirst(keys: Float64Array, result: number, a: number, b: number, c: number): void {
+  const pa = keys[a];
+  const pb = keys[b];
+  const pc = keys[c];
   let median: number;
-  if (b2PairLessThan(pa, pb)) {
-    if (b2PairLessThan(pb, pc)) {
+  if (pa < pb) {
+    if (pb < pc) {
       median = b;
-    } else if (b2PairLessThan(pa, pc)) {
+    } else if (pa < pc) {
       median = c;
     } else {
       median = a;
     }
-  } else if (b2PairLessThan(pa, pc)) {
+  } else if (pa < pc) {
     median = a;
-  } else if (b2PairLessThan(pb, pc)) {
+  } else if (pb < pc) {
     median = c;
   } else {
     median = b;
   }
-  const t = pairs[result];
-  pairs[result] = pairs[median];
-  pairs[median] = t;
+  const t = keys[result];
+  keys[result] = keys[median];
+  keys[median] = t;
 }
 
-function b2HeapSort(pairs: b2Pair[], first: number, last: number): void {
+function b2HeapSort(keys: Float64Array, first: number, last: number): void {
   const n = last - first;
   for (let start = (n >> 1) - 1; start >= 0; --start) {
-    b2SiftDown(pairs, first, start, n);
+    b2SiftDown(keys, first, start, n);
   }
   for (let end = n - 1; end > 0; --end) {
-    const t = pairs[first];
-    pairs[first] = pairs[first + end];
-    pairs[first + end] = t;
-    b2SiftDown(pairs, first, 0, end);
+    const t = keys[first];
+    keys[first] = keys[first + end];
+    keys[first + end] = t;
+    b2SiftDown(keys, first, 0, end);
   }
 }
 
-function b2SiftDown(pairs: b2Pair[], first: number, root: number, n: number): void {
+function b2SiftDown(keys: Float64Array, first: number, root: number, n: number): void {
   for (;;) {
     let child = 2 * root + 1;
     if (child >= n) {
       return;
     }
-    if (child + 1 < n && b2PairLessThan(pairs[first + child], pairs[first + child + 1])) {
+    if (child + 1 < n && keys[first + child] < keys[first + child + 1]) {
       ++child;
     }
-    if (!b2PairLessThan(pairs[first + root], pairs[first + child])) {
+    if (!(keys[first + root] < keys[first + child])) {
       return;
     }
-    const t = pairs[first + root];
-    pairs[first + root] = pairs[first + child];
-    pairs[first + child] = t;
+    const t = keys[first + root];
+    keys[first + root] = keys[first + child];
+    keys[first + child] = t;
     root = child;
   }
 }
 
-function b2InsertionSort(pairs: b2Pair[], first: number, last: number): void {
+function b2InsertionSort(keys: Float64Array, first: number, last: number): void {
   for (let i = first + 1; i < last; ++i) {
-    const value = pairs[i];
+    const value = keys[i];
     let j = i;
-    while (j > first && b2PairLessThan(value, pairs[j - 1])) {
-      pairs[j] = pairs[j - 1];
+    while (j > first && value < keys[j - 1]) {
+      keys[j] = keys[j - 1];
       --j;
     }
-    pairs[j] = value;
+    keys[j] = value;
   }
 }
