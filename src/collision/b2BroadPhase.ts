@@ -279,19 +279,18 @@ export class b2BroadPhase implements b2TreeQueryCallback {
   }
 }
 
-/**
- * b2SortPairs sorts the pairs' ids packed into one double each, proxyIdA * 2^26 + proxyIdB (exact
- * while ids stay below 2^26, and ordered as b2PairLessThan orders the pairs), then writes them
- * back: the sort compares doubles in one typed array instead of loading two objects a comparison.
- */
+/** A pair's sort key is proxyIdA * 2^26 + proxyIdB: exact while ids stay below 2^26. */
 const b2_pairKeyScale = 67108864;
+/** b2SortPairs' keys, grown as needed. */
 let s_pairKeys = new Float64Array(16);
 
 /*
  * std::sort of pairs[0, count) under b2PairLessThan, in place and without allocating (once the key
  * array has grown): an introsort (median-of-three quicksort, heapsort past a depth limit, insertion
- * sort for short runs) of the packed keys. Elements that compare equal are duplicates with
- * identical ids, so the sequence of id pairs it leaves is the one std::sort leaves.
+ * sort for short runs) of the pairs' packed keys, which order as b2PairLessThan orders the pairs,
+ * written back to the pairs after; a comparison is then one typed read, not two object loads.
+ * Elements that compare equal are duplicates with identical ids, so the sequence of id pairs it
+ * leaves is the one std::sort leaves.
  */
 function b2SortPairs(pairs: b2Pair[], count: number): void {
   if (count < 2) {
@@ -313,10 +312,12 @@ function b2SortPairs(pairs: b2Pair[], count: number): void {
   b2IntroSort(keys, 0, count, depthLimit);
   b2InsertionSort(keys, 0, count);
   for (let i = 0; i < count; ++i) {
+    // | 0: the ids go back as the small integers they were (a double stored in a field that has
+    // held only small integers would change the field's representation for every b2Pair).
     const key = keys[i];
-    const proxyIdA = Math.floor(key / b2_pairKeyScale);
+    const proxyIdA = (key / b2_pairKeyScale) | 0;
     pairs[i].proxyIdA = proxyIdA;
-    pairs[i].proxyIdB = key - proxyIdA * b2_pairKeyScale;
+    pairs[i].proxyIdB = (key - proxyIdA * b2_pairKeyScale) | 0;
   }
 }
 
