@@ -141,7 +141,8 @@ function cpuCount(list) {
   return n;
 }
 
-function quantile(sorted, q) {
+/** The q-quantile of ascending values `sorted`, interpolated between neighbours; null for none. */
+export function quantile(sorted, q) {
   if (sorted.length === 0) return null;
   const pos = (sorted.length - 1) * q;
   const lo = Math.floor(pos);

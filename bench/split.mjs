@@ -18,7 +18,7 @@ import { parseArgs } from 'node:util';
 import { pathToFileURL } from 'node:url';
 import os from 'node:os';
 import v8 from 'node:v8';
-import { ENGINES, OURS, SCENE_IDS, buildOurs, cpuCaches } from './harness.mjs';
+import { ENGINES, OURS, SCENE_IDS, buildOurs, cpuCaches, quantile } from './harness.mjs';
 import { fullGC } from './memory.mjs';
 import { describeCaches } from './report.mjs';
 import { makeScene, sceneStepper } from './scenes.mjs';
@@ -101,12 +101,6 @@ export function resolveSplitOptions(opts = {}) {
   };
 }
 
-function median(values) {
-  const s = [...values].sort((a, b) => a - b);
-  const mid = s.length >> 1;
-  return s.length % 2 ? s[mid] : (s[mid - 1] + s[mid]) / 2;
-}
-
 /**
  * One world whose steps take the iteration counts in turn (step i runs counts[i % n]), so every
  * count is timed on the same trajectory: a world run at one count alone settles differently, and
@@ -133,7 +127,7 @@ function timeWorld(engine, api, scene, vary, counts, preroll, steps) {
     times[k].push(performance.now() - t);
   }
   w.destroy();
-  return times.map(median);
+  return times.map((t) => quantile(t.sort((a, b) => a - b), 0.5));
 }
 
 /**
