@@ -148,8 +148,8 @@ export class b2RevoluteJointDef extends b2JointDef {
  * provided so that infinite forces are not generated.
  */
 export class b2RevoluteJoint extends b2Joint {
-  // The fields the solver's passes read on every iteration come first, out of the C++ order: V8
-  // lays an object's fields out in the order they are set, so these share one or two cache lines.
+  // Out of the C++ order: the fields InitVelocityConstraints copies into the solver record for the
+  // passes (which read only the record; b2Island), and where that record is.
   m_indexA = 0;
   m_indexB = 0;
   m_enableMotor = false;
