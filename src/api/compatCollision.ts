@@ -407,6 +407,7 @@ defineMethods(b2PolygonShape.prototype, {
     this.SetAsBox(hx, hy, center ?? b2Vec2_origin, angle ?? 0.0);
   },
   SetAsEdge(v1, v2) {
+    this.Reserve(2);
     this.m_vertexCount = 2;
     this.m_vertices[0].Assign(v1);
     this.m_vertices[1].Assign(v2);

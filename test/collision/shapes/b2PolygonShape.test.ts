@@ -85,7 +85,7 @@ describe('b2PolygonShape', () => {
       [-1, 0],
     ]);
     expect(box.m_centroid).toEqual(new b2Vec2(0, 0));
-    expect(box.m_vertices.length).toBe(8);
+    expect(box.m_vertices.length).toBe(4);
   });
 
   it('SetAsBox(hx, hy, center, angle) rotates then translates vertices and rotates normals', () => {
@@ -183,6 +183,23 @@ describe('b2PolygonShape', () => {
     input.p2.Set(3.0, 0.0);
     input.maxFraction = 1.0;
     expect(box.RayCast(output, input, xf, 0)).toBe(false);
+  });
+
+  it('holds as many vertex and normal vectors as the largest count set, and keeps them across a smaller one', () => {
+    const p = new b2PolygonShape();
+    expect(p.m_vertices.length).toBe(0);
+    const hexagon = Array.from({ length: 6 }, (_, i) => new b2Vec2(Math.cos(i), Math.sin(i)));
+    p.Set(hexagon, 6);
+    const sixth = p.m_vertices[5];
+    expect([p.m_vertices.length, p.m_normals.length]).toEqual([6, 6]);
+    p.SetAsBox(1, 1);
+    expect([p.m_vertexCount, p.m_vertices.length, p.m_normals.length]).toEqual([4, 6, 6]);
+    expect(p.m_vertices[5]).toBe(sixth);
+    expect(new Set([...p.m_vertices, ...p.m_normals]).size).toBe(12);
+    p.Reserve(3);
+    expect(p.m_vertices.length).toBe(6);
+    expect(() => p.Reserve(9)).toThrow('b2PolygonShape.Reserve: count must be an integer in [0, 8], got 9');
+    expect(p.m_vertices.length).toBe(6);
   });
 
   it('Clone copies vertices, normals, centroid and radius into independent storage', () => {
