@@ -2,6 +2,7 @@
  * A convex polygon (b2PolygonShape.h, b2PolygonShape.cpp).
  */
 
+import { b2MakeArray } from '../../common/b2MakeArray';
 import { b2Max, b2Min, b2MulRV, b2Rot, b2Vec2 } from '../../common/b2Math';
 import type { b2Transform } from '../../common/b2Math';
 import { b2_epsilon, b2_maxPolygonVertices, b2_polygonRadius, b2Assert } from '../../common/b2Settings';
@@ -68,8 +69,8 @@ export class b2PolygonShape extends b2Shape {
    * own here, and a box's eight unused ones took a third of its shape's memory and lay between
    * the ones each contact update reads (bench2d 4 % faster without them).
    */
-  readonly m_vertices: readonly b2Vec2[] = [];
-  readonly m_normals: readonly b2Vec2[] = [];
+  m_vertices: readonly b2Vec2[] = [];
+  m_normals: readonly b2Vec2[] = [];
   m_vertexCount = 0;
 
   constructor() {
@@ -93,16 +94,16 @@ export class b2PolygonShape extends b2Shape {
 
   /**
    * Not in 2.2.1 (Box2DWeb 2.1a's): make m_vertices and m_normals at least count long, with new
-   * zero vectors, so that the first count entries can be written.
+   * zero vectors, so that the first count entries can be written. Growing makes new arrays, sized
+   * exactly (b2MakeArray), that hold the vectors the old ones held.
    */
   Reserve(count: number): void {
     b2CheckInteger('b2PolygonShape.Reserve', 'count', count, 0, b2_maxPolygonVertices);
-    const vertices = this.m_vertices as b2Vec2[];
-    const normals = this.m_normals as b2Vec2[];
-    while (vertices.length < count) {
-      vertices.push(new b2Vec2());
-      normals.push(new b2Vec2());
-    }
+    if (this.m_vertices.length >= count) return;
+    const vertices = this.m_vertices;
+    const normals = this.m_normals;
+    this.m_vertices = b2MakeArray(count, (i) => (i < vertices.length ? vertices[i] : new b2Vec2()));
+    this.m_normals = b2MakeArray(count, (i) => (i < normals.length ? normals[i] : new b2Vec2()));
   }
 
   /** @see b2Shape::GetChildCount */

@@ -188,8 +188,13 @@ describe('b2PolygonShape', () => {
   it('holds as many vertex and normal vectors as the largest count set, and keeps them across a smaller one', () => {
     const p = new b2PolygonShape();
     expect(p.m_vertices.length).toBe(0);
+    p.SetAsBox(1, 1);
+    const first = p.m_vertices[0];
+    const firstNormal = p.m_normals[0];
     const hexagon = Array.from({ length: 6 }, (_, i) => new b2Vec2(Math.cos(i), Math.sin(i)));
     p.Set(hexagon, 6);
+    expect(p.m_vertices[0]).toBe(first);
+    expect(p.m_normals[0]).toBe(firstNormal);
     const sixth = p.m_vertices[5];
     expect([p.m_vertices.length, p.m_normals.length]).toEqual([6, 6]);
     p.SetAsBox(1, 1);
