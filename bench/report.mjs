@@ -40,6 +40,9 @@ export function formatSceneTables(scene, engines, sleep) {
     const t = r.timing;
     const m = r.memory ?? {};
     if (r.check && !r.check.ok) notes.push(`  ${e.name}: sanity check FAILED: ${r.check.detail}`);
+    if (r.memory && r.memory.worldBytes === null) {
+      notes.push(`  ${e.name}: world heap not above an empty world's (an earlier world still reachable, or noise)`);
+    }
     rows.push([
       name,
       ms(t.medianMs),

@@ -45,7 +45,8 @@ export interface EngineResult {
   timing: Timing | null;
   ratioToOurs: number | null;
   memory: {
-    worldBytes: number;
+    /** null where the built world's heap was not above an empty world's (harness.mjs, worldHeapBytes). */
+    worldBytes: number | null;
     heapGrowthBytes: number;
     allocBytesPerStep: number;
     allocSteps: number;
@@ -91,6 +92,8 @@ export interface CpuCache {
 export function cpuCaches(dir?: string): CpuCache[];
 /** The caches in words, e.g. "L1 48 KiB, L2 2 MiB, L3 480 MiB shared by 2 CPUs"; "" for none. */
 export function describeCaches(caches?: CpuCache[]): string;
+/** builtHeap - baseHeap, or null when that is not above zero (an earlier world still reachable, or noise). */
+export function worldHeapBytes(builtHeap: number, baseHeap: number): number | null;
 
 export const SCENE_IDS: string[];
 export const ENGINE_IDS: string[];

@@ -8,12 +8,12 @@ import { parseArgs } from 'node:util';
 import { pathToFileURL } from 'node:url';
 import { readFileSync } from 'node:fs';
 import path from 'node:path';
-import { runBench, SCENE_IDS, ENGINE_IDS, ENGINES, cpuCaches } from './harness.mjs';
+import { runBench, SCENE_IDS, ENGINE_IDS, ENGINES, cpuCaches, worldHeapBytes } from './harness.mjs';
 import { makeScene } from './scenes.mjs';
 import { markdownSummary, compactSummary, describeCaches } from './report.mjs';
 import { repoRoot } from './engines/common.mjs';
 
-export { runBench, SCENE_IDS, ENGINE_IDS, cpuCaches, describeCaches };
+export { runBench, SCENE_IDS, ENGINE_IDS, cpuCaches, describeCaches, worldHeapBytes };
 
 export const USAGE = `usage: node bench/run.mjs [options]   (npm run bench -- [options])
 

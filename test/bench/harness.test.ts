@@ -4,7 +4,7 @@ import { mkdirSync, mkdtempSync, readFileSync, readdirSync, rmSync, writeFileSyn
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { cpuCaches, describeCaches, runBench, type BenchResults } from '../../bench/run.mjs';
+import { cpuCaches, describeCaches, runBench, worldHeapBytes, type BenchResults } from '../../bench/run.mjs';
 import { makeScene, SCENE_IDS } from '../../bench/scenes.mjs';
 import { measureAllocation } from '../../bench/memory.mjs';
 import { loadBox2DWeb } from '../../bench/engines/box2dweb.mjs';
@@ -71,7 +71,7 @@ describe('runBench in quick mode', () => {
       expect(t.roundMedians).toHaveLength(scene.protocol.rounds);
       expect(Number.isFinite(r.memory!.allocBytesPerStep)).toBe(true);
       expect(r.memory!.allocBytesPerStep).toBeGreaterThanOrEqual(0);
-      expect(Number.isFinite(r.memory!.worldBytes)).toBe(true);
+      expect(r.memory!.worldBytes).toBeGreaterThan(0);
       expect(r.counts!.bodies).toBe(scene.bodies);
       expect(r.counts!.contacts).toBeGreaterThan(0);
     }
@@ -125,6 +125,12 @@ describe('bench memory measurement', () => {
     expect(keep.length).toBe(20);
     expect(bytes / n).toBeGreaterThan(8000 * 0.9);
     expect(bytes / n).toBeLessThan(8000 * 1.1);
+  });
+
+  it('gives no world heap where the built world does not weigh more than the empty one', () => {
+    expect(worldHeapBytes(5_000_000, 3_000_000)).toBe(2_000_000);
+    expect(worldHeapBytes(3_000_000, 3_000_000)).toBeNull();
+    expect(worldHeapBytes(20_000_000, 46_000_000)).toBeNull();
   });
 });
 
