@@ -43,7 +43,7 @@ import type {
   b2QueryCallback,
   b2RayCastCallback,
 } from './b2WorldCallbacks';
-import { b2Contact } from './contacts/b2Contact';
+import { b2Contact, b2ContactScalars } from './contacts/b2Contact';
 import { b2JointType, type b2Joint, type b2JointDef } from './joints/b2Joint';
 import { b2JointFactory } from './joints/b2JointFactory';
 import type { b2PulleyJoint } from './joints/b2PulleyJoint';
@@ -1292,7 +1292,7 @@ export class b2World {
     let alpha = 1.0;
     if (c.m_flags & b2Contact.e_toiFlag) {
       // This contact has a valid cached TOI.
-      alpha = c.m_scalars.toi;
+      alpha = c.m_scalars!.toi;
     } else {
       const fA = c.GetFixtureA();
       const fB = c.GetFixtureB();
@@ -1365,7 +1365,7 @@ export class b2World {
         alpha = 1.0;
       }
 
-      c.m_scalars.toi = alpha;
+      c.m_scalars!.toi = alpha;
       c.m_flags |= b2Contact.e_toiFlag;
     }
 
@@ -1441,6 +1441,7 @@ export class b2World {
       }
       if (b2World.IsTOICandidate(c)) {
         c.m_toiSearch = 2;
+        c.m_scalars ??= new b2ContactScalars();
         candidates[count++] = c;
       } else {
         c.m_toiSearch = 1;
@@ -1462,7 +1463,7 @@ export class b2World {
   private static InvalidateTOI(c: b2Contact): void {
     c.m_flags &= ~(b2Contact.e_toiFlag | b2Contact.e_islandFlag);
     c.m_toiCount = 0;
-    c.m_scalars.toi = 1.0;
+    if (c.m_scalars !== null) c.m_scalars.toi = 1.0;
   }
 
   /** Find TOI contacts and solve them. */

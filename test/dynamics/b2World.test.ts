@@ -741,6 +741,7 @@ describe('b2World SolveTOI candidates kept between steps', () => {
   it('keeps exactly the contacts with a TOI, in contact list order, as contacts end and begin', () => {
     let checked = 0;
     let ended = 0;
+    let neverCandidates = 0;
     let previous = new Set<b2Contact>();
     const digest = bouncingRain(240, (world) => {
       const state = world as unknown as CandidateState;
@@ -752,12 +753,16 @@ describe('b2World SolveTOI candidates kept between steps', () => {
         if ((b2World as unknown as { IsTOICandidate: (c: b2Contact) => boolean }).IsTOICandidate(c)) expected.push(c);
       }
       expect(kept).toEqual(expected);
+      // Only candidates hold a TOI, so only they get its storage (b2ContactScalars).
+      for (const c of kept) expect(c.m_scalars).not.toBeNull();
+      for (const c of now) if (c.m_scalars === null) neverCandidates++;
       for (const c of previous) if (!now.has(c)) ended++;
       previous = now;
       checked += expected.length;
     });
     expect(checked).toBeGreaterThan(0);
     expect(ended).toBeGreaterThan(0);
+    expect(neverCandidates).toBeGreaterThan(0);
     // The same trajectory as a search over every contact, as the C++'s.
     expect(withEveryContactACandidate(() => bouncingRain(240, () => {}))).toBe(digest);
   });

@@ -160,15 +160,19 @@ export abstract class b2Contact {
    */
   m_toiSearch = 0;
 
-  /** Not in the C++: the storage of m_toi (see b2ContactScalars). */
-  readonly m_scalars = new b2ContactScalars();
+  /**
+   * Not in the C++: the storage of m_toi (see b2ContactScalars), made when the contact first
+   * becomes one of SolveTOI's candidates (b2World.UpdateTOICandidates) or m_toi is set: only
+   * those contacts ever hold a TOI other than 1, and most contacts of a pile never do.
+   */
+  m_scalars: b2ContactScalars | null = null;
 
   // The C++ leaves m_toi uninitialised; b2World.SolveTOI writes it before any read.
   get m_toi(): number {
-    return this.m_scalars.toi;
+    return this.m_scalars === null ? 1.0 : this.m_scalars.toi;
   }
   set m_toi(toi: number) {
-    this.m_scalars.toi = toi;
+    (this.m_scalars ??= new b2ContactScalars()).toi = toi;
   }
 
   get m_friction(): number {
@@ -225,7 +229,7 @@ export abstract class b2Contact {
 
     this.m_toiCount = 0;
     this.m_toiSearch = 0;
-    this.m_scalars.toi = 1.0;
+    if (this.m_scalars !== null) this.m_scalars.toi = 1.0;
 
     const record = this.m_manifold.m_record;
     const o = this.m_manifold.m_offset;

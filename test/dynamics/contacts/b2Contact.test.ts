@@ -185,13 +185,16 @@ describe('b2Contact construction', () => {
   it('keeps m_toi in its b2ContactScalars and m_friction, m_restitution in its manifold record (the fields are accessors)', () => {
     const world = newWorld();
     const contact = b2Contact.Create(addFixture(world, makeShape('polygon')), 0, addFixture(world, makeShape('circle'), { x: 3.0 }), 0)!;
+    // No scalars until m_toi is set or the contact becomes a TOI candidate: m_toi reads 1 until then.
+    expect(contact.m_scalars).toBeNull();
+    expect(contact.m_toi).toBe(1.0);
     contact.m_toi = 0.25;
     contact.m_friction = 0.5;
     contact.m_restitution = 0.75;
     expect({ ...contact.m_scalars }).toEqual({ toi: 0.25 });
     const m = contact.GetManifold();
     expect([m.m_record[m.m_offset + b2ManifoldField.friction], m.m_record[m.m_offset + b2ManifoldField.restitution]]).toEqual([0.5, 0.75]);
-    contact.m_scalars.toi = 0.125;
+    contact.m_scalars!.toi = 0.125;
     expect(contact.m_toi).toBe(0.125);
     expect(contact.GetFriction()).toBe(0.5);
     // The manifold's own copies leave them: they belong to the contact.
