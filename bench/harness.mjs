@@ -6,7 +6,8 @@
 // forced full GC, builds a fresh world, steps it `preroll` times untimed (JIT warm-up, settling,
 // the tumbler's fill), then `steps` steps timed one by one with tinybench. Per-step times of all
 // rounds are pooled for the median and p95. The last round then runs `allocSteps` more steps to
-// count allocated bytes (see memory.mjs), and reads the heap growth, counts and sanity check.
+// count allocated bytes (see memory.mjs), and reads the counts and sanity check. World heap and
+// heap growth come from a process of the engine's own (heap.mjs).
 import { execFileSync } from 'node:child_process';
 import { mkdirSync, mkdtempSync, readdirSync, readFileSync, writeFileSync, rmSync } from 'node:fs';
 import os from 'node:os';
@@ -14,7 +15,8 @@ import v8 from 'node:v8';
 import path from 'node:path';
 import { Bench, hrtimeNow } from 'tinybench';
 import { SCENE_IDS, makeScene, sceneStepper, totalBodies } from './scenes.mjs';
-import { fullGC, retainedHeap, measureAllocation } from './memory.mjs';
+import { fullGC, measureAllocation } from './memory.mjs';
+import { measureHeapInChild } from './heap.mjs';
 import { formatSceneTables, chartSvg, markdownSummary, compactSummary, describeCaches } from './report.mjs';
 import { repoRoot } from './engines/common.mjs';
 import webphysics from './engines/webphysics.mjs';
@@ -44,6 +46,13 @@ const baselineAdapter = {
   name: 'WebPhysics baseline',
   load: ({ baselineBundle }) => webphysics.load({ oursBundle: baselineBundle }),
 };
+
+/** The adapter of an engine id, the baseline's included. */
+export function engineById(id) {
+  const e = id === BASELINE ? baselineAdapter : ENGINES.find((x) => x.id === id);
+  if (!e) throw new Error(`unknown engine "${id}"`);
+  return e;
+}
 export const RESULTS_SCHEMA = 'webphysics-bench/1';
 
 const list = (v, all, what) => {
@@ -164,34 +173,14 @@ function summarize(samples) {
   };
 }
 
-/**
- * The heap a built world holds: retained heap with it built minus with an empty world of the
- * engine; null when that is not above zero. @box2d/core keeps its last world reachable from
- * module state until another world steps, so after a larger scene its empty world weighs more
- * than the built one (-26 MiB on many pyramids after the large pyramid); and the tumbler's world
- * starts as one body, within the noise of two measurements (-14 to -270 KiB).
- */
-export function worldHeapBytes(builtHeap, baseHeap) {
-  const bytes = builtHeap - baseHeap;
-  return bytes > 0 ? bytes : null;
-}
-
 /** One round of one engine on one scene; returns per-step times and, on the last round, the rest. */
 function runRound(engine, api, scene, sleep, protocol, last) {
-  let baseHeap = 0;
-  if (last) {
-    const empty = engine.create(api, { ...scene, bodies: [], joints: [], spawn: undefined }, { sleep });
-    empty.step(); // replaces per-step module state (static islands, stacks) left by earlier worlds
-    baseHeap = retainedHeap();
-    empty.destroy();
-  }
   fullGC();
   const w = engine.create(api, scene, { sleep });
   const stepper = sceneStepper(w, scene);
   const doStep = stepper.step;
   const readTrack = () => scene.track.map((i) => w.position(i));
   const before = readTrack();
-  const builtHeap = last ? retainedHeap() : 0;
 
   for (let i = 0; i < protocol.preroll; i++) doStep();
 
@@ -227,12 +216,11 @@ function runRound(engine, api, scene, sleep, protocol, last) {
     const alloc = measureAllocation(() => {
       for (let i = 0; i < protocol.allocSteps; i++) doStep();
     });
-    const endHeap = retainedHeap();
     const after = readTrack();
     extra = {
       memory: {
-        worldBytes: worldHeapBytes(builtHeap, baseHeap),
-        heapGrowthBytes: endHeap - builtHeap,
+        worldBytes: null,
+        heapGrowthBytes: null,
         allocBytesPerStep: alloc.bytes / protocol.allocSteps,
         allocSteps: protocol.allocSteps,
         gcPer1000Steps: (alloc.gcCount * 1000) / protocol.allocSteps,
@@ -275,7 +263,7 @@ export async function runBench(options = {}) {
 
   const engines = [];
   for (const id of o.engines) {
-    const e = id === BASELINE ? baselineAdapter : ENGINES.find((x) => x.id === id);
+    const e = engineById(id);
     try {
       const t = performance.now();
       const api = await e.load({ oursBundle, baselineBundle: o.baseline });
@@ -378,6 +366,25 @@ export async function runBench(options = {}) {
             row.reason = String(err?.message ?? err);
             o.log(`${e.name} failed on ${scene.id}: ${err?.stack ?? err}`);
           }
+        }
+      }
+      for (const r of rows) {
+        if (r.status !== 'ok' || !r.extra) continue;
+        try {
+          Object.assign(
+            r.extra.memory,
+            measureHeapInChild({
+              engine: r.engine,
+              oursBundle,
+              baselineBundle: o.baseline,
+              scene: scene.id,
+              quick: o.quick,
+              sleep,
+              steps: protocol.preroll + protocol.steps + protocol.allocPreroll + protocol.allocSteps,
+            }),
+          );
+        } catch (err) {
+          o.log(String(err?.message ?? err));
         }
       }
       const ours = rows.find((r) => r.engine === OURS && r.status === 'ok');

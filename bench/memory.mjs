@@ -13,11 +13,10 @@
 // instance's linear memory instead. The method is checked in test/bench against a loop allocating
 // a known number of bytes.
 //
-// World size and heap growth: used_heap_size after forced full GCs, taken (1) with an empty world
-// of the engine alive, (2) after building the scene's world, (3) after the run. World heap is
-// (2) - (1); heap growth is (3) - (2), what the run kept (contacts, pools, caches, leaks). The empty
-// world is there because some engines keep their last world reachable from module state until the
-// next one is created (@box2d/core does), which would otherwise count the previous world.
+// World size and heap growth (heap.mjs, in a process of the engine's own): used_heap_size after
+// forced full GCs, taken (1) with an empty world of the engine alive, (2) after building the scene's
+// world, (3) after the run. World heap is (2) - (1); heap growth is (3) - (2), what the run kept
+// (contacts, pools, caches, leaks).
 //
 // Forced GCs use the `gc` function V8 exposes under --expose-gc; when the process was started
 // without it, the flag is set at run time and the function fetched from a fresh context.

@@ -41,7 +41,7 @@ export function formatSceneTables(scene, engines, sleep) {
     const m = r.memory ?? {};
     if (r.check && !r.check.ok) notes.push(`  ${e.name}: sanity check FAILED: ${r.check.detail}`);
     if (r.memory && r.memory.worldBytes === null) {
-      notes.push(`  ${e.name}: world heap not above an empty world's (an earlier world still reachable, or noise)`);
+      notes.push(`  ${e.name}: world heap not above an empty world's (within the noise), or not measured`);
     }
     rows.push([
       name,

@@ -45,9 +45,10 @@ export interface EngineResult {
   timing: Timing | null;
   ratioToOurs: number | null;
   memory: {
-    /** null where the built world's heap was not above an empty world's (harness.mjs, worldHeapBytes). */
+    /** null where the built world's heap was not above an empty world's, or not measured (heap.mjs). */
     worldBytes: number | null;
-    heapGrowthBytes: number;
+    /** null where the measurement's process failed (heap.mjs). */
+    heapGrowthBytes: number | null;
     allocBytesPerStep: number;
     allocSteps: number;
     gcPer1000Steps: number;
