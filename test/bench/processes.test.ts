@@ -1,0 +1,70 @@
+// Step times in separate processes (bench/processes.mjs): the option checks and a quick run. No
+// timing assertions: speed is what the benchmark measures.
+import { execFileSync } from 'node:child_process';
+import { mkdtempSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import path from 'node:path';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { formatProcesses, parseWindows, resolveProcessesOptions, runProcesses } from '../../bench/processes.mjs';
+
+let bundleDir = '';
+let oursBundle = '';
+
+beforeAll(() => {
+  bundleDir = mkdtempSync(path.join(tmpdir(), 'webphysics-processes-test-'));
+  execFileSync(process.execPath, [path.resolve('scripts/build.mjs'), bundleDir], { stdio: 'ignore' });
+  oursBundle = path.join(bundleDir, 'webphysics.mjs');
+});
+
+afterAll(() => {
+  rmSync(bundleDir, { recursive: true, force: true });
+});
+
+describe('bench/processes.mjs options', () => {
+  it('reads step windows as [from, to) pairs within the steps, and rejects others by name', () => {
+    expect(parseWindows('64-192,192-600', 600)).toEqual([
+      [64, 192],
+      [192, 600],
+    ]);
+    expect(() => parseWindows('64:192', 600)).toThrow('window "64:192" is not FROM-TO');
+    expect(() => parseWindows('100-50', 600)).toThrow('window 100-50 must satisfy FROM < TO <= steps (600)');
+    expect(() => parseWindows('0-601', 600)).toThrow('window 0-601 must satisfy FROM < TO <= steps (600)');
+  });
+
+  it('defaults to bench2d, WebPhysics against box2d-wasm, ten runs of 600 steps', () => {
+    const o = resolveProcessesOptions({ log: null });
+    expect([o.scene, o.engines, o.runs, o.steps, o.windows]).toEqual([
+      'bench2d',
+      ['webphysics', 'box2d-wasm'],
+      10,
+      600,
+      [
+        [64, 192],
+        [192, 600],
+      ],
+    ]);
+  });
+
+  it('rejects an unknown scene or engine, a baseline without its bundle, and counts below one', () => {
+    expect(() => resolveProcessesOptions({ scene: 'nope' })).toThrow('unknown scene "nope"');
+    expect(() => resolveProcessesOptions({ engines: 'webphysics,nope' })).toThrow('unknown engine "nope"');
+    expect(() => resolveProcessesOptions({ engines: 'webphysics-baseline' })).toThrow('webphysics-baseline needs --baseline FILE');
+    expect(() => resolveProcessesOptions({ runs: 0 })).toThrow('runs must be a positive integer, not "0"');
+  });
+});
+
+describe('bench/processes.mjs quick run', () => {
+  it('gives every engine one median per window over its runs, each run from a process of its own', async () => {
+    const result = await runProcesses({ quick: true, engines: 'webphysics,planck', ours: oursBundle, log: null });
+    expect(result.engines.map((e) => e.id)).toEqual(['webphysics', 'planck']);
+    for (const e of result.engines) {
+      expect(e.runsMs).toHaveLength(2);
+      for (const run of e.runsMs) expect(run).toHaveLength(2);
+      expect(e.windowMs).toHaveLength(2);
+      for (const ms of e.windowMs) expect(ms).toBeGreaterThan(0);
+    }
+    const table = formatProcesses(result);
+    expect(table).toContain('steps 4-20');
+    expect(table).toContain('1.00x');
+  }, 120_000);
+});
