@@ -183,8 +183,8 @@ function expectRejected(world: b2World, act: () => unknown, expected: Expected):
 }
 
 function polygonState(p: b2PolygonShape): number[] {
-  const out = [p.m_vertexCount, p.m_centroid.x, p.m_centroid.y];
-  for (let i = 0; i < 8; ++i) out.push(p.m_vertices[i].x, p.m_vertices[i].y, p.m_normals[i].x, p.m_normals[i].y);
+  const out = [p.m_vertexCount, p.m_vertices.length, p.m_normals.length, p.m_centroid.x, p.m_centroid.y];
+  for (let i = 0; i < p.m_vertices.length; ++i) out.push(p.m_vertices[i].x, p.m_vertices[i].y, p.m_normals[i].x, p.m_normals[i].y);
   return out;
 }
 
