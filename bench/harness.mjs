@@ -150,6 +150,14 @@ function cpuCount(list) {
   return n;
 }
 
+/** Option `name`'s value v as a positive integer (fallback when absent); throws naming it otherwise. */
+export function positiveInt(name, v, fallback) {
+  if (v === undefined || v === null) return fallback;
+  const n = Number(v);
+  if (!Number.isInteger(n) || n < 1) throw new Error(`${name} must be a positive integer, not "${v}"`);
+  return n;
+}
+
 /** The q-quantile of ascending values `sorted`, interpolated between neighbours; null for none. */
 export function quantile(sorted, q) {
   if (sorted.length === 0) return null;

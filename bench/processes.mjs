@@ -17,7 +17,7 @@ import { spawnSync } from 'node:child_process';
 import { rmSync } from 'node:fs';
 import { parseArgs } from 'node:util';
 import { fileURLToPath, pathToFileURL } from 'node:url';
-import { BASELINE, ENGINE_IDS, OURS, SCENE_IDS, buildOurs, engineById, quantile } from './harness.mjs';
+import { BASELINE, ENGINE_IDS, OURS, SCENE_IDS, buildOurs, engineById, positiveInt, quantile } from './harness.mjs';
 import { makeScene, sceneStepper } from './scenes.mjs';
 
 export const PROCESSES_USAGE = `usage: node bench/processes.mjs [options]
@@ -34,13 +34,6 @@ export const PROCESSES_USAGE = `usage: node bench/processes.mjs [options]
   -h, --help        this text`;
 
 const WORLDS = 3;
-
-const positiveInt = (name, v, fallback) => {
-  if (v === undefined || v === null) return fallback;
-  const n = Number(v);
-  if (!Number.isInteger(n) || n < 1) throw new Error(`${name} must be a positive integer, not "${v}"`);
-  return n;
-};
 
 /** "64-192,192-600" as [[64, 192], [192, 600]], each window within [0, steps). */
 export function parseWindows(text, steps) {

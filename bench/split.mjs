@@ -18,7 +18,7 @@ import { parseArgs } from 'node:util';
 import { pathToFileURL } from 'node:url';
 import os from 'node:os';
 import v8 from 'node:v8';
-import { ENGINES, OURS, SCENE_IDS, buildOurs, cpuCaches, quantile } from './harness.mjs';
+import { ENGINES, OURS, SCENE_IDS, buildOurs, cpuCaches, positiveInt, quantile } from './harness.mjs';
 import { fullGC } from './memory.mjs';
 import { describeCaches } from './report.mjs';
 import { makeScene, sceneStepper } from './scenes.mjs';
@@ -62,13 +62,6 @@ export function fitLine(points) {
   const maxResidual = Math.max(...points.map(([x, y]) => Math.abs(y - (intercept + slope * x))));
   return { intercept, slope, maxResidual };
 }
-
-const positiveInt = (name, v, fallback) => {
-  if (v === undefined || v === null) return fallback;
-  const n = Number(v);
-  if (!Number.isInteger(n) || n < 1) throw new Error(`${name} must be a positive integer, not "${v}"`);
-  return n;
-};
 
 /** Fills in defaults and checks the options; see runSplit. */
 export function resolveSplitOptions(opts = {}) {
