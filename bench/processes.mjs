@@ -15,10 +15,10 @@
 // For programs: `runProcesses(options)` resolves to the results object.
 import { spawnSync } from 'node:child_process';
 import { rmSync } from 'node:fs';
-import { parseArgs } from 'node:util';
 import { fileURLToPath, pathToFileURL } from 'node:url';
 import { BASELINE, ENGINE_IDS, OURS, SCENE_IDS, buildOurs, engineById, positiveInt, quantile } from './harness.mjs';
 import { makeScene, sceneStepper } from './scenes.mjs';
+import { runCommand } from './command.mjs';
 
 export const PROCESSES_USAGE = `usage: node bench/processes.mjs [options]
 
@@ -152,48 +152,24 @@ async function child(args) {
   process.stdout.write(`${JSON.stringify(medians)}\n`);
 }
 
-/** The command line; returns the exit code. */
-export async function main(argv = process.argv.slice(2)) {
-  let values;
-  try {
-    ({ values } = parseArgs({
-      args: argv,
-      options: {
-        scene: { type: 'string' },
-        engines: { type: 'string' },
-        runs: { type: 'string' },
-        steps: { type: 'string' },
-        windows: { type: 'string' },
-        ours: { type: 'string' },
-        baseline: { type: 'string' },
-        quick: { type: 'boolean' },
-        json: { type: 'boolean' },
-        help: { type: 'boolean', short: 'h' },
-      },
-    }));
-  } catch (err) {
-    process.stderr.write(`${err.message}\n\n${PROCESSES_USAGE}\n`);
-    return 2;
-  }
-  if (values.help) {
-    process.stdout.write(`${PROCESSES_USAGE}\n`);
-    return 0;
-  }
-  let result;
-  try {
-    result = await runProcesses(values);
-  } catch (err) {
-    process.stderr.write(`${err.message}\n`);
-    return 1;
-  }
-  const table = formatProcesses(result);
-  if (values.json) {
-    process.stderr.write(`${table}\n`);
-    process.stdout.write(`${JSON.stringify(result, null, 1)}\n`);
-  } else {
-    process.stdout.write(`${table}\n`);
-  }
-  return 0;
+/** The command line `argv` (without node and the script); resolves to the exit code. */
+export function main(argv = process.argv.slice(2)) {
+  return runCommand(argv, {
+    options: {
+      scene: { type: 'string' },
+      engines: { type: 'string' },
+      runs: { type: 'string' },
+      steps: { type: 'string' },
+      windows: { type: 'string' },
+      ours: { type: 'string' },
+      baseline: { type: 'string' },
+      quick: { type: 'boolean' },
+    },
+    usage: PROCESSES_USAGE,
+    check: resolveProcessesOptions,
+    run: runProcesses,
+    format: formatProcesses,
+  });
 }
 
 if (process.argv[1] && import.meta.url === pathToFileURL(process.argv[1]).href) {

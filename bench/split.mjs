@@ -14,7 +14,6 @@
 // trade.
 //
 // For programs: `runSplit(options)` resolves to the results object, `fitLine(points)` is the fit.
-import { parseArgs } from 'node:util';
 import { pathToFileURL } from 'node:url';
 import os from 'node:os';
 import v8 from 'node:v8';
@@ -22,6 +21,7 @@ import { ENGINES, OURS, SCENE_IDS, buildOurs, cpuCaches, positiveInt, quantile }
 import { fullGC } from './memory.mjs';
 import { describeCaches } from './report.mjs';
 import { makeScene, sceneStepper } from './scenes.mjs';
+import { runCommand } from './command.mjs';
 
 /** The engine adapters that take Box2D 2.x's velocity and position iteration counts. */
 export const SPLIT_ENGINES = ENGINES.filter((e) => /^Box2D 2\./.test(e.family));
@@ -206,48 +206,24 @@ export function formatSplit(result) {
 }
 
 /** Runs the command line `argv` (without node and script); resolves to the exit code. */
-export async function main(argv = process.argv.slice(2)) {
-  let values;
-  try {
-    ({ values } = parseArgs({
-      args: argv,
-      options: {
-        scene: { type: 'string' },
-        engines: { type: 'string' },
-        vary: { type: 'string' },
-        iterations: { type: 'string' },
-        rounds: { type: 'string' },
-        preroll: { type: 'string' },
-        steps: { type: 'string' },
-        ours: { type: 'string' },
-        quick: { type: 'boolean' },
-        json: { type: 'boolean' },
-        help: { type: 'boolean', short: 'h' },
-      },
-    }));
-  } catch (err) {
-    process.stderr.write(`${err.message}\n${SPLIT_USAGE}\n`);
-    return 2;
-  }
-  if (values.help) {
-    process.stdout.write(SPLIT_USAGE + '\n');
-    return 0;
-  }
-  try {
-    resolveSplitOptions(values);
-  } catch (err) {
-    process.stderr.write(`${err.message}\n${SPLIT_USAGE}\n`);
-    return 2;
-  }
-  const result = await runSplit(values);
-  const table = formatSplit(result);
-  if (values.json) {
-    process.stderr.write(table + '\n');
-    process.stdout.write(JSON.stringify(result, null, 2) + '\n');
-  } else {
-    process.stdout.write(table + '\n');
-  }
-  return 0;
+export function main(argv = process.argv.slice(2)) {
+  return runCommand(argv, {
+    options: {
+      scene: { type: 'string' },
+      engines: { type: 'string' },
+      vary: { type: 'string' },
+      iterations: { type: 'string' },
+      rounds: { type: 'string' },
+      preroll: { type: 'string' },
+      steps: { type: 'string' },
+      ours: { type: 'string' },
+      quick: { type: 'boolean' },
+    },
+    usage: SPLIT_USAGE,
+    check: resolveSplitOptions,
+    run: runSplit,
+    format: formatSplit,
+  });
 }
 
 if (import.meta.url === pathToFileURL(process.argv[1] ?? '').href) {

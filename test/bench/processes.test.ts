@@ -4,8 +4,8 @@ import { execFileSync } from 'node:child_process';
 import { mkdtempSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { formatProcesses, parseWindows, resolveProcessesOptions, runProcesses } from '../../bench/processes.mjs';
+import { afterAll, beforeAll, describe, expect, it, vi } from 'vitest';
+import { formatProcesses, main, parseWindows, resolveProcessesOptions, runProcesses } from '../../bench/processes.mjs';
 
 let bundleDir = '';
 let oursBundle = '';
@@ -50,6 +50,23 @@ describe('bench/processes.mjs options', () => {
     expect(() => resolveProcessesOptions({ engines: 'webphysics,nope' })).toThrow('unknown engine "nope"');
     expect(() => resolveProcessesOptions({ engines: 'webphysics-baseline' })).toThrow('webphysics-baseline needs --baseline FILE');
     expect(() => resolveProcessesOptions({ runs: 0 })).toThrow('runs must be a positive integer, not "0"');
+  });
+});
+
+describe('bench/processes.mjs command line', () => {
+  it('exits 0 for --help and 2, before running anything, for an unknown option or a bad value', async () => {
+    const out = vi.spyOn(process.stdout, 'write').mockImplementation(() => true);
+    const err = vi.spyOn(process.stderr, 'write').mockImplementation(() => true);
+    try {
+      expect(await main(['--help'])).toBe(0);
+      expect(await main(['--bogus'])).toBe(2);
+      expect(await main(['--runs', '0'])).toBe(2);
+      expect(await main(['--engines', 'webphysics-baseline'])).toBe(2);
+      expect(String(err.mock.calls.at(-1)?.[0])).toContain('webphysics-baseline needs --baseline FILE');
+    } finally {
+      out.mockRestore();
+      err.mockRestore();
+    }
   });
 });
 
