@@ -15,9 +15,9 @@
 // What the engine may keep of the small world is in all three and cancels, except in the growth,
 // which it can understate by that much (box2d-wasm's JavaScript side: 150-230 KiB on the pyramids,
 // where its growth reads negative).
-import { spawnSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
 import { retainedHeap } from './memory.mjs';
+import { runJsonChild } from './command.mjs';
 
 /**
  * The heap a built world holds: retained heap with it built minus with an empty world of the
@@ -35,15 +35,7 @@ export function worldHeapBytes(builtHeap, baseHeap) {
  */
 export function measureHeapInChild({ engine, oursBundle, baselineBundle, scene, quick, sleep, steps }) {
   const args = JSON.stringify({ engine, oursBundle, baselineBundle, scene, quick, sleep, steps });
-  const child = spawnSync(process.execPath, ['--expose-gc', fileURLToPath(import.meta.url), args], {
-    encoding: 'utf8',
-    maxBuffer: 1 << 20,
-  });
-  if (child.status !== 0) {
-    throw new Error(`heap measurement of ${engine} on ${scene} failed: ${(child.stderr || child.stdout).trim().split('\n').slice(-3).join(' | ')}`);
-  }
-  const lines = child.stdout.trim().split('\n');
-  return JSON.parse(lines[lines.length - 1]);
+  return runJsonChild(['--expose-gc', fileURLToPath(import.meta.url), args], `heap measurement of ${engine} on ${scene}`);
 }
 
 async function main(args) {

@@ -13,12 +13,11 @@
 // measured this way (docs/PORTING.md).
 //
 // For programs: `runProcesses(options)` resolves to the results object.
-import { spawnSync } from 'node:child_process';
 import { rmSync } from 'node:fs';
 import { fileURLToPath, pathToFileURL } from 'node:url';
 import { BASELINE, ENGINE_IDS, OURS, SCENE_IDS, buildOurs, engineById, positiveInt, quantile } from './harness.mjs';
 import { makeScene, sceneStepper } from './scenes.mjs';
-import { runCommand } from './command.mjs';
+import { runCommand, runJsonChild } from './command.mjs';
 
 export const PROCESSES_USAGE = `usage: node bench/processes.mjs [options]
 
@@ -90,10 +89,7 @@ export async function runProcesses(options = {}) {
     for (let r = 0; r < o.runs; r++) {
       for (let i = 0; i < o.engines.length; i++) {
         const args = JSON.stringify({ engine: o.engines[i], oursBundle, baselineBundle: o.baseline, scene: o.scene, quick: o.quick, steps: o.steps, windows: o.windows });
-        const child = spawnSync(process.execPath, [fileURLToPath(import.meta.url), '--child', args], { encoding: 'utf8', maxBuffer: 1 << 20 });
-        if (child.status !== 0) throw new Error(`${o.engines[i]} failed: ${(child.stderr || child.stdout).trim().split('\n').slice(-3).join(' | ')}`);
-        const lines = child.stdout.trim().split('\n');
-        runs[i].push(JSON.parse(lines[lines.length - 1]));
+        runs[i].push(runJsonChild([fileURLToPath(import.meta.url), '--child', args], o.engines[i]));
       }
       o.log(`run ${r + 1} of ${o.runs} done`);
     }
