@@ -2,8 +2,9 @@
  * The broad-phase (b2BroadPhase.h, b2BroadPhase.cpp).
  *
  * The move buffer and the pair buffer grow as the C++ ones do (capacity 16, doubling) and are
- * reused across steps; the pair buffer holds preallocated b2Pair objects filled in place and is
- * sorted in place, so UpdatePairs does not allocate in steady state.
+ * reused across steps, so UpdatePairs does not allocate in steady state. The pair buffer holds
+ * each b2Pair as its sort key (proxyIdA * 2^26 + proxyIdB), which orders as b2PairLessThan orders
+ * the pairs: sorting and finding duplicates then read one double a pair, not two object fields.
  */
 
 import type { b2Vec2 } from '../common/b2Math';
@@ -11,8 +12,10 @@ import { b2Max, b2Min } from '../common/b2Math';
 import { b2Assert } from '../common/b2Settings';
 import { b2DynamicTree } from './b2DynamicTree';
 import type { b2TreeQueryCallback, b2TreeRayCastCallback } from './b2DynamicTree';
-import type { b2AABB, b2RayCastInput } from './b2Collision';
+import { b2AABB } from './b2Collision';
+import type { b2RayCastInput } from './b2Collision';
 
+/** Not used by the engine, whose pair buffer holds keys (see above); the C++ struct, for its users. */
 export class b2Pair {
   proxyIdA = -1;
   proxyIdB = -1;
@@ -54,21 +57,22 @@ export class b2BroadPhase implements b2TreeQueryCallback {
   m_moveCapacity: number;
   m_moveCount: number;
 
-  m_pairBuffer: b2Pair[];
+  /** Each pair's key, proxyIdA * b2_pairKeyScale + proxyIdB (b2PairKey). */
+  m_pairBuffer: Float64Array;
   m_pairCapacity: number;
   m_pairCount: number;
 
   m_queryProxyId: number;
+
+  /** Not in the C++: where UpdatePairs copies each moved proxy's fat AABB to query the tree with. */
+  readonly m_queryAABB = new b2AABB();
 
   constructor() {
     this.m_proxyCount = 0;
 
     this.m_pairCapacity = 16;
     this.m_pairCount = 0;
-    this.m_pairBuffer = [];
-    for (let i = 0; i < this.m_pairCapacity; ++i) {
-      this.m_pairBuffer.push(new b2Pair());
-    }
+    this.m_pairBuffer = new Float64Array(this.m_pairCapacity);
 
     this.m_moveCapacity = 16;
     this.m_moveCount = 0;
@@ -111,9 +115,12 @@ export class b2BroadPhase implements b2TreeQueryCallback {
     this.BufferMove(proxyId);
   }
 
-  /** Get the fat AABB for a proxy. */
-  GetFatAABB(proxyId: number): Readonly<b2AABB> {
-    return this.m_tree.GetFatAABB(proxyId);
+  /**
+   * Get the fat AABB for a proxy: a copy, into `aabb` (a new one when omitted), as
+   * b2DynamicTree.GetFatAABB says.
+   */
+  GetFatAABB(proxyId: number, aabb?: b2AABB): b2AABB {
+    return this.m_tree.GetFatAABB(proxyId, aabb);
   }
 
   /** Get user data from a proxy. Returns NULL if the id is invalid. */
@@ -123,8 +130,8 @@ export class b2BroadPhase implements b2TreeQueryCallback {
 
   /** Test overlap of fat AABBs. */
   TestOverlap(proxyIdA: number, proxyIdB: number): boolean {
-    // b2TestOverlap(GetFatAABB(proxyIdA), GetFatAABB(proxyIdB)), on the tree's copy of the fat
-    // AABBs (b2DynamicTree.m_fatAABBs): the contact manager asks this for every contact each step.
+    // b2TestOverlap(GetFatAABB(proxyIdA), GetFatAABB(proxyIdB)), read in place from the tree's
+    // array of AABBs: the contact manager asks this for every contact each step.
     const fat = this.m_tree.m_fatAABBs;
     const a = 4 * proxyIdA;
     const b = 4 * proxyIdB;
@@ -159,7 +166,7 @@ export class b2BroadPhase implements b2TreeQueryCallback {
 
       // We have to query the tree with the fat AABB so that
       // we don't fail to create a pair that may touch later.
-      const fatAABB = this.m_tree.GetFatAABB(this.m_queryProxyId);
+      const fatAABB = this.m_tree.GetFatAABB(this.m_queryProxyId, this.m_queryAABB);
 
       // Query tree, create pairs and add them pair buffer.
       this.m_tree.Query(this, fatAABB);
@@ -175,16 +182,17 @@ export class b2BroadPhase implements b2TreeQueryCallback {
     let i = 0;
     while (i < this.m_pairCount) {
       const primaryPair = this.m_pairBuffer[i];
-      const userDataA = this.m_tree.GetUserData(primaryPair.proxyIdA);
-      const userDataB = this.m_tree.GetUserData(primaryPair.proxyIdB);
+      const proxyIdA = b2PairProxyIdA(primaryPair);
+      const userDataA = this.m_tree.GetUserData(proxyIdA);
+      const userDataB = this.m_tree.GetUserData(b2PairProxyIdB(primaryPair, proxyIdA));
 
       callback.AddPair(userDataA, userDataB);
       ++i;
 
-      // Skip any duplicate pairs.
+      // Skip any duplicate pairs: equal keys are equal pairs. The buffer is read each time: the
+      // callback may create proxies, though not pairs.
       while (i < this.m_pairCount) {
-        const pair = this.m_pairBuffer[i];
-        if (pair.proxyIdA !== primaryPair.proxyIdA || pair.proxyIdB !== primaryPair.proxyIdB) {
+        if (this.m_pairBuffer[i] !== primaryPair) {
           break;
         }
         ++i;
@@ -264,46 +272,44 @@ export class b2BroadPhase implements b2TreeQueryCallback {
 
     // Grow the pair buffer as needed.
     if (this.m_pairCount === this.m_pairCapacity) {
+      const oldBuffer = this.m_pairBuffer;
       this.m_pairCapacity *= 2;
-      for (let i = this.m_pairCount; i < this.m_pairCapacity; ++i) {
-        this.m_pairBuffer.push(new b2Pair());
-      }
+      this.m_pairBuffer = new Float64Array(this.m_pairCapacity);
+      this.m_pairBuffer.set(oldBuffer);
     }
 
-    const pair = this.m_pairBuffer[this.m_pairCount];
-    pair.proxyIdA = b2Min(proxyId, this.m_queryProxyId);
-    pair.proxyIdB = b2Max(proxyId, this.m_queryProxyId);
+    this.m_pairBuffer[this.m_pairCount] = b2PairKey(b2Min(proxyId, this.m_queryProxyId), b2Max(proxyId, this.m_queryProxyId));
     ++this.m_pairCount;
 
     return true;
   }
 }
 
-/** A pair's sort key is proxyIdA * 2^26 + proxyIdB: exact while ids stay below 2^26. */
+/** A pair's key is proxyIdA * 2^26 + proxyIdB: exact, and ordered as the pairs, while ids stay below 2^26. */
 const b2_pairKeyScale = 67108864;
-/** b2SortPairs' keys, grown as needed. */
-let s_pairKeys = new Float64Array(16);
+
+function b2PairKey(proxyIdA: number, proxyIdB: number): number {
+  b2Assert(proxyIdB < b2_pairKeyScale, 'proxy id too large to pack');
+  return proxyIdA * b2_pairKeyScale + proxyIdB;
+}
+
+function b2PairProxyIdA(key: number): number {
+  return (key / b2_pairKeyScale) | 0;
+}
+
+function b2PairProxyIdB(key: number, proxyIdA: number): number {
+  return (key - proxyIdA * b2_pairKeyScale) | 0;
+}
 
 /*
- * std::sort of pairs[0, count) under b2PairLessThan, in place and without allocating (once the key
- * array has grown): an introsort (median-of-three quicksort, heapsort past a depth limit, insertion
- * sort for short runs) of the pairs' packed keys, which order as b2PairLessThan orders the pairs,
- * written back to the pairs after; a comparison is then one typed read, not two object loads.
- * Elements that compare equal are duplicates with identical ids, so the sequence of id pairs it
+ * std::sort of the pairs' keys in [0, count) (b2PairLessThan on the pairs), in place and without
+ * allocating: an introsort (median-of-three quicksort, heapsort past a depth limit, insertion sort
+ * for short runs). Keys that compare equal are duplicates of one pair, so the sequence of pairs it
  * leaves is the one std::sort leaves.
  */
-function b2SortPairs(pairs: b2Pair[], count: number): void {
+function b2SortPairs(keys: Float64Array, count: number): void {
   if (count < 2) {
     return;
-  }
-  if (s_pairKeys.length < count) {
-    s_pairKeys = new Float64Array(b2Max(count, 2 * s_pairKeys.length));
-  }
-  const keys = s_pairKeys;
-  for (let i = 0; i < count; ++i) {
-    const pair = pairs[i];
-    b2Assert(pair.proxyIdB < b2_pairKeyScale, 'proxy id too large to pack');
-    keys[i] = pair.proxyIdA * b2_pairKeyScale + pair.proxyIdB;
   }
   let depthLimit = 0;
   for (let n = count; n > 1; n >>= 1) {
@@ -311,14 +317,6 @@ function b2SortPairs(pairs: b2Pair[], count: number): void {
   }
   b2IntroSort(keys, 0, count, depthLimit);
   b2InsertionSort(keys, 0, count);
-  for (let i = 0; i < count; ++i) {
-    // | 0: the ids go back as the small integers they were (a double stored in a field that has
-    // held only small integers would change the field's representation for every b2Pair).
-    const key = keys[i];
-    const proxyIdA = (key / b2_pairKeyScale) | 0;
-    pairs[i].proxyIdA = proxyIdA;
-    pairs[i].proxyIdB = (key - proxyIdA * b2_pairKeyScale) | 0;
-  }
 }
 
 /**

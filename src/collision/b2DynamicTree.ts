@@ -3,14 +3,17 @@
  *
  * Node ids are indices into a pool that grows exactly as the C++ one does (capacity 16, doubling,
  * LIFO free list), because proxy ids, and through them pair order, contact order and solver order,
- * are part of the result. Pool entries are objects that stay in place when the pool grows, so the
- * C++ memcpy has no counterpart here, except for m_fatAABBs (the nodes' AABBs again, packed).
+ * are part of the result. The pool is three arrays instead of the C++ array of b2TreeNode: each
+ * node's fat AABB in m_fatAABBs, its parent (or next), children and height in m_links, its user
+ * data in m_userData. A node object would be an AABB, two vectors and four boxed coordinates
+ * (docs/PORTING.md), and insertion, removal and queries visit thousands of nodes a step on scenes
+ * where every body moves. b2TreeNode remains as the C++ struct, for GetNode's copies and SetNodes.
  */
 
-import { b2Abs, b2AbsV, b2CrossSV, b2Max, b2Min, b2Vec2, b2Vec2Equals } from '../common/b2Math';
+import { b2Abs, b2AbsV, b2CrossSV, b2Max, b2Min, b2Vec2 } from '../common/b2Math';
 import { b2Assert, b2_aabbExtension, b2_aabbMultiplier, b2_maxFloat } from '../common/b2Settings';
 import { b2GrowableStack } from '../common/b2GrowableStack';
-import { b2AABB, b2RayCastInput, b2TestOverlap } from './b2Collision';
+import { b2AABB, b2RayCastInput } from './b2Collision';
 
 export const b2_nullNode = -1;
 
@@ -29,7 +32,10 @@ export interface b2TreeRayCastCallback {
   RayCastCallback(input: b2RayCastInput, proxyId: number): number;
 }
 
-/** A node in the dynamic tree. The client does not interact with this directly. */
+/**
+ * A node in the dynamic tree. The client does not interact with this directly. The tree keeps its
+ * nodes in arrays (see above); this struct holds a copy of one (GetNode) or one to load (SetNodes).
+ */
 export class b2TreeNode {
   /** Enlarged AABB */
   readonly aabb = new b2AABB();
@@ -58,13 +64,29 @@ export class b2TreeNode {
   }
 }
 
+/** A node's integers in m_links, at 4 * node id; `parent` is the C++ union { parent; next; }. */
+const enum Link {
+  parent = 0,
+  child1 = 1,
+  child2 = 2,
+  /** leaf = 0, free node = -1 */
+  height = 3,
+}
+
+/** A node's AABB in m_fatAABBs, at 4 * node id. */
+const enum Box {
+  lowerX = 0,
+  lowerY = 1,
+  upperX = 2,
+  upperY = 3,
+}
+
 /**
  * Query and RayCast keep their traversal state here. The C++ stack is a local, so a callback may
  * query the tree again; one state per nesting depth keeps that true without allocating per call.
  */
 class b2TreeTraversal {
   readonly stack = new b2GrowableStack<number>(256);
-  readonly segmentAABB = new b2AABB();
   readonly subInput = new b2RayCastInput();
 }
 
@@ -85,7 +107,6 @@ function b2ReleaseTraversal(): void {
   --s_traversalDepth;
 }
 
-const s_combinedAABB = new b2AABB();
 const s_r = new b2Vec2();
 const s_v = new b2Vec2();
 const s_absV = new b2Vec2();
@@ -103,7 +124,12 @@ const s_absV = new b2Vec2();
 export class b2DynamicTree {
   m_root: number;
 
-  m_nodes: b2TreeNode[];
+  /** Each node's AABB: lower x, lower y, upper x, upper y at 4 * node id (Box). */
+  m_fatAABBs: Float64Array;
+  /** Each node's parent (or next), child1, child2 and height at 4 * node id (Link). */
+  m_links: Int32Array;
+  /** Each node's user data; null for inner and free nodes. */
+  m_userData: any[];
   m_nodeCount: number;
   m_nodeCapacity: number;
 
@@ -114,34 +140,25 @@ export class b2DynamicTree {
 
   m_insertionCount: number;
 
-  /**
-   * Not in the C++: each node's AABB again (lower x, lower y, upper x, upper y at 4 * node id; free
-   * nodes' entries mean nothing), written wherever a node's aabb is, for the per-step reads
-   * (MoveProxy's containment test, b2BroadPhase.TestOverlap for every contact, Query for every
-   * moved proxy): one typed array, where the node's aabb is a node, an AABB, two vectors and four
-   * boxed coordinates to load.
-   */
-  m_fatAABBs: Float64Array;
-
   /** Constructing the tree initializes the node pool. */
   constructor() {
     this.m_root = b2_nullNode;
 
-    this.m_nodeCapacity = 16;
-    this.m_fatAABBs = new Float64Array(4 * this.m_nodeCapacity);
+    this.m_nodeCapacity = 0;
     this.m_nodeCount = 0;
-    this.m_nodes = [];
-    for (let i = 0; i < this.m_nodeCapacity; ++i) {
-      this.m_nodes.push(new b2TreeNode());
-    }
+    this.m_fatAABBs = new Float64Array(0);
+    this.m_links = new Int32Array(0);
+    this.m_userData = [];
+    this.Reserve(16);
 
     // Build a linked list for the free list.
+    const links = this.m_links;
     for (let i = 0; i < this.m_nodeCapacity - 1; ++i) {
-      this.m_nodes[i].next = i + 1;
-      this.m_nodes[i].height = -1;
+      links[4 * i + Link.parent] = i + 1;
+      links[4 * i + Link.height] = -1;
     }
-    this.m_nodes[this.m_nodeCapacity - 1].next = b2_nullNode;
-    this.m_nodes[this.m_nodeCapacity - 1].height = -1;
+    links[4 * (this.m_nodeCapacity - 1) + Link.parent] = b2_nullNode;
+    links[4 * (this.m_nodeCapacity - 1) + Link.height] = -1;
     this.m_freeList = 0;
 
     this.m_path = 0;
@@ -156,46 +173,67 @@ export class b2DynamicTree {
       b2Assert(this.m_nodeCount === this.m_nodeCapacity);
 
       // The free list is empty. Rebuild a bigger pool.
-      this.m_nodeCapacity *= 2;
-      for (let i = this.m_nodeCount; i < this.m_nodeCapacity; ++i) {
-        this.m_nodes.push(new b2TreeNode());
-      }
-      const fatAABBs = new Float64Array(4 * this.m_nodeCapacity);
-      fatAABBs.set(this.m_fatAABBs);
-      this.m_fatAABBs = fatAABBs;
+      this.Reserve(2 * this.m_nodeCapacity);
 
       // Build a linked list for the free list. The parent
       // pointer becomes the "next" pointer.
+      const links = this.m_links;
       for (let i = this.m_nodeCount; i < this.m_nodeCapacity - 1; ++i) {
-        this.m_nodes[i].next = i + 1;
-        this.m_nodes[i].height = -1;
+        links[4 * i + Link.parent] = i + 1;
+        links[4 * i + Link.height] = -1;
       }
-      this.m_nodes[this.m_nodeCapacity - 1].next = b2_nullNode;
-      this.m_nodes[this.m_nodeCapacity - 1].height = -1;
+      links[4 * (this.m_nodeCapacity - 1) + Link.parent] = b2_nullNode;
+      links[4 * (this.m_nodeCapacity - 1) + Link.height] = -1;
       this.m_freeList = this.m_nodeCount;
     }
 
     // Peel a node off the free list.
     const nodeId = this.m_freeList;
-    const node = this.m_nodes[nodeId];
-    this.m_freeList = node.next;
-    node.parent = b2_nullNode;
-    node.child1 = b2_nullNode;
-    node.child2 = b2_nullNode;
-    node.height = 0;
-    node.userData = null;
+    const links = this.m_links;
+    const o = 4 * nodeId;
+    this.m_freeList = links[o + Link.parent];
+    links[o + Link.parent] = b2_nullNode;
+    links[o + Link.child1] = b2_nullNode;
+    links[o + Link.child2] = b2_nullNode;
+    links[o + Link.height] = 0;
+    this.m_userData[nodeId] = null;
     ++this.m_nodeCount;
     return nodeId;
+  }
+
+  /**
+   * Not in the C++: sets the pool's capacity, keeping the nodes below it. New nodes read as the
+   * C++ ones are never read (children null, height -1); AllocateNode links them into the free list.
+   */
+  private Reserve(capacity: number): void {
+    const count = b2Min(this.m_nodeCapacity, capacity);
+    const fatAABBs = new Float64Array(4 * capacity);
+    fatAABBs.set(this.m_fatAABBs.subarray(0, 4 * count));
+    const links = new Int32Array(4 * capacity);
+    links.set(this.m_links.subarray(0, 4 * count));
+    for (let i = count; i < capacity; ++i) {
+      links[4 * i + Link.parent] = b2_nullNode;
+      links[4 * i + Link.child1] = b2_nullNode;
+      links[4 * i + Link.child2] = b2_nullNode;
+      links[4 * i + Link.height] = -1;
+    }
+    this.m_userData.length = count;
+    for (let i = count; i < capacity; ++i) {
+      this.m_userData.push(null);
+    }
+    this.m_fatAABBs = fatAABBs;
+    this.m_links = links;
+    this.m_nodeCapacity = capacity;
   }
 
   /** Return a node to the pool. */
   FreeNode(nodeId: number): void {
     b2Assert(0 <= nodeId && nodeId < this.m_nodeCapacity);
     b2Assert(0 < this.m_nodeCount);
-    this.m_nodes[nodeId].next = this.m_freeList;
-    this.m_nodes[nodeId].height = -1;
+    this.m_links[4 * nodeId + Link.parent] = this.m_freeList;
+    this.m_links[4 * nodeId + Link.height] = -1;
     // Not in the C++: a free node lets go of its proxy, so destroyed fixtures can be collected.
-    this.m_nodes[nodeId].userData = null;
+    this.m_userData[nodeId] = null;
     this.m_freeList = nodeId;
     --this.m_nodeCount;
   }
@@ -207,17 +245,17 @@ export class b2DynamicTree {
    */
   CreateProxy(aabb: Readonly<b2AABB>, userData: any): number {
     const proxyId = this.AllocateNode();
-    const node = this.m_nodes[proxyId];
 
     // Fatten the aabb.
     const r = b2_aabbExtension;
-    node.aabb.lowerBound.x = aabb.lowerBound.x - r;
-    node.aabb.lowerBound.y = aabb.lowerBound.y - r;
-    node.aabb.upperBound.x = aabb.upperBound.x + r;
-    node.aabb.upperBound.y = aabb.upperBound.y + r;
-    this.SetFatAABB(proxyId, node.aabb);
-    node.userData = userData;
-    node.height = 0;
+    const fat = this.m_fatAABBs;
+    const o = 4 * proxyId;
+    fat[o + Box.lowerX] = aabb.lowerBound.x - r;
+    fat[o + Box.lowerY] = aabb.lowerBound.y - r;
+    fat[o + Box.upperX] = aabb.upperBound.x + r;
+    fat[o + Box.upperY] = aabb.upperBound.y + r;
+    this.m_userData[proxyId] = userData;
+    this.m_links[o + Link.height] = 0;
 
     this.InsertLeaf(proxyId);
 
@@ -227,7 +265,7 @@ export class b2DynamicTree {
   /** Destroy a proxy. This asserts if the id is invalid. */
   DestroyProxy(proxyId: number): void {
     b2Assert(0 <= proxyId && proxyId < this.m_nodeCapacity);
-    b2Assert(this.m_nodes[proxyId].IsLeaf());
+    b2Assert(this.IsLeaf(proxyId));
 
     this.RemoveLeaf(proxyId);
     this.FreeNode(proxyId);
@@ -242,17 +280,16 @@ export class b2DynamicTree {
   MoveProxy(proxyId: number, aabb: Readonly<b2AABB>, displacement: Readonly<b2Vec2>): boolean {
     b2Assert(0 <= proxyId && proxyId < this.m_nodeCapacity);
 
-    const node = this.m_nodes[proxyId];
-    b2Assert(node.IsLeaf());
+    b2Assert(this.IsLeaf(proxyId));
 
-    // node.aabb.Contains(aabb), on the copy in m_fatAABBs.
+    // node.aabb.Contains(aabb)
     const fat = this.m_fatAABBs;
     const o = 4 * proxyId;
     if (
-      fat[o] <= aabb.lowerBound.x &&
-      fat[o + 1] <= aabb.lowerBound.y &&
-      aabb.upperBound.x <= fat[o + 2] &&
-      aabb.upperBound.y <= fat[o + 3]
+      fat[o + Box.lowerX] <= aabb.lowerBound.x &&
+      fat[o + Box.lowerY] <= aabb.lowerBound.y &&
+      aabb.upperBound.x <= fat[o + Box.upperX] &&
+      aabb.upperBound.y <= fat[o + Box.upperY]
     ) {
       return false;
     }
@@ -282,11 +319,11 @@ export class b2DynamicTree {
       upperY += dy;
     }
 
-    node.aabb.lowerBound.x = lowerX;
-    node.aabb.lowerBound.y = lowerY;
-    node.aabb.upperBound.x = upperX;
-    node.aabb.upperBound.y = upperY;
-    this.SetFatAABB(proxyId, node.aabb);
+    // RemoveLeaf frees a node and allocates none, so the array read above is still the pool's.
+    fat[o + Box.lowerX] = lowerX;
+    fat[o + Box.lowerY] = lowerY;
+    fat[o + Box.upperX] = upperX;
+    fat[o + Box.upperY] = upperY;
 
     this.InsertLeaf(proxyId);
     return true;
@@ -298,36 +335,87 @@ export class b2DynamicTree {
    */
   GetUserData(proxyId: number): any {
     b2Assert(0 <= proxyId && proxyId < this.m_nodeCapacity);
-    return this.m_nodes[proxyId].userData;
-  }
-
-  /** Get the fat AABB for a proxy. */
-  GetFatAABB(proxyId: number): Readonly<b2AABB> {
-    b2Assert(0 <= proxyId && proxyId < this.m_nodeCapacity);
-    return this.m_nodes[proxyId].aabb;
-  }
-
-  /** Not in the C++: copies node `id`'s AABB into m_fatAABBs. */
-  private SetFatAABB(id: number, aabb: Readonly<b2AABB>): void {
-    const fat = this.m_fatAABBs;
-    const o = 4 * id;
-    fat[o] = aabb.lowerBound.x;
-    fat[o + 1] = aabb.lowerBound.y;
-    fat[o + 2] = aabb.upperBound.x;
-    fat[o + 3] = aabb.upperBound.y;
+    return this.m_userData[proxyId];
   }
 
   /**
-   * Not in the C++: refills m_fatAABBs from the nodes, for a reader that has set m_nodes and
-   * m_nodeCapacity itself.
+   * Get the fat AABB for a proxy. The C++ returns a reference to the node's AABB; the tree keeps
+   * it in an array here, so this copies it into `aabb` (a new one when omitted) and returns that.
    */
-  SyncFatAABBs(): void {
-    this.m_fatAABBs = new Float64Array(4 * this.m_nodeCapacity);
-    for (let i = 0; i < this.m_nodeCapacity; ++i) {
-      if (this.m_nodes[i].height >= 0) {
-        this.SetFatAABB(i, this.m_nodes[i].aabb);
+  GetFatAABB(proxyId: number, aabb: b2AABB = new b2AABB()): b2AABB {
+    b2Assert(0 <= proxyId && proxyId < this.m_nodeCapacity);
+    const fat = this.m_fatAABBs;
+    const o = 4 * proxyId;
+    aabb.lowerBound.x = fat[o + Box.lowerX];
+    aabb.lowerBound.y = fat[o + Box.lowerY];
+    aabb.upperBound.x = fat[o + Box.upperX];
+    aabb.upperBound.y = fat[o + Box.upperY];
+    return aabb;
+  }
+
+  /** Not in the C++: whether node `nodeId` is a leaf (b2TreeNode::IsLeaf). */
+  IsLeaf(nodeId: number): boolean {
+    return this.m_links[4 * nodeId + Link.child1] === b2_nullNode;
+  }
+
+  /** Not in the C++: a copy of node `nodeId` (into `node`, a new one when omitted). */
+  GetNode(nodeId: number, node: b2TreeNode = new b2TreeNode()): b2TreeNode {
+    b2Assert(0 <= nodeId && nodeId < this.m_nodeCapacity);
+    this.GetFatAABB(nodeId, node.aabb);
+    node.userData = this.m_userData[nodeId];
+    const o = 4 * nodeId;
+    node.parent = this.m_links[o + Link.parent];
+    node.child1 = this.m_links[o + Link.child1];
+    node.child2 = this.m_links[o + Link.child2];
+    node.height = this.m_links[o + Link.height];
+    return node;
+  }
+
+  /**
+   * Not in the C++: replaces the node pool with `nodes`, node i at id i (a saved tree's, for a
+   * reader that sets m_root, m_nodeCount and m_freeList to match). A free node's AABB is not read.
+   */
+  SetNodes(nodes: readonly b2TreeNode[]): void {
+    this.m_nodeCapacity = 0;
+    this.Reserve(nodes.length);
+    const fat = this.m_fatAABBs;
+    const links = this.m_links;
+    for (let i = 0; i < nodes.length; ++i) {
+      const node = nodes[i];
+      const o = 4 * i;
+      links[o + Link.parent] = node.parent;
+      links[o + Link.child1] = node.child1;
+      links[o + Link.child2] = node.child2;
+      links[o + Link.height] = node.height;
+      this.m_userData[i] = node.userData;
+      if (node.height >= 0) {
+        fat[o + Box.lowerX] = node.aabb.lowerBound.x;
+        fat[o + Box.lowerY] = node.aabb.lowerBound.y;
+        fat[o + Box.upperX] = node.aabb.upperBound.x;
+        fat[o + Box.upperY] = node.aabb.upperBound.y;
       }
     }
+  }
+
+  /** Not in the C++: node `target`'s AABB becomes the union of nodes a's and b's (b2AABB::Combine2). */
+  private Combine2(target: number, a: number, b: number): void {
+    const fat = this.m_fatAABBs;
+    const t = 4 * target;
+    const oa = 4 * a;
+    const ob = 4 * b;
+    fat[t + Box.lowerX] = b2Min(fat[oa + Box.lowerX], fat[ob + Box.lowerX]);
+    fat[t + Box.lowerY] = b2Min(fat[oa + Box.lowerY], fat[ob + Box.lowerY]);
+    fat[t + Box.upperX] = b2Max(fat[oa + Box.upperX], fat[ob + Box.upperX]);
+    fat[t + Box.upperY] = b2Max(fat[oa + Box.upperY], fat[ob + Box.upperY]);
+  }
+
+  /** Not in the C++: node `nodeId`'s aabb.GetPerimeter(). */
+  private GetPerimeter(nodeId: number): number {
+    const fat = this.m_fatAABBs;
+    const o = 4 * nodeId;
+    const wx = fat[o + Box.upperX] - fat[o + Box.lowerX];
+    const wy = fat[o + Box.upperY] - fat[o + Box.lowerY];
+    return 2.0 * (wx + wy);
   }
 
   /**
@@ -345,28 +433,28 @@ export class b2DynamicTree {
           continue;
         }
 
-        // b2TestOverlap(node.aabb, aabb) on the copy in m_fatAABBs (read here each time: a
-        // callback may add proxies, which can replace it): the same subtractions and tests.
+        // b2TestOverlap(node.aabb, aabb): the same subtractions and tests. The arrays are read
+        // each time: a callback may add proxies, which can replace them.
         const fat = this.m_fatAABBs;
         const o = 4 * nodeId;
         if (
-          aabb.lowerBound.x - fat[o + 2] > 0.0 ||
-          aabb.lowerBound.y - fat[o + 3] > 0.0 ||
-          fat[o] - aabb.upperBound.x > 0.0 ||
-          fat[o + 1] - aabb.upperBound.y > 0.0
+          aabb.lowerBound.x - fat[o + Box.upperX] > 0.0 ||
+          aabb.lowerBound.y - fat[o + Box.upperY] > 0.0 ||
+          fat[o + Box.lowerX] - aabb.upperBound.x > 0.0 ||
+          fat[o + Box.lowerY] - aabb.upperBound.y > 0.0
         ) {
           continue;
         }
 
-        const node = this.m_nodes[nodeId];
-        if (node.IsLeaf()) {
+        const links = this.m_links;
+        if (links[o + Link.child1] === b2_nullNode) {
           const proceed = callback.QueryCallback(nodeId);
           if (proceed === false) {
             return;
           }
         } else {
-          stack.Push(node.child1);
-          stack.Push(node.child2);
+          stack.Push(links[o + Link.child1]);
+          stack.Push(links[o + Link.child2]);
         }
       }
     } finally {
@@ -405,19 +493,16 @@ export class b2DynamicTree {
 
     let maxFraction = input.maxFraction;
 
+    // Build a bounding box for the segment.
+    let tx = p1x + maxFraction * (p2x - p1x);
+    let ty = p1y + maxFraction * (p2y - p1y);
+    let segmentLowerX = b2Min(p1x, tx);
+    let segmentLowerY = b2Min(p1y, ty);
+    let segmentUpperX = b2Max(p1x, tx);
+    let segmentUpperY = b2Max(p1y, ty);
+
     const traversal = b2AcquireTraversal();
     try {
-      // Build a bounding box for the segment.
-      const segmentAABB = traversal.segmentAABB;
-      {
-        const tx = p1x + maxFraction * (p2x - p1x);
-        const ty = p1y + maxFraction * (p2y - p1y);
-        segmentAABB.lowerBound.x = b2Min(p1x, tx);
-        segmentAABB.lowerBound.y = b2Min(p1y, ty);
-        segmentAABB.upperBound.x = b2Max(p1x, tx);
-        segmentAABB.upperBound.y = b2Max(p1y, ty);
-      }
-
       const subInput = traversal.subInput;
       const stack = traversal.stack;
       stack.Push(this.m_root);
@@ -428,26 +513,36 @@ export class b2DynamicTree {
           continue;
         }
 
-        const node = this.m_nodes[nodeId];
-
-        if (b2TestOverlap(node.aabb, segmentAABB) === false) {
+        // b2TestOverlap(node.aabb, segmentAABB). The arrays are read each time: a callback may
+        // add proxies, which can replace them.
+        const fat = this.m_fatAABBs;
+        const o = 4 * nodeId;
+        const lowerX = fat[o + Box.lowerX];
+        const lowerY = fat[o + Box.lowerY];
+        const upperX = fat[o + Box.upperX];
+        const upperY = fat[o + Box.upperY];
+        if (
+          segmentLowerX - upperX > 0.0 ||
+          segmentLowerY - upperY > 0.0 ||
+          lowerX - segmentUpperX > 0.0 ||
+          lowerY - segmentUpperY > 0.0
+        ) {
           continue;
         }
 
         // Separating axis for segment (Gino, p80).
         // |dot(v, p1 - c)| > dot(|v|, h)
-        const lower = node.aabb.lowerBound;
-        const upper = node.aabb.upperBound;
-        const cx = 0.5 * (lower.x + upper.x);
-        const cy = 0.5 * (lower.y + upper.y);
-        const hx = 0.5 * (upper.x - lower.x);
-        const hy = 0.5 * (upper.y - lower.y);
+        const cx = 0.5 * (lowerX + upperX);
+        const cy = 0.5 * (lowerY + upperY);
+        const hx = 0.5 * (upperX - lowerX);
+        const hy = 0.5 * (upperY - lowerY);
         const separation = b2Abs(vx * (p1x - cx) + vy * (p1y - cy)) - (absVx * hx + absVy * hy);
         if (separation > 0.0) {
           continue;
         }
 
-        if (node.IsLeaf()) {
+        const links = this.m_links;
+        if (links[o + Link.child1] === b2_nullNode) {
           subInput.p1.Assign(input.p1);
           subInput.p2.Assign(input.p2);
           subInput.maxFraction = maxFraction;
@@ -462,16 +557,16 @@ export class b2DynamicTree {
           if (value > 0.0) {
             // Update segment bounding box.
             maxFraction = value;
-            const tx = p1x + maxFraction * (p2x - p1x);
-            const ty = p1y + maxFraction * (p2y - p1y);
-            segmentAABB.lowerBound.x = b2Min(p1x, tx);
-            segmentAABB.lowerBound.y = b2Min(p1y, ty);
-            segmentAABB.upperBound.x = b2Max(p1x, tx);
-            segmentAABB.upperBound.y = b2Max(p1y, ty);
+            tx = p1x + maxFraction * (p2x - p1x);
+            ty = p1y + maxFraction * (p2y - p1y);
+            segmentLowerX = b2Min(p1x, tx);
+            segmentLowerY = b2Min(p1y, ty);
+            segmentUpperX = b2Max(p1x, tx);
+            segmentUpperY = b2Max(p1y, ty);
           }
         } else {
-          stack.Push(node.child1);
-          stack.Push(node.child2);
+          stack.Push(links[o + Link.child1]);
+          stack.Push(links[o + Link.child2]);
         }
       }
     } finally {
@@ -482,39 +577,40 @@ export class b2DynamicTree {
   InsertLeaf(leaf: number): void {
     ++this.m_insertionCount;
 
-    const nodes = this.m_nodes;
-
     if (this.m_root === b2_nullNode) {
       this.m_root = leaf;
-      nodes[this.m_root].parent = b2_nullNode;
+      this.m_links[4 * this.m_root + Link.parent] = b2_nullNode;
       return;
     }
 
     // Find the best sibling for this node. The leaf's AABB does not change during insertion,
-    // so it is read in place where the C++ copies it. The AABB combinations and perimeters
+    // so it is read once where the C++ copies it. The AABB combinations and perimeters
     // (b2AABB.Combine2 with b2Min/b2Max's ternaries, GetPerimeter) are written out on scalars,
     // the same operations in the same argument order: the loop calls them more often than V8
     // inlines, and a perimeter returned from a call that is not inlined is a boxed double.
-    const leafAABB = nodes[leaf].aabb;
-    const leafLowerX = leafAABB.lowerBound.x;
-    const leafLowerY = leafAABB.lowerBound.y;
-    const leafUpperX = leafAABB.upperBound.x;
-    const leafUpperY = leafAABB.upperBound.y;
+    let fat = this.m_fatAABBs;
+    let links = this.m_links;
+    const leafLowerX = fat[4 * leaf + Box.lowerX];
+    const leafLowerY = fat[4 * leaf + Box.lowerY];
+    const leafUpperX = fat[4 * leaf + Box.upperX];
+    const leafUpperY = fat[4 * leaf + Box.upperY];
     let index = this.m_root;
-    while (nodes[index].IsLeaf() === false) {
-      const node = nodes[index];
-      const child1 = node.child1;
-      const child2 = node.child2;
+    while (links[4 * index + Link.child1] !== b2_nullNode) {
+      const o = 4 * index;
+      const child1 = links[o + Link.child1];
+      const child2 = links[o + Link.child2];
 
-      const nodeLower = node.aabb.lowerBound;
-      const nodeUpper = node.aabb.upperBound;
-      const area = 2.0 * (nodeUpper.x - nodeLower.x + (nodeUpper.y - nodeLower.y));
+      const nodeLowerX = fat[o + Box.lowerX];
+      const nodeLowerY = fat[o + Box.lowerY];
+      const nodeUpperX = fat[o + Box.upperX];
+      const nodeUpperY = fat[o + Box.upperY];
+      const area = 2.0 * (nodeUpperX - nodeLowerX + (nodeUpperY - nodeLowerY));
 
       // combinedAABB.Combine2(nodes[index].aabb, leafAABB)
-      const combinedLowerX = nodeLower.x < leafLowerX ? nodeLower.x : leafLowerX;
-      const combinedLowerY = nodeLower.y < leafLowerY ? nodeLower.y : leafLowerY;
-      const combinedUpperX = nodeUpper.x > leafUpperX ? nodeUpper.x : leafUpperX;
-      const combinedUpperY = nodeUpper.y > leafUpperY ? nodeUpper.y : leafUpperY;
+      const combinedLowerX = nodeLowerX < leafLowerX ? nodeLowerX : leafLowerX;
+      const combinedLowerY = nodeLowerY < leafLowerY ? nodeLowerY : leafLowerY;
+      const combinedUpperX = nodeUpperX > leafUpperX ? nodeUpperX : leafUpperX;
+      const combinedUpperY = nodeUpperY > leafUpperY ? nodeUpperY : leafUpperY;
       const combinedArea = 2.0 * (combinedUpperX - combinedLowerX + (combinedUpperY - combinedLowerY));
 
       // Cost of creating a new parent for this node and the new leaf
@@ -527,17 +623,20 @@ export class b2DynamicTree {
       let cost1: number;
       {
         // aabb.Combine2(leafAABB, nodes[child1].aabb)
-        const childLower = nodes[child1].aabb.lowerBound;
-        const childUpper = nodes[child1].aabb.upperBound;
-        const lowerX = leafLowerX < childLower.x ? leafLowerX : childLower.x;
-        const lowerY = leafLowerY < childLower.y ? leafLowerY : childLower.y;
-        const upperX = leafUpperX > childUpper.x ? leafUpperX : childUpper.x;
-        const upperY = leafUpperY > childUpper.y ? leafUpperY : childUpper.y;
+        const c = 4 * child1;
+        const childLowerX = fat[c + Box.lowerX];
+        const childLowerY = fat[c + Box.lowerY];
+        const childUpperX = fat[c + Box.upperX];
+        const childUpperY = fat[c + Box.upperY];
+        const lowerX = leafLowerX < childLowerX ? leafLowerX : childLowerX;
+        const lowerY = leafLowerY < childLowerY ? leafLowerY : childLowerY;
+        const upperX = leafUpperX > childUpperX ? leafUpperX : childUpperX;
+        const upperY = leafUpperY > childUpperY ? leafUpperY : childUpperY;
         const newArea = 2.0 * (upperX - lowerX + (upperY - lowerY));
-        if (nodes[child1].IsLeaf()) {
+        if (links[c + Link.child1] === b2_nullNode) {
           cost1 = newArea + inheritanceCost;
         } else {
-          const oldArea = 2.0 * (childUpper.x - childLower.x + (childUpper.y - childLower.y));
+          const oldArea = 2.0 * (childUpperX - childLowerX + (childUpperY - childLowerY));
           cost1 = newArea - oldArea + inheritanceCost;
         }
       }
@@ -546,17 +645,20 @@ export class b2DynamicTree {
       let cost2: number;
       {
         // aabb.Combine2(leafAABB, nodes[child2].aabb)
-        const childLower = nodes[child2].aabb.lowerBound;
-        const childUpper = nodes[child2].aabb.upperBound;
-        const lowerX = leafLowerX < childLower.x ? leafLowerX : childLower.x;
-        const lowerY = leafLowerY < childLower.y ? leafLowerY : childLower.y;
-        const upperX = leafUpperX > childUpper.x ? leafUpperX : childUpper.x;
-        const upperY = leafUpperY > childUpper.y ? leafUpperY : childUpper.y;
+        const c = 4 * child2;
+        const childLowerX = fat[c + Box.lowerX];
+        const childLowerY = fat[c + Box.lowerY];
+        const childUpperX = fat[c + Box.upperX];
+        const childUpperY = fat[c + Box.upperY];
+        const lowerX = leafLowerX < childLowerX ? leafLowerX : childLowerX;
+        const lowerY = leafLowerY < childLowerY ? leafLowerY : childLowerY;
+        const upperX = leafUpperX > childUpperX ? leafUpperX : childUpperX;
+        const upperY = leafUpperY > childUpperY ? leafUpperY : childUpperY;
         const newArea = 2.0 * (upperX - lowerX + (upperY - lowerY));
-        if (nodes[child2].IsLeaf()) {
+        if (links[c + Link.child1] === b2_nullNode) {
           cost2 = newArea + inheritanceCost;
         } else {
-          const oldArea = 2.0 * (childUpper.x - childLower.x + (childUpper.y - childLower.y));
+          const oldArea = 2.0 * (childUpperX - childLowerX + (childUpperY - childLowerY));
           cost2 = newArea - oldArea + inheritanceCost;
         }
       }
@@ -577,52 +679,53 @@ export class b2DynamicTree {
     const sibling = index;
 
     // Create a new parent.
-    const oldParent = nodes[sibling].parent;
+    const oldParent = links[4 * sibling + Link.parent];
     const newParent = this.AllocateNode();
-    // AllocateNode may have grown the pool; the array object is the same one.
-    nodes[newParent].parent = oldParent;
-    nodes[newParent].userData = null;
-    nodes[newParent].aabb.Combine2(leafAABB, nodes[sibling].aabb);
-    this.SetFatAABB(newParent, nodes[newParent].aabb);
-    nodes[newParent].height = nodes[sibling].height + 1;
+    // AllocateNode may have grown the pool, replacing the arrays.
+    fat = this.m_fatAABBs;
+    links = this.m_links;
+    links[4 * newParent + Link.parent] = oldParent;
+    this.m_userData[newParent] = null;
+    this.Combine2(newParent, leaf, sibling);
+    links[4 * newParent + Link.height] = links[4 * sibling + Link.height] + 1;
 
     if (oldParent !== b2_nullNode) {
       // The sibling was not the root.
-      if (nodes[oldParent].child1 === sibling) {
-        nodes[oldParent].child1 = newParent;
+      if (links[4 * oldParent + Link.child1] === sibling) {
+        links[4 * oldParent + Link.child1] = newParent;
       } else {
-        nodes[oldParent].child2 = newParent;
+        links[4 * oldParent + Link.child2] = newParent;
       }
 
-      nodes[newParent].child1 = sibling;
-      nodes[newParent].child2 = leaf;
-      nodes[sibling].parent = newParent;
-      nodes[leaf].parent = newParent;
+      links[4 * newParent + Link.child1] = sibling;
+      links[4 * newParent + Link.child2] = leaf;
+      links[4 * sibling + Link.parent] = newParent;
+      links[4 * leaf + Link.parent] = newParent;
     } else {
       // The sibling was the root.
-      nodes[newParent].child1 = sibling;
-      nodes[newParent].child2 = leaf;
-      nodes[sibling].parent = newParent;
-      nodes[leaf].parent = newParent;
+      links[4 * newParent + Link.child1] = sibling;
+      links[4 * newParent + Link.child2] = leaf;
+      links[4 * sibling + Link.parent] = newParent;
+      links[4 * leaf + Link.parent] = newParent;
       this.m_root = newParent;
     }
 
     // Walk back up the tree fixing heights and AABBs
-    index = nodes[leaf].parent;
+    index = links[4 * leaf + Link.parent];
     while (index !== b2_nullNode) {
       index = this.Balance(index);
 
-      const child1 = nodes[index].child1;
-      const child2 = nodes[index].child2;
+      const o = 4 * index;
+      const child1 = links[o + Link.child1];
+      const child2 = links[o + Link.child2];
 
       b2Assert(child1 !== b2_nullNode);
       b2Assert(child2 !== b2_nullNode);
 
-      nodes[index].height = 1 + b2Max(nodes[child1].height, nodes[child2].height);
-      nodes[index].aabb.Combine2(nodes[child1].aabb, nodes[child2].aabb);
-      this.SetFatAABB(index, nodes[index].aabb);
+      links[o + Link.height] = 1 + b2Max(links[4 * child1 + Link.height], links[4 * child2 + Link.height]);
+      this.Combine2(index, child1, child2);
 
-      index = nodes[index].parent;
+      index = links[o + Link.parent];
     }
   }
 
@@ -632,24 +735,24 @@ export class b2DynamicTree {
       return;
     }
 
-    const nodes = this.m_nodes;
-    const parent = nodes[leaf].parent;
-    const grandParent = nodes[parent].parent;
+    const links = this.m_links;
+    const parent = links[4 * leaf + Link.parent];
+    const grandParent = links[4 * parent + Link.parent];
     let sibling: number;
-    if (nodes[parent].child1 === leaf) {
-      sibling = nodes[parent].child2;
+    if (links[4 * parent + Link.child1] === leaf) {
+      sibling = links[4 * parent + Link.child2];
     } else {
-      sibling = nodes[parent].child1;
+      sibling = links[4 * parent + Link.child1];
     }
 
     if (grandParent !== b2_nullNode) {
       // Destroy parent and connect sibling to grandParent.
-      if (nodes[grandParent].child1 === parent) {
-        nodes[grandParent].child1 = sibling;
+      if (links[4 * grandParent + Link.child1] === parent) {
+        links[4 * grandParent + Link.child1] = sibling;
       } else {
-        nodes[grandParent].child2 = sibling;
+        links[4 * grandParent + Link.child2] = sibling;
       }
-      nodes[sibling].parent = grandParent;
+      links[4 * sibling + Link.parent] = grandParent;
       this.FreeNode(parent);
 
       // Adjust ancestor bounds.
@@ -657,18 +760,18 @@ export class b2DynamicTree {
       while (index !== b2_nullNode) {
         index = this.Balance(index);
 
-        const child1 = nodes[index].child1;
-        const child2 = nodes[index].child2;
+        const o = 4 * index;
+        const child1 = links[o + Link.child1];
+        const child2 = links[o + Link.child2];
 
-        nodes[index].aabb.Combine2(nodes[child1].aabb, nodes[child2].aabb);
-        this.SetFatAABB(index, nodes[index].aabb);
-        nodes[index].height = 1 + b2Max(nodes[child1].height, nodes[child2].height);
+        this.Combine2(index, child1, child2);
+        links[o + Link.height] = 1 + b2Max(links[4 * child1 + Link.height], links[4 * child2 + Link.height]);
 
-        index = nodes[index].parent;
+        index = links[o + Link.parent];
       }
     } else {
       this.m_root = sibling;
-      nodes[sibling].parent = b2_nullNode;
+      links[4 * sibling + Link.parent] = b2_nullNode;
       this.FreeNode(parent);
     }
   }
@@ -680,71 +783,68 @@ export class b2DynamicTree {
   Balance(iA: number): number {
     b2Assert(iA !== b2_nullNode);
 
-    const nodes = this.m_nodes;
-    const A = nodes[iA];
-    if (A.IsLeaf() || A.height < 2) {
+    const links = this.m_links;
+    const A = 4 * iA;
+    if (links[A + Link.child1] === b2_nullNode || links[A + Link.height] < 2) {
       return iA;
     }
 
-    const iB = A.child1;
-    const iC = A.child2;
+    const iB = links[A + Link.child1];
+    const iC = links[A + Link.child2];
     b2Assert(0 <= iB && iB < this.m_nodeCapacity);
     b2Assert(0 <= iC && iC < this.m_nodeCapacity);
 
-    const B = nodes[iB];
-    const C = nodes[iC];
+    const B = 4 * iB;
+    const C = 4 * iC;
 
-    const balance = C.height - B.height;
+    const balance = links[C + Link.height] - links[B + Link.height];
 
     // Rotate C up
     if (balance > 1) {
-      const iF = C.child1;
-      const iG = C.child2;
-      const F = nodes[iF];
-      const G = nodes[iG];
+      const iF = links[C + Link.child1];
+      const iG = links[C + Link.child2];
+      const F = 4 * iF;
+      const G = 4 * iG;
       b2Assert(0 <= iF && iF < this.m_nodeCapacity);
       b2Assert(0 <= iG && iG < this.m_nodeCapacity);
 
       // Swap A and C
-      C.child1 = iA;
-      C.parent = A.parent;
-      A.parent = iC;
+      links[C + Link.child1] = iA;
+      links[C + Link.parent] = links[A + Link.parent];
+      links[A + Link.parent] = iC;
 
       // A's old parent should point to C
-      if (C.parent !== b2_nullNode) {
-        if (nodes[C.parent].child1 === iA) {
-          nodes[C.parent].child1 = iC;
+      const parent = links[C + Link.parent];
+      if (parent !== b2_nullNode) {
+        if (links[4 * parent + Link.child1] === iA) {
+          links[4 * parent + Link.child1] = iC;
         } else {
-          b2Assert(nodes[C.parent].child2 === iA);
-          nodes[C.parent].child2 = iC;
+          b2Assert(links[4 * parent + Link.child2] === iA);
+          links[4 * parent + Link.child2] = iC;
         }
       } else {
         this.m_root = iC;
       }
 
       // Rotate
-      if (F.height > G.height) {
-        C.child2 = iF;
-        A.child2 = iG;
-        G.parent = iA;
-        A.aabb.Combine2(B.aabb, G.aabb);
-        C.aabb.Combine2(A.aabb, F.aabb);
-        this.SetFatAABB(iA, A.aabb);
-        this.SetFatAABB(iC, C.aabb);
+      if (links[F + Link.height] > links[G + Link.height]) {
+        links[C + Link.child2] = iF;
+        links[A + Link.child2] = iG;
+        links[G + Link.parent] = iA;
+        this.Combine2(iA, iB, iG);
+        this.Combine2(iC, iA, iF);
 
-        A.height = 1 + b2Max(B.height, G.height);
-        C.height = 1 + b2Max(A.height, F.height);
+        links[A + Link.height] = 1 + b2Max(links[B + Link.height], links[G + Link.height]);
+        links[C + Link.height] = 1 + b2Max(links[A + Link.height], links[F + Link.height]);
       } else {
-        C.child2 = iG;
-        A.child2 = iF;
-        F.parent = iA;
-        A.aabb.Combine2(B.aabb, F.aabb);
-        C.aabb.Combine2(A.aabb, G.aabb);
-        this.SetFatAABB(iA, A.aabb);
-        this.SetFatAABB(iC, C.aabb);
+        links[C + Link.child2] = iG;
+        links[A + Link.child2] = iF;
+        links[F + Link.parent] = iA;
+        this.Combine2(iA, iB, iF);
+        this.Combine2(iC, iA, iG);
 
-        A.height = 1 + b2Max(B.height, F.height);
-        C.height = 1 + b2Max(A.height, G.height);
+        links[A + Link.height] = 1 + b2Max(links[B + Link.height], links[F + Link.height]);
+        links[C + Link.height] = 1 + b2Max(links[A + Link.height], links[G + Link.height]);
       }
 
       return iC;
@@ -752,53 +852,50 @@ export class b2DynamicTree {
 
     // Rotate B up
     if (balance < -1) {
-      const iD = B.child1;
-      const iE = B.child2;
-      const D = nodes[iD];
-      const E = nodes[iE];
+      const iD = links[B + Link.child1];
+      const iE = links[B + Link.child2];
+      const D = 4 * iD;
+      const E = 4 * iE;
       b2Assert(0 <= iD && iD < this.m_nodeCapacity);
       b2Assert(0 <= iE && iE < this.m_nodeCapacity);
 
       // Swap A and B
-      B.child1 = iA;
-      B.parent = A.parent;
-      A.parent = iB;
+      links[B + Link.child1] = iA;
+      links[B + Link.parent] = links[A + Link.parent];
+      links[A + Link.parent] = iB;
 
       // A's old parent should point to B
-      if (B.parent !== b2_nullNode) {
-        if (nodes[B.parent].child1 === iA) {
-          nodes[B.parent].child1 = iB;
+      const parent = links[B + Link.parent];
+      if (parent !== b2_nullNode) {
+        if (links[4 * parent + Link.child1] === iA) {
+          links[4 * parent + Link.child1] = iB;
         } else {
-          b2Assert(nodes[B.parent].child2 === iA);
-          nodes[B.parent].child2 = iB;
+          b2Assert(links[4 * parent + Link.child2] === iA);
+          links[4 * parent + Link.child2] = iB;
         }
       } else {
         this.m_root = iB;
       }
 
       // Rotate
-      if (D.height > E.height) {
-        B.child2 = iD;
-        A.child1 = iE;
-        E.parent = iA;
-        A.aabb.Combine2(C.aabb, E.aabb);
-        B.aabb.Combine2(A.aabb, D.aabb);
-        this.SetFatAABB(iA, A.aabb);
-        this.SetFatAABB(iB, B.aabb);
+      if (links[D + Link.height] > links[E + Link.height]) {
+        links[B + Link.child2] = iD;
+        links[A + Link.child1] = iE;
+        links[E + Link.parent] = iA;
+        this.Combine2(iA, iC, iE);
+        this.Combine2(iB, iA, iD);
 
-        A.height = 1 + b2Max(C.height, E.height);
-        B.height = 1 + b2Max(A.height, D.height);
+        links[A + Link.height] = 1 + b2Max(links[C + Link.height], links[E + Link.height]);
+        links[B + Link.height] = 1 + b2Max(links[A + Link.height], links[D + Link.height]);
       } else {
-        B.child2 = iE;
-        A.child1 = iD;
-        D.parent = iA;
-        A.aabb.Combine2(C.aabb, D.aabb);
-        B.aabb.Combine2(A.aabb, E.aabb);
-        this.SetFatAABB(iA, A.aabb);
-        this.SetFatAABB(iB, B.aabb);
+        links[B + Link.child2] = iE;
+        links[A + Link.child1] = iD;
+        links[D + Link.parent] = iA;
+        this.Combine2(iA, iC, iD);
+        this.Combine2(iB, iA, iE);
 
-        A.height = 1 + b2Max(C.height, D.height);
-        B.height = 1 + b2Max(A.height, E.height);
+        links[A + Link.height] = 1 + b2Max(links[C + Link.height], links[D + Link.height]);
+        links[B + Link.height] = 1 + b2Max(links[A + Link.height], links[E + Link.height]);
       }
 
       return iB;
@@ -816,7 +913,7 @@ export class b2DynamicTree {
       return 0;
     }
 
-    return this.m_nodes[this.m_root].height;
+    return this.m_links[4 * this.m_root + Link.height];
   }
 
   /** Get the ratio of the sum of the node areas to the root area. */
@@ -825,18 +922,16 @@ export class b2DynamicTree {
       return 0.0;
     }
 
-    const root = this.m_nodes[this.m_root];
-    const rootArea = root.aabb.GetPerimeter();
+    const rootArea = this.GetPerimeter(this.m_root);
 
     let totalArea = 0.0;
     for (let i = 0; i < this.m_nodeCapacity; ++i) {
-      const node = this.m_nodes[i];
-      if (node.height < 0) {
+      if (this.m_links[4 * i + Link.height] < 0) {
         // Free node in pool
         continue;
       }
 
-      totalArea += node.aabb.GetPerimeter();
+      totalArea += this.GetPerimeter(i);
     }
 
     return totalArea / rootArea;
@@ -856,14 +951,13 @@ export class b2DynamicTree {
     }
 
     b2Assert(0 <= nodeId && nodeId < this.m_nodeCapacity);
-    const node = this.m_nodes[nodeId];
 
-    if (node.IsLeaf()) {
+    if (this.IsLeaf(nodeId)) {
       return 0;
     }
 
-    const height1 = this.ComputeHeight(node.child1);
-    const height2 = this.ComputeHeight(node.child2);
+    const height1 = this.ComputeHeight(this.m_links[4 * nodeId + Link.child1]);
+    const height2 = this.ComputeHeight(this.m_links[4 * nodeId + Link.child2]);
     return 1 + b2Max(height1, height2);
   }
 
@@ -872,27 +966,26 @@ export class b2DynamicTree {
       return;
     }
 
+    const links = this.m_links;
     if (index === this.m_root) {
-      b2Assert(this.m_nodes[index].parent === b2_nullNode);
+      b2Assert(links[4 * index + Link.parent] === b2_nullNode);
     }
 
-    const node = this.m_nodes[index];
+    const child1 = links[4 * index + Link.child1];
+    const child2 = links[4 * index + Link.child2];
 
-    const child1 = node.child1;
-    const child2 = node.child2;
-
-    if (node.IsLeaf()) {
+    if (this.IsLeaf(index)) {
       b2Assert(child1 === b2_nullNode);
       b2Assert(child2 === b2_nullNode);
-      b2Assert(node.height === 0);
+      b2Assert(links[4 * index + Link.height] === 0);
       return;
     }
 
     b2Assert(0 <= child1 && child1 < this.m_nodeCapacity);
     b2Assert(0 <= child2 && child2 < this.m_nodeCapacity);
 
-    b2Assert(this.m_nodes[child1].parent === index);
-    b2Assert(this.m_nodes[child2].parent === index);
+    b2Assert(links[4 * child1 + Link.parent] === index);
+    b2Assert(links[4 * child2 + Link.parent] === index);
 
     this.ValidateStructure(child1);
     this.ValidateStructure(child2);
@@ -903,31 +996,34 @@ export class b2DynamicTree {
       return;
     }
 
-    const node = this.m_nodes[index];
+    const links = this.m_links;
+    const child1 = links[4 * index + Link.child1];
+    const child2 = links[4 * index + Link.child2];
 
-    const child1 = node.child1;
-    const child2 = node.child2;
-
-    if (node.IsLeaf()) {
+    if (this.IsLeaf(index)) {
       b2Assert(child1 === b2_nullNode);
       b2Assert(child2 === b2_nullNode);
-      b2Assert(node.height === 0);
+      b2Assert(links[4 * index + Link.height] === 0);
       return;
     }
 
     b2Assert(0 <= child1 && child1 < this.m_nodeCapacity);
     b2Assert(0 <= child2 && child2 < this.m_nodeCapacity);
 
-    const height1 = this.m_nodes[child1].height;
-    const height2 = this.m_nodes[child2].height;
+    const height1 = links[4 * child1 + Link.height];
+    const height2 = links[4 * child2 + Link.height];
     const height = 1 + b2Max(height1, height2);
-    b2Assert(node.height === height);
+    b2Assert(links[4 * index + Link.height] === height);
 
-    const aabb = s_combinedAABB;
-    aabb.Combine2(this.m_nodes[child1].aabb, this.m_nodes[child2].aabb);
-
-    b2Assert(b2Vec2Equals(aabb.lowerBound, node.aabb.lowerBound));
-    b2Assert(b2Vec2Equals(aabb.upperBound, node.aabb.upperBound));
+    // aabb.Combine2(child1's, child2's) equals the node's aabb
+    const fat = this.m_fatAABBs;
+    const o = 4 * index;
+    const o1 = 4 * child1;
+    const o2 = 4 * child2;
+    b2Assert(b2Min(fat[o1 + Box.lowerX], fat[o2 + Box.lowerX]) === fat[o + Box.lowerX]);
+    b2Assert(b2Min(fat[o1 + Box.lowerY], fat[o2 + Box.lowerY]) === fat[o + Box.lowerY]);
+    b2Assert(b2Max(fat[o1 + Box.upperX], fat[o2 + Box.upperX]) === fat[o + Box.upperX]);
+    b2Assert(b2Max(fat[o1 + Box.upperY], fat[o2 + Box.upperY]) === fat[o + Box.upperY]);
 
     this.ValidateMetrics(child1);
     this.ValidateMetrics(child2);
@@ -942,7 +1038,7 @@ export class b2DynamicTree {
     let freeIndex = this.m_freeList;
     while (freeIndex !== b2_nullNode) {
       b2Assert(0 <= freeIndex && freeIndex < this.m_nodeCapacity);
-      freeIndex = this.m_nodes[freeIndex].next;
+      freeIndex = this.m_links[4 * freeIndex + Link.parent];
       ++freeCount;
     }
 
@@ -956,19 +1052,19 @@ export class b2DynamicTree {
    * in height of the two children of a node.
    */
   GetMaxBalance(): number {
+    const links = this.m_links;
     let maxBalance = 0;
     for (let i = 0; i < this.m_nodeCapacity; ++i) {
-      const node = this.m_nodes[i];
-      if (node.height <= 1) {
+      if (links[4 * i + Link.height] <= 1) {
         continue;
       }
 
-      b2Assert(node.IsLeaf() === false);
+      b2Assert(this.IsLeaf(i) === false);
 
-      const child1 = node.child1;
-      const child2 = node.child2;
+      const child1 = links[4 * i + Link.child1];
+      const child2 = links[4 * i + Link.child2];
       // int32 in C++: b2Abs(0) must not leave a negative zero behind.
-      const balance = b2Abs(this.m_nodes[child2].height - this.m_nodes[child1].height) | 0;
+      const balance = b2Abs(links[4 * child2 + Link.height] - links[4 * child1 + Link.height]) | 0;
       maxBalance = b2Max(maxBalance, balance);
     }
 
@@ -982,13 +1078,13 @@ export class b2DynamicTree {
 
     // Build array of leaves. Free the rest.
     for (let i = 0; i < this.m_nodeCapacity; ++i) {
-      if (this.m_nodes[i].height < 0) {
+      if (this.m_links[4 * i + Link.height] < 0) {
         // free node in pool
         continue;
       }
 
-      if (this.m_nodes[i].IsLeaf()) {
-        this.m_nodes[i].parent = b2_nullNode;
+      if (this.IsLeaf(i)) {
+        this.m_links[4 * i + Link.parent] = b2_nullNode;
         nodes[count] = i;
         ++count;
       } else {
@@ -1000,14 +1096,18 @@ export class b2DynamicTree {
       let minCost = +b2_maxFloat; // unary plus: docs/PORTING.md
       let iMin = -1;
       let jMin = -1;
+      const fat = this.m_fatAABBs;
       for (let i = 0; i < count; ++i) {
-        const aabbi = this.m_nodes[nodes[i]].aabb;
+        const oi = 4 * nodes[i];
 
         for (let j = i + 1; j < count; ++j) {
-          const aabbj = this.m_nodes[nodes[j]].aabb;
-          const b = s_combinedAABB;
-          b.Combine2(aabbi, aabbj);
-          const cost = b.GetPerimeter();
+          const oj = 4 * nodes[j];
+          // b.Combine2(aabbi, aabbj); cost = b.GetPerimeter()
+          const lowerX = b2Min(fat[oi + Box.lowerX], fat[oj + Box.lowerX]);
+          const lowerY = b2Min(fat[oi + Box.lowerY], fat[oj + Box.lowerY]);
+          const upperX = b2Max(fat[oi + Box.upperX], fat[oj + Box.upperX]);
+          const upperY = b2Max(fat[oi + Box.upperY], fat[oj + Box.upperY]);
+          const cost = 2.0 * (upperX - lowerX + (upperY - lowerY));
           if (cost < minCost) {
             iMin = i;
             jMin = j;
@@ -1018,20 +1118,18 @@ export class b2DynamicTree {
 
       const index1 = nodes[iMin];
       const index2 = nodes[jMin];
-      const child1 = this.m_nodes[index1];
-      const child2 = this.m_nodes[index2];
 
       const parentIndex = this.AllocateNode();
-      const parent = this.m_nodes[parentIndex];
-      parent.child1 = index1;
-      parent.child2 = index2;
-      parent.height = 1 + b2Max(child1.height, child2.height);
-      parent.aabb.Combine2(child1.aabb, child2.aabb);
-      this.SetFatAABB(parentIndex, parent.aabb);
-      parent.parent = b2_nullNode;
+      const links = this.m_links;
+      const p = 4 * parentIndex;
+      links[p + Link.child1] = index1;
+      links[p + Link.child2] = index2;
+      links[p + Link.height] = 1 + b2Max(links[4 * index1 + Link.height], links[4 * index2 + Link.height]);
+      this.Combine2(parentIndex, index1, index2);
+      links[p + Link.parent] = b2_nullNode;
 
-      child1.parent = parentIndex;
-      child2.parent = parentIndex;
+      links[4 * index1 + Link.parent] = parentIndex;
+      links[4 * index2 + Link.parent] = parentIndex;
 
       nodes[jMin] = nodes[count - 1];
       nodes[iMin] = parentIndex;

@@ -223,8 +223,9 @@ export function b2dJsonWriteState(world: b2World, bodies: readonly b2Body[], joi
   const bp = world.m_contactManager.m_broadPhase;
   const tree = bp.m_tree;
   const nodes: number[][] = [];
+  const node = new b2TreeNode();
   for (let i = 0; i < tree.m_nodeCapacity; ++i) {
-    const n = tree.m_nodes[i];
+    const n = tree.GetNode(i, node);
     nodes.push(
       n.height < 0
         ? [n.parent, n.child1, n.child2, n.height]
@@ -419,9 +420,7 @@ export function b2dJsonReadState(
     if (nodes[i].height === 0 && nodes[i].userData === null) fail(`${nodesPath}[${i}]`, 'a leaf that no fixture proxy owns');
   }
 
-  tree.m_nodes = nodes;
-  tree.m_nodeCapacity = capacity;
-  tree.SyncFatAABBs();
+  tree.SetNodes(nodes);
   tree.m_root = int(treeState.root, `${root}.broadPhase.tree.root`, -1, capacity - 1);
   tree.m_nodeCount = int(treeState.nodeCount, `${root}.broadPhase.tree.nodeCount`, 0, capacity);
   tree.m_freeList = int(treeState.freeList, `${root}.broadPhase.tree.freeList`, -1, capacity - 1);

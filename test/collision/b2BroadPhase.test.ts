@@ -124,7 +124,10 @@ describe('b2BroadPhase', () => {
     expect(bp.GetTreeHeight()).toBe(bp.m_tree.GetHeight());
     expect(bp.GetTreeBalance()).toBe(bp.m_tree.GetMaxBalance());
     expect(Object.is(bp.GetTreeQuality(), bp.m_tree.GetAreaRatio())).toBe(true);
-    expect(bp.GetFatAABB(3)).toBe(bp.m_tree.GetFatAABB(3));
+    expect(bp.GetFatAABB(3)).toEqual(bp.m_tree.GetFatAABB(3));
+    const out = new b2AABB();
+    expect(bp.GetFatAABB(3, out)).toBe(out);
+    expect(out).toEqual(bp.m_tree.GetFatAABB(3));
   });
 
   it('grows the move and pair buffers by doubling and still reports every pair once in order', () => {
@@ -139,7 +142,7 @@ describe('b2BroadPhase', () => {
     const ids = Array.from({ length: 20 }, (_, i) => i);
     const idOf = new Map(ids.map((tag) => [tag, -1]));
     for (let id = 0; id < bp.m_tree.m_nodeCapacity; id++) {
-      const node = bp.m_tree.m_nodes[id];
+      const node = bp.m_tree.GetNode(id);
       if (node.height === 0) idOf.set(node.userData as number, id);
     }
     const want: [number, number][] = [];
@@ -190,11 +193,12 @@ describe('b2BroadPhase', () => {
           const [ya, yb] = y.split(',').map(Number);
           return xa - ya || xb - yb;
         });
-        // The user data here is null; read the ids back from the sorted pair buffer instead.
+        // The user data here is null; read the ids back from the sorted pair buffer's keys
+        // (proxyIdA * 2^26 + proxyIdB) instead.
         const got: string[] = [];
         bp.UpdatePairs({ AddPair: () => undefined });
         for (let i = 0; i < bp.m_pairCount; i++) {
-          const key = `${bp.m_pairBuffer[i].proxyIdA},${bp.m_pairBuffer[i].proxyIdB}`;
+          const key = `${Math.floor(bp.m_pairBuffer[i] / 2 ** 26)},${bp.m_pairBuffer[i] % 2 ** 26}`;
           if (got[got.length - 1] !== key) got.push(key);
         }
         expect(got).toEqual(want);

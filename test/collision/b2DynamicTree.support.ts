@@ -65,7 +65,7 @@ export function hashTree(hash: Fnv1a, tree: b2DynamicTree): void {
   hash.int(tree.m_freeList);
   hash.int(tree.m_insertionCount);
   for (let i = 0; i < tree.m_nodeCapacity; i++) {
-    const n = tree.m_nodes[i];
+    const n = tree.GetNode(i);
     hash.int(n.height);
     if (n.height < 0) {
       hash.int(n.next);

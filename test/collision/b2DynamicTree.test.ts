@@ -18,7 +18,7 @@ function bounds(aabb: b2AABB): number[] {
 
 /** parent, child1, child2, height of a node. */
 function links(tree: b2DynamicTree, id: number): number[] {
-  const n = tree.m_nodes[id];
+  const n = tree.GetNode(id);
   return [n.parent, n.child1, n.child2, n.height];
 }
 
@@ -53,9 +53,9 @@ describe('b2DynamicTree node pool', () => {
     expect(tree.m_nodeCount).toBe(0);
     expect(tree.m_root).toBe(b2_nullNode);
     const order: number[] = [];
-    for (let i = tree.m_freeList; i !== b2_nullNode; i = tree.m_nodes[i].next) order.push(i);
+    for (let i = tree.m_freeList; i !== b2_nullNode; i = tree.GetNode(i).next) order.push(i);
     expect(order).toEqual([...Array(16).keys()]);
-    expect(tree.m_nodes.every((n) => n.height === -1)).toBe(true);
+    for (let i = 0; i < 16; i++) expect(links(tree, i).slice(1)).toEqual([b2_nullNode, b2_nullNode, -1]);
   });
 
   it('aliases next with parent as the C++ union does', () => {
@@ -79,14 +79,14 @@ describe('b2DynamicTree node pool', () => {
     const tree = new b2DynamicTree();
     for (let i = 0; i < 4; i++) tree.CreateProxy(box(2 * i, 0, 2 * i + 1, 1), i);
     // Leaves 0, 1, 3, 5; inner nodes 2, 4, 6.
-    const leaf1Parent = tree.m_nodes[1].parent;
+    const leaf1Parent = tree.GetNode(1).parent;
     tree.DestroyProxy(1);
     // Destroying a leaf frees its parent after the leaf's removal from the tree, so the parent
     // is on top of the free list, then the leaf.
     expect(tree.m_freeList).toBe(1);
-    expect(tree.m_nodes[1].next).toBe(leaf1Parent);
+    expect(tree.GetNode(1).next).toBe(leaf1Parent);
     expect(tree.CreateProxy(box(20, 0, 21, 1), 'x')).toBe(1);
-    expect(tree.m_nodes[1].userData).toBe('x');
+    expect(tree.GetNode(1).userData).toBe('x');
     tree.Validate();
   });
 
@@ -101,9 +101,9 @@ describe('b2DynamicTree node pool', () => {
     expect(tree.m_nodeCapacity).toBe(32);
     expect(tree.m_nodeCount).toBe(17);
     // The new parent of the ninth leaf took 16, the first node of the grown pool.
-    expect(tree.m_nodes[ninth].parent).toBe(16);
+    expect(tree.GetNode(ninth).parent).toBe(16);
     const order: number[] = [];
-    for (let i = tree.m_freeList; i !== b2_nullNode; i = tree.m_nodes[i].next) order.push(i);
+    for (let i = tree.m_freeList; i !== b2_nullNode; i = tree.GetNode(i).next) order.push(i);
     expect(order).toEqual([...Array(15).keys()].map((i) => i + 17));
     tree.Validate();
   });
@@ -147,7 +147,7 @@ describe('b2DynamicTree proxies', () => {
     const b = tree.CreateProxy(box(0, 0, 1, 1), null);
     tree.DestroyProxy(a);
     expect(tree.m_root).toBe(b);
-    expect(tree.m_nodes[b].parent).toBe(b2_nullNode);
+    expect(tree.GetNode(b).parent).toBe(b2_nullNode);
     tree.DestroyProxy(b);
     expect(tree.m_root).toBe(b2_nullNode);
     expect(tree.m_nodeCount).toBe(0);
@@ -177,9 +177,9 @@ describe('b2DynamicTree insertion and balancing (hand-worked)', () => {
     expect(links(tree, 3)).toEqual([4, b2_nullNode, b2_nullNode, 0]);
     expect(links(tree, 1)).toEqual([6, b2_nullNode, b2_nullNode, 0]);
     expect(links(tree, 5)).toEqual([6, b2_nullNode, b2_nullNode, 0]);
-    expect(bounds(tree.m_nodes[4].aabb)).toEqual([-0.1, -0.1, 11 + 0.1, 1 + 0.1]);
-    expect(bounds(tree.m_nodes[6].aabb)).toEqual([2 - 0.1, -0.1, 3 + 0.1, 4 + 0.1]);
-    expect(bounds(tree.m_nodes[2].aabb)).toEqual([-0.1, -0.1, 11 + 0.1, 4 + 0.1]);
+    expect(bounds(tree.GetNode(4).aabb)).toEqual([-0.1, -0.1, 11 + 0.1, 1 + 0.1]);
+    expect(bounds(tree.GetNode(6).aabb)).toEqual([2 - 0.1, -0.1, 3 + 0.1, 4 + 0.1]);
+    expect(bounds(tree.GetNode(2).aabb)).toEqual([-0.1, -0.1, 11 + 0.1, 4 + 0.1]);
     expect(tree.m_freeList).toBe(7);
     expect(tree.GetHeight()).toBe(2);
     expect(tree.GetMaxBalance()).toBe(0);
@@ -198,8 +198,8 @@ describe('b2DynamicTree insertion and balancing (hand-worked)', () => {
   it('reports the area ratio: the sum of node perimeters over the root perimeter', () => {
     const tree = handTree();
     let total = 0.0;
-    for (const id of [0, 1, 2, 3, 4, 5, 6]) total += tree.m_nodes[id].aabb.GetPerimeter();
-    expect(Object.is(tree.GetAreaRatio(), total / tree.m_nodes[2].aabb.GetPerimeter())).toBe(true);
+    for (const id of [0, 1, 2, 3, 4, 5, 6]) total += tree.GetNode(id).aabb.GetPerimeter();
+    expect(Object.is(tree.GetAreaRatio(), total / tree.GetNode(2).aabb.GetPerimeter())).toBe(true);
     expect(new b2DynamicTree().GetAreaRatio()).toBe(0);
   });
 });
@@ -352,7 +352,7 @@ describe('b2DynamicTree ray casts', () => {
 });
 
 describe('b2DynamicTree under random load', () => {
-  it("stays valid with bounded height and balance, its copy of every node's AABB (m_fatAABBs) exact, through thousands of create/move/destroy steps", () => {
+  it("stays valid with bounded height and balance, every leaf's fat AABB holding its proxy's, through thousands of create/move/destroy steps", () => {
     const rnd = mulberry32(2024);
     const tree = new b2DynamicTree();
     const live: { id: number; aabb: b2AABB }[] = [];
@@ -364,7 +364,7 @@ describe('b2DynamicTree under random load', () => {
         d.Set((rnd() * 2 - 1) * 0.8, (rnd() * 2 - 1) * 0.8);
         p.aabb.lowerBound.Add(d);
         p.aabb.upperBound.Add(d);
-        // The containment test on m_fatAABBs decides as node.aabb.Contains does.
+        // MoveProxy's containment test decides as b2AABB.Contains does.
         const contained = tree.GetFatAABB(p.id).Contains(p.aabb);
         expect(tree.MoveProxy(p.id, p.aabb, d)).toBe(!contained);
         expect(tree.GetFatAABB(p.id).Contains(p.aabb)).toBe(true);
@@ -384,19 +384,17 @@ describe('b2DynamicTree under random load', () => {
         // An AVL-like bound: rotations keep every node's children within one level or so.
         expect(tree.GetHeight()).toBeLessThanOrEqual(Math.ceil(1.45 * Math.log2(leaves + 2)) + 1);
         expect(tree.GetMaxBalance()).toBeLessThanOrEqual(2);
+        // Validate checked every inner node's AABB against its children's.
         for (const p of live) {
-          expect(Array.from(tree.m_fatAABBs.subarray(4 * p.id, 4 * p.id + 4))).toEqual(bounds(tree.GetFatAABB(p.id)));
-        }
-        // The internal nodes too: Query tests them on the copy.
-        for (let id = 0; id < tree.m_nodeCapacity; id++) {
-          if (tree.m_nodes[id].height > 0) {
-            expect(Array.from(tree.m_fatAABBs.subarray(4 * id, 4 * id + 4))).toEqual(bounds(tree.m_nodes[id].aabb));
-          }
+          expect(tree.IsLeaf(p.id)).toBe(true);
+          expect(tree.GetFatAABB(p.id).Contains(p.aabb)).toBe(true);
         }
       }
     }
     expect(live.length).toBeGreaterThan(200);
     expect(tree.m_fatAABBs.length).toBe(4 * tree.m_nodeCapacity);
+    expect(tree.m_links.length).toBe(4 * tree.m_nodeCapacity);
+    expect(tree.m_userData.length).toBe(tree.m_nodeCapacity);
   });
 
   it('keeps queries exact after RebuildBottomUp', () => {

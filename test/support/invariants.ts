@@ -182,7 +182,7 @@ export function worldDigest(world: b2World): string {
   d.add(tree.m_nodeCapacity);
   d.add(tree.m_freeList);
   for (let i = 0; i < tree.m_nodeCapacity; ++i) {
-    const node = tree.m_nodes[i];
+    const node = tree.GetNode(i);
     d.add(node.parent);
     d.add(node.child1);
     d.add(node.child2);
@@ -270,7 +270,7 @@ export function checkWorldInvariants(world: b2World): string[] {
           problems.push(`${fw}.proxy[${p}] has id ${id}`);
           continue;
         }
-        const node = tree.m_nodes[id];
+        const node = tree.GetNode(id);
         if (node.height !== 0 || node.userData !== proxy) problems.push(`${fw}.proxy[${p}] is not its tree leaf`);
         if (proxy.fixture !== f || proxy.childIndex !== p) problems.push(`${fw}.proxy[${p}] names another fixture or child`);
         const fat = node.aabb;
@@ -287,14 +287,14 @@ export function checkWorldInvariants(world: b2World): string[] {
   }
   if (proxies !== bp.m_proxyCount) problems.push(`fixtures hold ${proxies} proxies, the broad-phase ${bp.m_proxyCount}`);
   let leaves = 0;
-  for (let i = 0; i < tree.m_nodeCapacity; ++i) if (tree.m_nodes[i].height === 0) ++leaves;
+  for (let i = 0; i < tree.m_nodeCapacity; ++i) if (tree.GetNode(i).height === 0) ++leaves;
   if (leaves !== proxies) problems.push(`the tree has ${leaves} leaves for ${proxies} proxies`);
   try {
     tree.Validate();
   } catch (e) {
     problems.push(`tree: ${(e as Error).message}`);
   }
-  if (tree.m_root !== b2_nullNode && tree.m_nodes[tree.m_root].parent !== b2_nullNode) problems.push('tree root has a parent');
+  if (tree.m_root !== b2_nullNode && tree.GetNode(tree.m_root).parent !== b2_nullNode) problems.push('tree root has a parent');
 
   const joints = jointsOf(world);
   const jointSet = new Set(joints);
