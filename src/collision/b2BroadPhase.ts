@@ -189,8 +189,7 @@ export class b2BroadPhase implements b2TreeQueryCallback {
       callback.AddPair(userDataA, userDataB);
       ++i;
 
-      // Skip any duplicate pairs: equal keys are equal pairs. The buffer is read each time: the
-      // callback may create proxies, though not pairs.
+      // Skip any duplicate pairs: equal keys are equal pairs.
       while (i < this.m_pairCount) {
         if (this.m_pairBuffer[i] !== primaryPair) {
           break;
@@ -278,14 +277,16 @@ export class b2BroadPhase implements b2TreeQueryCallback {
       this.m_pairBuffer.set(oldBuffer);
     }
 
-    this.m_pairBuffer[this.m_pairCount] = b2PairKey(b2Min(proxyId, this.m_queryProxyId), b2Max(proxyId, this.m_queryProxyId));
+    const proxyIdA = b2Min(proxyId, this.m_queryProxyId);
+    const proxyIdB = b2Max(proxyId, this.m_queryProxyId);
+    this.m_pairBuffer[this.m_pairCount] = b2PairKey(proxyIdA, proxyIdB);
     ++this.m_pairCount;
 
     return true;
   }
 }
 
-/** A pair's key is proxyIdA * 2^26 + proxyIdB: exact, and ordered as the pairs, while ids stay below 2^26. */
+/** A pair's key is proxyIdA * 2^26 + proxyIdB: exact, and ordered as the pairs, for ids below 2^26. */
 const b2_pairKeyScale = 67108864;
 
 function b2PairKey(proxyIdA: number, proxyIdB: number): number {
