@@ -7,7 +7,8 @@
 import { readFileSync } from 'node:fs';
 import path from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { buildBundles, openPage, repoRoot } from './browser';
+import { buildBundles } from '../support/bundles';
+import { openPage, repoRoot } from './browser';
 import type { Page } from './browser';
 
 let dist: { dir: string; remove(): void };

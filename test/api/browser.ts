@@ -1,26 +1,17 @@
 /*
- * The classic-script bundle as a browser loads it: `node scripts/build.mjs <dir>` builds
+ * The classic-script bundle as a browser loads it: buildBundles (test/support/bundles.ts) builds
  * dist/box2d.js into a temporary folder, and each page is a fresh vm context whose global object
  * is its `window` (no require, process, module or other Node globals), in which box2d.js and then
  * the page's scripts run as <script> elements would.
  */
 
-import { execFileSync } from 'node:child_process';
-import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
-import { tmpdir } from 'node:os';
+import { readFileSync } from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import vm from 'node:vm';
 
 export const repoRoot = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
 const fixturesDir = path.join(repoRoot, 'test/api/fixtures');
-
-/** A built dist folder in a temporary directory; remove() deletes it. */
-export function buildBundles(): { dir: string; remove(): void } {
-  const dir = mkdtempSync(path.join(tmpdir(), 'webphysics-api-'));
-  execFileSync(process.execPath, [path.join(repoRoot, 'scripts/build.mjs'), dir], { cwd: repoRoot });
-  return { dir, remove: () => rmSync(dir, { recursive: true, force: true }) };
-}
 
 export interface Page {
   /** The page's global object. */

@@ -1,23 +1,20 @@
 // Step times in separate processes (bench/processes.mjs): the option checks and a quick run. No
 // timing assertions: speed is what the benchmark measures.
-import { execFileSync } from 'node:child_process';
-import { mkdtempSync, rmSync } from 'node:fs';
-import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { afterAll, beforeAll, describe, expect, it, vi } from 'vitest';
+import { buildBundles } from '../support/bundles';
 import { formatProcesses, main, parseWindows, resolveProcessesOptions, runProcesses } from '../../bench/processes.mjs';
 
-let bundleDir = '';
+let bundles: { dir: string; remove(): void };
 let oursBundle = '';
 
 beforeAll(() => {
-  bundleDir = mkdtempSync(path.join(tmpdir(), 'webphysics-processes-test-'));
-  execFileSync(process.execPath, [path.resolve('scripts/build.mjs'), bundleDir], { stdio: 'ignore' });
-  oursBundle = path.join(bundleDir, 'webphysics.mjs');
+  bundles = buildBundles();
+  oursBundle = path.join(bundles.dir, 'webphysics.mjs');
 });
 
 afterAll(() => {
-  rmSync(bundleDir, { recursive: true, force: true });
+  bundles.remove();
 });
 
 describe('bench/processes.mjs options', () => {

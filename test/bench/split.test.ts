@@ -1,25 +1,22 @@
 // The iteration split (bench/split.mjs): the line fit, the option checks, the engines' settable
 // iteration counts and a quick run. No timing assertions: speed is what the benchmark measures.
-import { execFileSync } from 'node:child_process';
-import { mkdtempSync, rmSync } from 'node:fs';
-import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { buildBundles } from '../support/bundles';
 import { SPLIT_ENGINES, SPLIT_ENGINE_IDS, fitLine, formatSplit, resolveSplitOptions, runSplit } from '../../bench/split.mjs';
 import { makeScene } from '../../bench/scenes.mjs';
 
 // One bundle of the working tree for the WebPhysics adapter, as `runSplit` would build it.
-let bundleDir = '';
+let bundles: { dir: string; remove(): void };
 let oursBundle = '';
 
 beforeAll(() => {
-  bundleDir = mkdtempSync(path.join(tmpdir(), 'webphysics-split-test-'));
-  execFileSync(process.execPath, [path.resolve('scripts/build.mjs'), bundleDir], { stdio: 'ignore' });
-  oursBundle = path.join(bundleDir, 'webphysics.mjs');
+  bundles = buildBundles();
+  oursBundle = path.join(bundles.dir, 'webphysics.mjs');
 });
 
 afterAll(() => {
-  rmSync(bundleDir, { recursive: true, force: true });
+  bundles.remove();
 });
 
 describe('fitLine', () => {

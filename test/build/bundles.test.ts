@@ -1,21 +1,20 @@
-import { execFileSync } from 'node:child_process';
-import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
-import { tmpdir } from 'node:os';
+import { readFileSync } from 'node:fs';
 import path from 'node:path';
-import { fileURLToPath, pathToFileURL } from 'node:url';
+import { pathToFileURL } from 'node:url';
 import vm from 'node:vm';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { buildBundles } from '../support/bundles';
 
-const repoRoot = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
+let bundles: { dir: string; remove(): void };
 let outDir = '';
 
 beforeAll(() => {
-  outDir = mkdtempSync(path.join(tmpdir(), 'webphysics-build-'));
-  execFileSync(process.execPath, [path.join(repoRoot, 'scripts/build.mjs'), outDir], { cwd: repoRoot });
+  bundles = buildBundles();
+  outDir = bundles.dir;
 });
 
 afterAll(() => {
-  rmSync(outDir, { recursive: true, force: true });
+  bundles.remove();
 });
 
 /** Drops a 1x1 box from y = 4 for 60 steps with the given namespace-free constructors. */
