@@ -1,7 +1,8 @@
 // The command line of bench/split.mjs and bench/processes.mjs: their options parsed with
 // node:util's parseArgs (with --json and -h/--help added), checked, run, and the result's table
 // printed, or with --json the result as JSON on stdout and the table on stderr. And the child
-// processes of bench/heap.mjs and bench/processes.mjs, which answer with one line of JSON.
+// processes of bench/heap.mjs and bench/processes.mjs (and its native runners), which answer with
+// one line of JSON.
 import { spawnSync } from 'node:child_process';
 import { parseArgs } from 'node:util';
 
@@ -10,9 +11,15 @@ import { parseArgs } from 'node:util';
  * beginning with `what` and ending with the last lines of its error output, if it fails.
  */
 export function runJsonChild(nodeArgs, what) {
-  const child = spawnSync(process.execPath, nodeArgs, { encoding: 'utf8', maxBuffer: 1 << 20 });
+  return runJsonProgram(process.execPath, nodeArgs, what);
+}
+
+/** runJsonChild for any program: `file` run with `args`. */
+export function runJsonProgram(file, args, what) {
+  const child = spawnSync(file, args, { encoding: 'utf8', maxBuffer: 1 << 20 });
   if (child.status !== 0) {
-    throw new Error(`${what} failed: ${(child.stderr || child.stdout).trim().split('\n').slice(-3).join(' | ')}`);
+    const why = child.error ? child.error.message : (child.stderr || child.stdout).trim().split('\n').slice(-3).join(' | ');
+    throw new Error(`${what} failed: ${why}`);
   }
   const lines = child.stdout.trim().split('\n');
   return JSON.parse(lines[lines.length - 1]);

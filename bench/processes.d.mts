@@ -13,6 +13,8 @@ export interface ProcessesOptions {
   ours?: string | null;
   /** The bundle webphysics-baseline runs. */
   baseline?: string | null;
+  /** A Box2D 2.2.1 checkout, for the native engines (bench/native.mjs). */
+  box2d?: string | null;
   /** Progress lines (default stderr); null for silence. */
   log?: ((line: string) => void) | null;
 }
@@ -45,6 +47,7 @@ export function resolveProcessesOptions(options?: ProcessesOptions): {
   quick: boolean;
   ours: string | null;
   baseline: string | null;
+  box2d: string | null;
   log: (line: string) => void;
 };
 export function runProcesses(options?: ProcessesOptions): Promise<ProcessesResult>;
