@@ -19,22 +19,31 @@ const s_edge = new b2EdgeShape();
 
 export class b2ChainAndCircleContact extends b2Contact {
   static override Create(fixtureA: b2Fixture, indexA: number, fixtureB: b2Fixture, indexB: number): b2Contact {
-    return new b2ChainAndCircleContact(fixtureA, indexA, fixtureB, indexB);
+    b2Assert(fixtureA.GetType() === b2Shape.e_chain);
+    b2Assert(fixtureB.GetType() === b2Shape.e_circle);
+    return new b2Contact(fixtureA, indexA, fixtureB, indexB, b2ChainAndCircleContact.Evaluate);
   }
 
   // The C++ frees the memory to the block allocator here; b2Contact.Destroy hands the contact to
   // the world's b2ContactAllocator instead.
   static override Destroy(contact: b2Contact): void {}
 
+  /** The C++ constructor; the engine makes its contacts with Create. */
   constructor(fixtureA: b2Fixture, indexA: number, fixtureB: b2Fixture, indexB: number) {
-    super(fixtureA, indexA, fixtureB, indexB);
+    super(fixtureA, indexA, fixtureB, indexB, b2ChainAndCircleContact.Evaluate);
     b2Assert(this.m_fixtureA.GetType() === b2Shape.e_chain);
     b2Assert(this.m_fixtureB.GetType() === b2Shape.e_circle);
   }
 
-  override Evaluate(manifold: b2Manifold, xfA: b2Transform, xfB: b2Transform): void {
-    const chain = this.m_fixtureA.GetShape() as b2ChainShape;
-    chain.GetChildEdge(s_edge, this.m_indexA);
-    b2CollideEdgeAndCircle(manifold, s_edge, xfA, this.m_fixtureB.GetShape() as b2CircleShape, xfB);
+  /** The C++ Evaluate, as the function every contact of this type holds (b2Contact.m_evaluate). */
+  static Evaluate(contact: b2Contact, manifold: b2Manifold, xfA: b2Transform, xfB: b2Transform): void {
+    const chain = contact.m_fixtureA.GetShape() as b2ChainShape;
+    chain.GetChildEdge(s_edge, contact.m_indexA);
+    b2CollideEdgeAndCircle(manifold, s_edge, xfA, contact.m_fixtureB.GetShape() as b2CircleShape, xfB);
+  }
+
+  /** True for the contacts Create makes: b2Contacts holding this type's Evaluate. */
+  static override [Symbol.hasInstance](value: unknown): boolean {
+    return value instanceof b2Contact && value.m_evaluate === b2ChainAndCircleContact.Evaluate;
   }
 }

@@ -36,6 +36,8 @@ export function b2MixRestitution(restitution1: number, restitution2: number): nu
 
 export type b2ContactCreateFcn = (fixtureA: b2Fixture, indexA: number, fixtureB: b2Fixture, indexB: number) => b2Contact;
 export type b2ContactDestroyFcn = (contact: b2Contact) => void;
+/** Not in the C++: a concrete contact type's Evaluate as a function of the contact (b2Contact.m_evaluate). */
+export type b2ContactEvaluateFcn = (contact: b2Contact, manifold: b2Manifold, xfA: b2Transform, xfB: b2Transform) => void;
 
 export class b2ContactRegister {
   createFcn: b2ContactCreateFcn | null = null;
@@ -103,8 +105,15 @@ const s_oldManifold = new b2Manifold();
  * The class manages contact between two shapes. A contact exists for each overlapping AABB in
  * the broad-phase (except if filtered). Therefore a contact object may exist that has no
  * contact points.
+ *
+ * Unlike the C++, where each shape pair has a subclass overriding Evaluate, every contact the
+ * engine makes is a b2Contact holding its pair's evaluate function (m_evaluate); the seven
+ * concrete classes make them (Create) and answer `instanceof` for them. V8 gives instances of
+ * different classes different hidden classes, and a world with more than four contact types
+ * then reads every contact field in the contact list walk, the island search and the solver's
+ * set-up through a megamorphic lookup (mixed rain, seven types: a fifth of its step).
  */
-export abstract class b2Contact {
+export class b2Contact {
   // Flags stored in m_flags
 
   /** Used when crawling contact graph when forming islands. */
@@ -189,7 +198,11 @@ export abstract class b2Contact {
     this.m_manifold.m_record[this.m_manifold.m_offset + b2ManifoldField.restitution] = restitution;
   }
 
-  constructor(fixtureA: b2Fixture, indexA: number, fixtureB: b2Fixture, indexB: number) {
+  /** Not in the C++: the concrete type's Evaluate (see the class comment). */
+  readonly m_evaluate: b2ContactEvaluateFcn;
+
+  constructor(fixtureA: b2Fixture, indexA: number, fixtureB: b2Fixture, indexB: number, evaluate: b2ContactEvaluateFcn) {
+    this.m_evaluate = evaluate;
     this.m_nodeA = new b2ContactEdge(this, fixtureB.GetBody());
     this.m_nodeB = new b2ContactEdge(this, fixtureA.GetBody());
     this.Init(fixtureA, indexA, fixtureB, indexB);
@@ -339,7 +352,9 @@ export abstract class b2Contact {
   }
 
   /** Evaluate this contact with your own manifold and transforms. */
-  abstract Evaluate(manifold: b2Manifold, xfA: b2Transform, xfB: b2Transform): void;
+  Evaluate(manifold: b2Manifold, xfA: b2Transform, xfB: b2Transform): void {
+    this.m_evaluate(this, manifold, xfA, xfB);
+  }
 
   /** Flag this contact for filtering. Filtering will occur the next time step. */
   FlagForFiltering(): void {

@@ -14,20 +14,29 @@ import { b2Contact } from './b2Contact';
 
 export class b2EdgeAndPolygonContact extends b2Contact {
   static override Create(fixtureA: b2Fixture, indexA: number, fixtureB: b2Fixture, indexB: number): b2Contact {
-    return new b2EdgeAndPolygonContact(fixtureA, fixtureB);
+    b2Assert(fixtureA.GetType() === b2Shape.e_edge);
+    b2Assert(fixtureB.GetType() === b2Shape.e_polygon);
+    return new b2Contact(fixtureA, 0, fixtureB, 0, b2EdgeAndPolygonContact.Evaluate);
   }
 
   // The C++ frees the memory to the block allocator here; b2Contact.Destroy hands the contact to
   // the world's b2ContactAllocator instead.
   static override Destroy(contact: b2Contact): void {}
 
+  /** The C++ constructor; the engine makes its contacts with Create. */
   constructor(fixtureA: b2Fixture, fixtureB: b2Fixture) {
-    super(fixtureA, 0, fixtureB, 0);
+    super(fixtureA, 0, fixtureB, 0, b2EdgeAndPolygonContact.Evaluate);
     b2Assert(this.m_fixtureA.GetType() === b2Shape.e_edge);
     b2Assert(this.m_fixtureB.GetType() === b2Shape.e_polygon);
   }
 
-  override Evaluate(manifold: b2Manifold, xfA: b2Transform, xfB: b2Transform): void {
-    b2CollideEdgeAndPolygon(manifold, this.m_fixtureA.GetShape() as b2EdgeShape, xfA, this.m_fixtureB.GetShape() as b2PolygonShape, xfB);
+  /** The C++ Evaluate, as the function every contact of this type holds (b2Contact.m_evaluate). */
+  static Evaluate(contact: b2Contact, manifold: b2Manifold, xfA: b2Transform, xfB: b2Transform): void {
+    b2CollideEdgeAndPolygon(manifold, contact.m_fixtureA.GetShape() as b2EdgeShape, xfA, contact.m_fixtureB.GetShape() as b2PolygonShape, xfB);
+  }
+
+  /** True for the contacts Create makes: b2Contacts holding this type's Evaluate. */
+  static override [Symbol.hasInstance](value: unknown): boolean {
+    return value instanceof b2Contact && value.m_evaluate === b2EdgeAndPolygonContact.Evaluate;
   }
 }
