@@ -137,6 +137,45 @@ describe('b2Contact registry', () => {
     });
   }
 
+  it('makes every contact a b2Contact holding its type\'s Evaluate, one class for all (one hidden class in V8), and instanceof answers for its type only', () => {
+    const types = [
+      b2CircleContact,
+      b2PolygonAndCircleContact,
+      b2PolygonContact,
+      b2EdgeAndCircleContact,
+      b2EdgeAndPolygonContact,
+      b2ChainAndCircleContact,
+      b2ChainAndPolygonContact,
+    ];
+    for (const [nameA, nameB, expectedClass] of cases) {
+      if (expectedClass === null) continue;
+      const world = newWorld();
+      const contact = b2Contact.Create(addFixture(world, makeShape(nameA)), 0, addFixture(world, makeShape(nameB), { x: 10.0 }), 0)!;
+      expect(Object.getPrototypeOf(contact)).toBe(b2Contact.prototype);
+      const type = expectedClass as unknown as { Evaluate: unknown };
+      expect(contact.m_evaluate).toBe(type.Evaluate);
+      expect(types.filter((t) => contact instanceof t)).toEqual([expectedClass]);
+    }
+    expect({} instanceof b2PolygonContact).toBe(false);
+  });
+
+  it('gives a contact built with the C++ constructor the manifold of the one Create makes', () => {
+    const world = newWorld();
+    const fixtureA = addFixture(world, makeShape('polygon'));
+    const fixtureB = addFixture(world, makeShape('polygon'), { x: 0.75, y: 0.25 });
+    const made = b2Contact.Create(fixtureA, 0, fixtureB, 0)!;
+    const built = new b2PolygonContact(fixtureA, fixtureB);
+    expect(built).toBeInstanceOf(b2PolygonContact);
+    const xfA = fixtureA.GetBody().GetTransform();
+    const xfB = fixtureB.GetBody().GetTransform();
+    const a = new b2Manifold();
+    const b = new b2Manifold();
+    made.Evaluate(a, xfA, xfB);
+    built.Evaluate(b, xfA, xfB);
+    expect(a.pointCount).toBe(2);
+    expect(JSON.stringify(b)).toBe(JSON.stringify(a));
+  });
+
   it('registers each pair once as primary and its reverse as non-primary, and re-initialising is harmless', () => {
     b2InitializeContactRegisters();
     b2InitializeContactRegisters();
