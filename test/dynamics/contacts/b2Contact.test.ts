@@ -159,21 +159,27 @@ describe('b2Contact registry', () => {
     expect({} instanceof b2PolygonContact).toBe(false);
   });
 
-  it('gives a contact built with the C++ constructor the manifold of the one Create makes', () => {
-    const world = newWorld();
-    const fixtureA = addFixture(world, makeShape('polygon'));
-    const fixtureB = addFixture(world, makeShape('polygon'), { x: 0.75, y: 0.25 });
-    const made = b2Contact.Create(fixtureA, 0, fixtureB, 0)!;
-    const built = new b2PolygonContact(fixtureA, fixtureB);
-    expect(built).toBeInstanceOf(b2PolygonContact);
-    const xfA = fixtureA.GetBody().GetTransform();
-    const xfB = fixtureB.GetBody().GetTransform();
-    const a = new b2Manifold();
-    const b = new b2Manifold();
-    made.Evaluate(a, xfA, xfB);
-    built.Evaluate(b, xfA, xfB);
-    expect(a.pointCount).toBe(2);
-    expect(JSON.stringify(b)).toBe(JSON.stringify(a));
+  it('gives a contact built with the C++ constructor of each type the manifold of the one Create makes', () => {
+    for (const [nameA, nameB, expectedClass, swapped] of cases) {
+      if (expectedClass === null || swapped) continue;
+      const world = newWorld();
+      const fixtureA = addFixture(world, makeShape(nameA));
+      const fixtureB = addFixture(world, makeShape(nameB), { x: 0.5, y: 0.3 });
+      // A chain's child 1 is the edge from (-1, 0) to (1, 0), under fixture B.
+      const indexA = nameA === 'chain' ? 1 : 0;
+      const made = b2Contact.Create(fixtureA, indexA, fixtureB, 0)!;
+      const Type = expectedClass as unknown as new (...args: unknown[]) => b2Contact;
+      const built = nameA === 'chain' ? new Type(fixtureA, indexA, fixtureB, 0) : new Type(fixtureA, fixtureB);
+      expect(built).toBeInstanceOf(expectedClass);
+      const xfA = fixtureA.GetBody().GetTransform();
+      const xfB = fixtureB.GetBody().GetTransform();
+      const a = new b2Manifold();
+      const b = new b2Manifold();
+      made.Evaluate(a, xfA, xfB);
+      built.Evaluate(b, xfA, xfB);
+      expect(a.pointCount, `${nameA} vs ${nameB}`).toBeGreaterThan(0);
+      expect(JSON.stringify(b), `${nameA} vs ${nameB}`).toBe(JSON.stringify(a));
+    }
   });
 
   it('registers each pair once as primary and its reverse as non-primary, and re-initialising is harmless', () => {
