@@ -2,7 +2,7 @@
  * Circle-circle and polygon-circle manifolds (b2CollideCircle.cpp).
  */
 
-import { b2MulTXV, b2MulXV, b2Vec2, b2Vec2_zero } from '../common/b2Math';
+import { b2MulTXV, b2MulXV, b2Normalize, b2Vec2, b2Vec2_zero } from '../common/b2Math';
 import type { b2Transform } from '../common/b2Math';
 import { b2_epsilon, b2_maxFloat } from '../common/b2Settings';
 import { b2Manifold } from './b2Collision';
@@ -92,11 +92,16 @@ export function b2CollidePolygonAndCircle(
   const v1 = vertices[vertIndex1];
   const v2 = vertices[vertIndex2];
 
+  // The branches below set the scratch vectors field by field and normalize with b2Normalize:
+  // each runs for few contacts, and V8 leaves calls there out of line, boxing their doubles.
+
   // If the center is inside the polygon ...
   if (separation < b2_epsilon) {
     manifold.pointCount = 1;
     manifold.type = b2Manifold.e_faceA;
-    b2SetManifoldFace(manifold, normals[normalIndex], s_faceCenter.Set(0.5 * (v1.x + v2.x), 0.5 * (v1.y + v2.y)));
+    s_faceCenter.x = 0.5 * (v1.x + v2.x);
+    s_faceCenter.y = 0.5 * (v1.y + v2.y);
+    b2SetManifoldFace(manifold, normals[normalIndex], s_faceCenter);
     b2SetManifoldPoint(manifold, 0, circleB.m_p, 0);
     return;
   }
@@ -113,8 +118,10 @@ export function b2CollidePolygonAndCircle(
 
     manifold.pointCount = 1;
     manifold.type = b2Manifold.e_faceA;
-    const n = s_normal.Set(cx - v1.x, cy - v1.y);
-    n.Normalize();
+    const n = s_normal;
+    n.x = cx - v1.x;
+    n.y = cy - v1.y;
+    b2Normalize(n);
     b2SetManifoldFace(manifold, n, v1);
     b2SetManifoldPoint(manifold, 0, circleB.m_p, 0);
   } else if (u2 <= 0.0) {
@@ -126,8 +133,10 @@ export function b2CollidePolygonAndCircle(
 
     manifold.pointCount = 1;
     manifold.type = b2Manifold.e_faceA;
-    const n = s_normal.Set(cx - v2.x, cy - v2.y);
-    n.Normalize();
+    const n = s_normal;
+    n.x = cx - v2.x;
+    n.y = cy - v2.y;
+    b2Normalize(n);
     b2SetManifoldFace(manifold, n, v2);
     b2SetManifoldPoint(manifold, 0, circleB.m_p, 0);
   } else {
@@ -141,7 +150,9 @@ export function b2CollidePolygonAndCircle(
 
     manifold.pointCount = 1;
     manifold.type = b2Manifold.e_faceA;
-    b2SetManifoldFace(manifold, n1, s_faceCenter.Set(faceCenterX, faceCenterY));
+    s_faceCenter.x = faceCenterX;
+    s_faceCenter.y = faceCenterY;
+    b2SetManifoldFace(manifold, n1, s_faceCenter);
     b2SetManifoldPoint(manifold, 0, circleB.m_p, 0);
   }
 }

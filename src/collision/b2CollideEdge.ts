@@ -4,7 +4,7 @@
  */
 
 import { b2MakeArray } from '../common/b2MakeArray';
-import { b2Min, b2MulRV, b2MulTXV, b2MulTXX, b2MulXV, b2Transform, b2Vec2, b2Vec2_zero } from '../common/b2Math';
+import { b2Min, b2MulRV, b2MulTXV, b2MulTXX, b2MulXV, b2Normalize, b2Transform, b2Vec2, b2Vec2_zero } from '../common/b2Math';
 import {
   b2_angularSlop,
   b2_maxFloat,
@@ -128,11 +128,16 @@ export function b2CollideEdgeAndCircle(
     return;
   }
 
-  const n = s_normal.Set(-ey, ex);
+  // Field by field and b2Normalize: past V8's inlining budget, calls box the doubles they take
+  // or return.
+  const n = s_normal;
+  n.x = -ey;
+  n.y = ex;
   if (n.x * (Q.x - A.x) + n.y * (Q.y - A.y) < 0.0) {
-    n.Set(-n.x, -n.y);
+    n.x = -n.x;
+    n.y = -n.y;
   }
-  n.Normalize();
+  b2Normalize(n);
 
   manifold.pointCount = 1;
   manifold.type = b2Manifold.e_faceA;
@@ -253,8 +258,10 @@ class b2EPCollider {
     const normal1 = this.m_normal1;
     const normal2 = this.m_normal2;
 
+    // b2Normalize, not b2Vec2.Normalize: this function is past V8's inlining budget, and the
+    // length the method returns would be boxed.
     const edge1 = s_edge1.Set(v2.x - v1.x, v2.y - v1.y);
-    edge1.Normalize();
+    b2Normalize(edge1);
     normal1.Set(edge1.y, -edge1.x);
     const offset1 = normal1.x * (centroidB.x - v1.x) + normal1.y * (centroidB.y - v1.y);
     let offset0 = 0.0;
@@ -265,7 +272,7 @@ class b2EPCollider {
     // Is there a preceding edge?
     if (hasVertex0) {
       const edge0 = s_edge0.Set(v1.x - v0.x, v1.y - v0.y);
-      edge0.Normalize();
+      b2Normalize(edge0);
       normal0.Set(edge0.y, -edge0.x);
       convex1 = edge0.x * edge1.y - edge0.y * edge1.x >= 0.0;
       offset0 = normal0.x * (centroidB.x - v0.x) + normal0.y * (centroidB.y - v0.y);
@@ -274,7 +281,7 @@ class b2EPCollider {
     // Is there a following edge?
     if (hasVertex3) {
       const edge2 = s_edge2.Set(v3.x - v2.x, v3.y - v2.y);
-      edge2.Normalize();
+      b2Normalize(edge2);
       normal2.Set(edge2.y, -edge2.x);
       convex2 = edge1.x * edge2.y - edge1.y * edge2.x > 0.0;
       offset2 = normal2.x * (centroidB.x - v2.x) + normal2.y * (centroidB.y - v2.y);

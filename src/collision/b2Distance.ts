@@ -331,9 +331,13 @@ class b2Simplex {
   }
 
   GetSearchDirection(out: b2Vec2): b2Vec2 {
+    // out is written field by field: b2Distance is past V8's inlining budget, and a Set it leaves
+    // out of line boxes its arguments.
     switch (this.m_count) {
       case 1:
-        return out.Set(-this.m_v1.w.x, -this.m_v1.w.y);
+        out.x = -this.m_v1.w.x;
+        out.y = -this.m_v1.w.y;
+        return out;
 
       case 2: {
         const w1 = this.m_v1.w;
@@ -344,11 +348,14 @@ class b2Simplex {
         const sgn = e12x * -w1.y - e12y * -w1.x;
         if (sgn > 0.0) {
           // Origin is left of e12: b2Cross(1.0, e12).
-          return out.Set(-1.0 * e12y, 1.0 * e12x);
+          out.x = -1.0 * e12y;
+          out.y = 1.0 * e12x;
         } else {
           // Origin is right of e12: b2Cross(e12, 1.0).
-          return out.Set(1.0 * e12y, -1.0 * e12x);
+          out.x = 1.0 * e12y;
+          out.y = -1.0 * e12x;
         }
+        return out;
       }
 
       default:

@@ -3,7 +3,7 @@
  * b2TimeOfImpact.cpp).
  */
 
-import { b2Abs, b2Max, b2MulRV, b2MulTRV, b2MulXV, b2Sweep, b2SweepTime, b2Transform, b2Vec2 } from '../common/b2Math';
+import { b2Abs, b2Max, b2MulRV, b2MulTRV, b2MulXV, b2Normalize, b2NormalizeLength, b2Sweep, b2SweepTime, b2Transform, b2Vec2 } from '../common/b2Math';
 import { b2Assert, b2_linearSlop, b2_maxPolygonVertices } from '../common/b2Settings';
 import { b2Distance, b2DistanceInput, b2DistanceOutput, b2DistanceProxy, b2SimplexCache } from './b2Distance';
 
@@ -113,6 +113,8 @@ class b2SeparationFunction {
     proxyB: b2DistanceProxy,
     sweepB: Readonly<b2Sweep>,
   ): void {
+    // Vectors are set field by field and normalized by b2Normalize: this function is past V8's
+    // inlining budget, and a call it leaves out of line boxes the doubles it passes or returns.
     const t1 = s_separationIo[0];
     this.m_proxyA = proxyA;
     this.m_proxyB = proxyB;
@@ -131,8 +133,10 @@ class b2SeparationFunction {
       this.m_type = b2SeparationFunction.e_points;
       const pointA = b2MulXV(xfA, this.m_proxyA.GetVertex(cache.indexA[0]), s_pointA);
       const pointB = b2MulXV(xfB, this.m_proxyB.GetVertex(cache.indexB[0]), s_pointB);
-      axis.Set(pointB.x - pointA.x, pointB.y - pointA.y);
-      s_separationIo[1] = axis.Normalize();
+      axis.x = pointB.x - pointA.x;
+      axis.y = pointB.y - pointA.y;
+      b2Normalize(axis);
+      s_separationIo[1] = b2NormalizeLength[0];
       return;
     } else if (cache.indexA[0] === cache.indexA[1]) {
       // Two points on B and one on A.
@@ -141,18 +145,21 @@ class b2SeparationFunction {
       const localPointB2 = proxyB.GetVertex(cache.indexB[1]);
 
       // b2Cross(localPointB2 - localPointB1, 1.0)
-      axis.Set(1.0 * (localPointB2.y - localPointB1.y), -1.0 * (localPointB2.x - localPointB1.x));
-      axis.Normalize();
+      axis.x = 1.0 * (localPointB2.y - localPointB1.y);
+      axis.y = -1.0 * (localPointB2.x - localPointB1.x);
+      b2Normalize(axis);
       const normal = b2MulRV(xfB.q, axis, s_normal);
 
-      this.m_localPoint.Set(0.5 * (localPointB1.x + localPointB2.x), 0.5 * (localPointB1.y + localPointB2.y));
+      this.m_localPoint.x = 0.5 * (localPointB1.x + localPointB2.x);
+      this.m_localPoint.y = 0.5 * (localPointB1.y + localPointB2.y);
       const pointB = b2MulXV(xfB, this.m_localPoint, s_pointB);
 
       const pointA = b2MulXV(xfA, proxyA.GetVertex(cache.indexA[0]), s_pointA);
 
       let s = (pointA.x - pointB.x) * normal.x + (pointA.y - pointB.y) * normal.y;
       if (s < 0.0) {
-        axis.Set(-axis.x, -axis.y);
+        axis.x = -axis.x;
+        axis.y = -axis.y;
         s = -s;
       }
       s_separationIo[1] = s;
@@ -164,18 +171,21 @@ class b2SeparationFunction {
       const localPointA2 = this.m_proxyA.GetVertex(cache.indexA[1]);
 
       // b2Cross(localPointA2 - localPointA1, 1.0)
-      axis.Set(1.0 * (localPointA2.y - localPointA1.y), -1.0 * (localPointA2.x - localPointA1.x));
-      axis.Normalize();
+      axis.x = 1.0 * (localPointA2.y - localPointA1.y);
+      axis.y = -1.0 * (localPointA2.x - localPointA1.x);
+      b2Normalize(axis);
       const normal = b2MulRV(xfA.q, axis, s_normal);
 
-      this.m_localPoint.Set(0.5 * (localPointA1.x + localPointA2.x), 0.5 * (localPointA1.y + localPointA2.y));
+      this.m_localPoint.x = 0.5 * (localPointA1.x + localPointA2.x);
+      this.m_localPoint.y = 0.5 * (localPointA1.y + localPointA2.y);
       const pointA = b2MulXV(xfA, this.m_localPoint, s_pointA);
 
       const pointB = b2MulXV(xfB, this.m_proxyB.GetVertex(cache.indexB[0]), s_pointB);
 
       let s = (pointB.x - pointA.x) * normal.x + (pointB.y - pointA.y) * normal.y;
       if (s < 0.0) {
-        axis.Set(-axis.x, -axis.y);
+        axis.x = -axis.x;
+        axis.y = -axis.y;
         s = -s;
       }
       s_separationIo[1] = s;

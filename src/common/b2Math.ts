@@ -119,14 +119,8 @@ export class b2Vec2 {
    * b2_epsilon is left unchanged and 0 is returned.
    */
   Normalize(): number {
-    const length = this.Length();
-    if (length < b2_epsilon) {
-      return 0.0;
-    }
-    const invLength = 1.0 / length;
-    this.x *= invLength;
-    this.y *= invLength;
-    return length;
+    b2Normalize(this);
+    return b2NormalizeLength[0];
   }
 
   /** Does this vector contain finite coordinates? */
@@ -144,6 +138,28 @@ export class b2Vec2 {
 }
 
 /** A 2D column vector with 3 elements. */
+
+/** The length b2Normalize found: 0 for a vector shorter than b2_epsilon. */
+export const b2NormalizeLength = new Float64Array(1);
+
+/**
+ * b2Vec2.Normalize with the length written to b2NormalizeLength[0] instead of returned. The
+ * collide and TOI functions call it where V8 may not inline the call (a branch taken by few
+ * contacts, a function past V8's inlining budget), and a double returned from a call V8 leaves
+ * out of line is boxed: a heap allocation per call.
+ */
+export function b2Normalize(v: b2Vec2): void {
+  const length = Math.sqrt(v.x * v.x + v.y * v.y);
+  if (length < b2_epsilon) {
+    b2NormalizeLength[0] = 0.0;
+    return;
+  }
+  const invLength = 1.0 / length;
+  v.x *= invLength;
+  v.y *= invLength;
+  b2NormalizeLength[0] = length;
+}
+
 export class b2Vec3 {
   constructor(
     public x = 0.0,

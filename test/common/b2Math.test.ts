@@ -16,6 +16,8 @@ import {
   b2MulXV,
   b2MulXX,
   b2NextPowerOfTwo,
+  b2Normalize,
+  b2NormalizeLength,
   b2IsPowerOfTwo,
   b2Rot,
   b2Swap,
@@ -36,6 +38,20 @@ describe('b2Vec2', () => {
     const tiny = new b2Vec2(1e-8, 0);
     expect(tiny.Normalize()).toBe(0);
     expect(tiny.x).toBe(1e-8);
+  });
+
+  it('b2Normalize normalizes as Normalize does, the length (or 0) in b2NormalizeLength[0]', () => {
+    const v = new b2Vec2(3, 4);
+    b2Normalize(v);
+    expect([v.x, v.y, b2NormalizeLength[0]]).toEqual([3 * (1 / 5), 4 * (1 / 5), 5]);
+    const w = new b2Vec2(-0.3, 0.7);
+    const u = new b2Vec2(-0.3, 0.7);
+    b2Normalize(w);
+    expect(b2NormalizeLength[0]).toBe(u.Normalize());
+    expect([w.x, w.y]).toEqual([u.x, u.y]);
+    const tiny = new b2Vec2(1e-8, 0);
+    b2Normalize(tiny);
+    expect([tiny.x, tiny.y, b2NormalizeLength[0]]).toEqual([1e-8, 0, 0]);
   });
 
   it('Skew gives the vector whose dot product equals the cross product', () => {
