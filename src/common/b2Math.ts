@@ -137,8 +137,6 @@ export class b2Vec2 {
   }
 }
 
-/** A 2D column vector with 3 elements. */
-
 /** The length b2Normalize found: 0 for a vector shorter than b2_epsilon. */
 export const b2NormalizeLength = new Float64Array(1);
 
@@ -160,6 +158,7 @@ export function b2Normalize(v: b2Vec2): void {
   b2NormalizeLength[0] = length;
 }
 
+/** A 2D column vector with 3 elements. */
 export class b2Vec3 {
   constructor(
     public x = 0.0,
