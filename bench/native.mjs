@@ -115,8 +115,9 @@ export async function buildNative(dir, log = () => {}) {
   const include = box2dIncludeDir(dir);
   const files = sourceFiles(path.join(include, 'Box2D')).sort();
   const cxx = process.env.CXX || 'g++';
+  const sources = new Map(files.map((f) => [f, readFileSync(path.join(include, 'Box2D', f), 'utf8')]));
   const hash = createHash('sha256');
-  for (const f of files) hash.update(f).update(readFileSync(path.join(include, 'Box2D', f)));
+  for (const [f, text] of sources) hash.update(f).update(text);
   hash.update(readFileSync(DRIVER)).update(FLAGS.join(' ')).update(cxx);
   const out = path.join(os.tmpdir(), 'webphysics-native', hash.digest('hex').slice(0, 16));
   const exe = { float32: path.join(out, 'scene-float32'), float64: path.join(out, 'scene-float64') };
@@ -124,10 +125,10 @@ export async function buildNative(dir, log = () => {}) {
 
   // The float64 tree: every file rewritten, in the same layout.
   const inc64 = path.join(out, 'src64');
-  for (const f of files) {
+  for (const [f, text] of sources) {
     const target = path.join(inc64, 'Box2D', f);
     mkdirSync(path.dirname(target), { recursive: true });
-    writeFileSync(target, float64Source(readFileSync(path.join(include, 'Box2D', f), 'utf8')));
+    writeFileSync(target, float64Source(text));
   }
   const cpp = files.filter((f) => f.endsWith('.cpp'));
   log(`building Box2D 2.2.1 (${cpp.length} files) twice with ${cxx} ${FLAGS.join(' ')}`);
