@@ -1,6 +1,9 @@
-// The testbed page (demos/): bundles demos/main.ts with esbuild into <outDir>/testbed.js and copies
-// index.html and testbed.css beside it. `node scripts/build-demos.mjs [outDir]` (default demos/dist);
-// `npm start` calls buildDemos() and serves the folder.
+// The demo pages (demos/): bundles the testbed (demos/main.ts) into <outDir>/testbed.js and the
+// comparison page (demos/compare/main.ts, and its worker) into compare.js and compare-worker.js
+// with esbuild, and copies the HTML and CSS beside them. `node scripts/build-demos.mjs [outDir]`
+// (default demos/dist); `npm start` calls buildDemos() and serves the folder. The WebGPU backend's
+// WGSL is inlined as text; its Node-only imports (Dawn, node:*) are on a code path a browser never
+// takes, so they stay external.
 //
 // The benchmark scenes come from bench/scenes.mjs, a Node module: its node:fs, node:path and
 // node:url imports are replaced by small browser stand-ins, and the one data file it reads (the
@@ -49,10 +52,17 @@ export function pathToFileURL(p) { return new URL(String(p), 'file:///'); }`,
   };
 }
 
+const kEntries = {
+  testbed: path.join(repoRoot, 'demos', 'main.ts'),
+  compare: path.join(repoRoot, 'demos', 'compare', 'main.ts'),
+  'compare-worker': path.join(repoRoot, 'demos', 'compare', 'worker.ts'),
+};
+const kStatic = ['index.html', 'testbed.css', 'compare.html', 'compare.css'];
+
 function options(outDir) {
   return {
-    entryPoints: [path.join(repoRoot, 'demos', 'main.ts')],
-    outfile: path.join(outDir, 'testbed.js'),
+    entryPoints: kEntries,
+    outdir: outDir,
     bundle: true,
     format: 'esm',
     platform: 'browser',
@@ -61,12 +71,14 @@ function options(outDir) {
     logLevel: 'warning',
     legalComments: 'inline',
     define: { 'process.env.WEBPHYSICS_GOLDEN': 'undefined' },
+    loader: { '.wgsl': 'text' },
+    external: ['webgpu', 'node:*'],
     plugins: [nodeShims()],
   };
 }
 
 function copyStatic(outDir) {
-  for (const file of ['index.html', 'testbed.css']) copyFileSync(path.join(repoRoot, 'demos', file), path.join(outDir, file));
+  for (const file of kStatic) copyFileSync(path.join(repoRoot, 'demos', file), path.join(outDir, file));
 }
 
 /** Build the page into outDir. With watch, rebuild on every change (returns the esbuild context). */
@@ -91,5 +103,5 @@ export async function buildDemos(outDir = defaultOutDir, { watch = false } = {})
 if (import.meta.url === pathToFileURL(process.argv[1] ?? '').href) {
   const outDir = path.resolve(process.argv[2] ?? defaultOutDir);
   await buildDemos(outDir);
-  console.log(`Built the testbed into ${path.relative(process.cwd(), outDir) || '.'}`);
+  console.log(`Built the demo pages into ${path.relative(process.cwd(), outDir) || '.'}`);
 }

@@ -31,7 +31,7 @@ import { GpuContactEvents, wantsEvents } from './events';
 import type { GpuContactSet } from './events';
 import type { NarrowPhaseResult } from './narrowPhase';
 import { GpuStepper } from './stepper';
-import type { GpuStepperOptions } from './stepper';
+import type { GpuReadStats, GpuStepperOptions } from './stepper';
 
 export interface WebGPUBackendOptions extends GpuContextOptions {
   /** A device already requested (requestGpu); otherwise create() requests one with these options. */
@@ -132,6 +132,8 @@ export class WebGPUBackend implements b2WorldBackend {
   /** The last submitted step's read-back, and its contact count once that is in. */
   private lastStep: Promise<NarrowPhaseResult> | null = null;
   private lastContactCount: number | null = null;
+  private readonly counts = { contacts: 0, touching: 0 };
+  private countsKnown = false;
   private stepsSinceRead = 0;
   private failure: unknown = null;
   private detaching = false;
@@ -155,6 +157,44 @@ export class WebGPUBackend implements b2WorldBackend {
     return this.stepperNow;
   }
 
+  /**
+   * The GPU's contacts after the latest step whose counts are back (every step reads its own):
+   * pairs in its contact list, touching or not (b2World.GetContactCount's count on the JavaScript
+   * engine, which pairs fattened AABBs where the GPU pairs current ones, so it holds more), and
+   * touching non-sensor ones. Null before the first step.
+   */
+  get contactCounts(): { readonly contacts: number; readonly touching: number } | null {
+    return this.countsKnown ? this.counts : null;
+  }
+
+  /** Bytes and host time of the last read-back (Synchronize, StepAsync, readTransforms). */
+  get readStats(): GpuReadStats | null {
+    return this.stepperNow?.readStats ?? null;
+  }
+
+  /** The slot of `body` in readTransforms' output; -1 for a body the GPU has not seen yet. */
+  bodySlot(body: b2Body): number {
+    return this.attached('bodySlot').stepper.mirror.bodySlot(body);
+  }
+
+  /**
+   * A bulk read for renderers and games that want every body: waits for every step called so far
+   * and copies, with one map of 28 bytes a body, each body slot's transform into `out` (x, y, cos,
+   * sin at 4 * slot; bodySlot(body) gives the slot) and its awake flag into `awake[slot]`. No
+   * per-body objects, and the world's b2Body objects keep their last synchronised state: call
+   * Synchronize where the application reads bodies through the API or needs contact events.
+   * Slots without a body are written as NaN. Resolves with the slot count.
+   */
+  async readTransforms(out: Float32Array | Float64Array, awake?: Uint8Array): Promise<number> {
+    const { stepper } = this.attached('readTransforms');
+    if (this.detaching) throw new Error('WebGPUBackend.readTransforms: the world is being handed back to the JavaScript engine');
+    return this.serialised(async () => {
+      await this.submitted();
+      if (this.failure !== null) throw this.failure;
+      return stepper.readTransforms(out, awake);
+    });
+  }
+
   Attach(world: b2World, engine: b2WorldBackendEngine): void {
     if (this.world !== null) throw new Error('WebGPUBackend: already attached to a world; one backend steps one world');
     this.refuseUnsupported(world, engine);
@@ -171,6 +211,7 @@ export class WebGPUBackend implements b2WorldBackend {
     this.failure = null;
     this.lastStep = null;
     this.lastContactCount = null;
+    this.countsKnown = false;
     this.stepsSinceRead = 0;
   }
 
@@ -240,6 +281,9 @@ export class WebGPUBackend implements b2WorldBackend {
       settled.then(
         (r) => {
           if (this.lastStep === settled) this.lastContactCount = r.contactCount;
+          this.counts.contacts = r.contactCount;
+          this.counts.touching = r.solverCount;
+          this.countsKnown = true;
         },
         () => undefined,
       );

@@ -50,6 +50,6 @@ export type { NarrowPhaseOutputs } from './narrowPhase';
 export { GpuSolver } from './solver';
 export type { SolverStep, SolverInputs, SolverState } from './solver';
 export { GpuStepper } from './stepper';
-export type { GpuStepperOptions, GpuStepOptions, GpuReadRange } from './stepper';
+export type { GpuStepperOptions, GpuStepOptions, GpuReadRange, GpuReadStats } from './stepper';
 export { WebGPUBackend } from './backend';
 export type { WebGPUBackendOptions } from './backend';

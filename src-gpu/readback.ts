@@ -13,6 +13,17 @@
 import type { GpuContext } from './device';
 import { MAP_READ, USAGE } from './layout';
 
+/** Maps `size` bytes of a MAP_READ buffer, failing with the device's loss or with `message`. */
+export async function mapRead(ctx: GpuContext, buffer: GPUBuffer, size: number, message: string): Promise<ArrayBuffer> {
+  try {
+    await Promise.race([buffer.mapAsync(MAP_READ, 0, size), ctx.lostRejection]);
+  } catch {
+    ctx.assertAlive();
+    throw new Error(message);
+  }
+  return buffer.getMappedRange(0, size);
+}
+
 export class Readback {
   readonly buffer: GPUBuffer;
   readonly size: number;
@@ -31,13 +42,7 @@ export class Readback {
   read(ctx: GpuContext, bytes: number): Promise<ArrayBuffer> {
     const size = Math.min(this.size, Math.ceil(bytes / 8) * 8);
     const done = (async () => {
-      try {
-        await Promise.race([this.buffer.mapAsync(MAP_READ, 0, size), ctx.lostRejection]);
-      } catch {
-        ctx.assertAlive();
-        throw new Error('reading GPU results back failed');
-      }
-      const data = this.buffer.getMappedRange(0, size).slice(0);
+      const data = (await mapRead(ctx, this.buffer, size, 'reading GPU results back failed')).slice(0);
       this.buffer.unmap();
       return data;
     })();
@@ -55,6 +60,44 @@ export class Readback {
 
   destroy(): void {
     this.buffer.destroy();
+  }
+}
+
+/**
+ * A MAP_READ buffer for reads that grow with the world (bodies, joints, logs): it doubles when a
+ * read needs more, and is mapped in place (the caller reads the mapped range, then unmaps).
+ */
+export class StagingBuffer {
+  private buffer: GPUBuffer | null = null;
+  private capacity = 0;
+
+  constructor(
+    private readonly ctx: GpuContext,
+    private readonly label: string,
+    private readonly minBytes: number,
+  ) {}
+
+  /** A buffer of at least `bytes` bytes to copy into before map(). */
+  get(bytes: number): GPUBuffer {
+    if (this.buffer === null || this.capacity < bytes) {
+      this.buffer?.destroy();
+      this.capacity = Math.max(bytes, 2 * this.capacity, this.minBytes);
+      this.buffer = this.ctx.createBuffer(this.label, this.capacity, USAGE.MAP_READ | USAGE.COPY_DST);
+    }
+    return this.buffer;
+  }
+
+  /** Maps the first `bytes` bytes of the buffer get() gave, after the submissions before. */
+  map(bytes: number, message: string): Promise<ArrayBuffer> {
+    return mapRead(this.ctx, this.buffer!, bytes, message);
+  }
+
+  unmap(): void {
+    this.buffer!.unmap();
+  }
+
+  destroy(): void {
+    this.buffer?.destroy();
   }
 }
 

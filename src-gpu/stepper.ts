@@ -37,7 +37,7 @@ import { GpuSolver } from './solver';
 import type { SolverStep } from './solver';
 import { GpuWorld } from './world';
 import type { GpuWorldOptions } from './world';
-import { MAP_READ, USAGE } from './layout';
+import { StagingBuffer } from './readback';
 
 export interface GpuStepperOptions {
   world?: GpuWorldOptions;
@@ -67,6 +67,16 @@ const e_awakeFlag = 0x0002;
 const BODY_READ_BYTES = 76;
 /** Bytes per joint slot read back with the bodies: jointState, impulses and limit state. */
 const JOINT_STATE_BYTES = 32;
+/** Bytes per body slot in readTransforms()'s staging buffer: xf 16, cell 8, awake 4. */
+const TRANSFORM_READ_BYTES = 28;
+
+/** What the last read-back cost the host. */
+export interface GpuReadStats {
+  /** Bytes mapped. */
+  bytes: number;
+  /** Milliseconds from the map resolving to the data written out (the host's share of the read). */
+  unpackMs: number;
+}
 
 export class GpuStepper {
   readonly ctx: GpuContext;
@@ -77,9 +87,11 @@ export class GpuStepper {
   readonly solver: GpuSolver;
   /** Steps taken on the GPU. */
   steps = 0;
+  /** What the last readBodies() or readTransforms() cost. */
+  readonly readStats: GpuReadStats = { bytes: 0, unpackMs: 0 };
   private invDt0: number;
-  private staging: GPUBuffer | null = null;
-  private stagingBytes = 0;
+  private readonly bodyStaging: StagingBuffer;
+  private readonly transformStaging: StagingBuffer;
   private readonly solverStep: SolverStep = { dt: 0, dtRatio: 0, velocityIterations: 0, positionIterations: 0, warmStarting: true, gravity: { x: 0, y: 0 } };
   private readonly encodeSolver = (pass: PassRecorder, outputs: NarrowPhaseOutputs): void => this.solver.encode(pass, this.mirror, outputs);
 
@@ -90,6 +102,8 @@ export class GpuStepper {
     this.broadPhase = new GpuBroadPhase(ctx, options.broadPhase);
     this.narrowPhase = new GpuNarrowPhase(ctx, options.narrowPhase);
     this.solver = new GpuSolver(ctx);
+    this.bodyStaging = new StagingBuffer(ctx, 'stepper body read-back', 64 * BODY_READ_BYTES);
+    this.transformStaging = new StagingBuffer(ctx, 'stepper transform read-back', 64 * TRANSFORM_READ_BYTES);
     this.mirror.sync();
     this.narrowPhase.seedFromWorld(this.mirror);
     this.invDt0 = world.m_inv_dt0;
@@ -139,12 +153,7 @@ export class GpuStepper {
     let bytes = BODY_READ_BYTES * n + JOINT_STATE_BYTES * joints;
     for (const r of extras) bytes += r.size;
     if (bytes === 0) return 0;
-    if (this.staging === null || this.stagingBytes < bytes) {
-      this.staging?.destroy();
-      this.stagingBytes = Math.max(bytes, 2 * this.stagingBytes, 64 * BODY_READ_BYTES);
-      this.staging = ctx.createBuffer('stepper body read-back', this.stagingBytes, USAGE.MAP_READ | USAGE.COPY_DST);
-    }
-    const staging = this.staging;
+    const staging = this.bodyStaging.get(bytes);
     const encoder = ctx.device.createCommandEncoder({ label: 'stepper body read-back' });
     encoder.copyBufferToBuffer(mirror.bodyXf.buffer, 0, staging, 0, 16 * n);
     encoder.copyBufferToBuffer(mirror.bodyCell.buffer, 0, staging, 16 * n, 8 * n);
@@ -158,13 +167,8 @@ export class GpuStepper {
       at += r.size;
     }
     ctx.device.queue.submit([encoder.finish()]);
-    try {
-      await Promise.race([staging.mapAsync(MAP_READ, 0, bytes), ctx.lostRejection]);
-    } catch {
-      ctx.assertAlive();
-      throw new Error('reading the bodies back from the GPU failed');
-    }
-    const mapped = staging.getMappedRange(0, bytes);
+    const mapped = await this.bodyStaging.map(bytes, 'reading the bodies back from the GPU failed');
+    const started = performance.now();
     mirror.unpackJointStates(new Float32Array(mapped, BODY_READ_BYTES * n, (JOINT_STATE_BYTES / 4) * joints));
     at = BODY_READ_BYTES * n + JOINT_STATE_BYTES * joints;
     for (const r of extras) {
@@ -205,12 +209,66 @@ export class GpuStepper {
       mirror.bodyAwake.u32[slot] = awake[slot];
       written++;
     }
-    staging.unmap();
+    this.bodyStaging.unmap();
+    this.readStats.bytes = bytes;
+    this.readStats.unpackMs = performance.now() - started;
     return written;
   }
 
+  /**
+   * Bulk read for renderers: copies every body slot's transform into `out` (x, y, cos, sin of the
+   * body origin at 4 * slot, in world coordinates) and, when given, its awake flag into
+   * `awake[slot]` (1 awake, 0 asleep), after every step submitted so far, with one map of 28 bytes
+   * a body. The world's b2Body objects are not touched. Slots that hold no body (destroyed, not yet
+   * reused) are written as NaN and 0. Returns the number of slots (GpuWorld.bodySlotCount).
+   */
+  async readTransforms(out: Float32Array | Float64Array, awake?: Uint8Array): Promise<number> {
+    const ctx = this.ctx;
+    ctx.assertAlive();
+    const mirror = this.mirror;
+    const n = mirror.bodySlotCount;
+    if (out.length < 4 * n) {
+      throw new RangeError(`readTransforms: out holds ${out.length} numbers; this world needs 4 per body slot, ${4 * n}`);
+    }
+    if (awake !== undefined && awake.length < n) {
+      throw new RangeError(`readTransforms: awake holds ${awake.length} flags; this world needs one per body slot, ${n}`);
+    }
+    if (n === 0) return 0;
+    const bytes = TRANSFORM_READ_BYTES * n;
+    const staging = this.transformStaging.get(bytes);
+    const encoder = ctx.device.createCommandEncoder({ label: 'stepper transform read-back' });
+    encoder.copyBufferToBuffer(mirror.bodyXf.buffer, 0, staging, 0, 16 * n);
+    encoder.copyBufferToBuffer(mirror.bodyCell.buffer, 0, staging, 16 * n, 8 * n);
+    encoder.copyBufferToBuffer(mirror.bodyAwake.buffer, 0, staging, 24 * n, 4 * n);
+    ctx.device.queue.submit([encoder.finish()]);
+    const mapped = await this.transformStaging.map(bytes, 'reading the transforms back from the GPU failed');
+    const started = performance.now();
+    const xf = new Float32Array(mapped, 0, 4 * n);
+    const cell = new Int32Array(mapped, 16 * n, 2 * n);
+    const flags = new Uint32Array(mapped, 24 * n, n);
+    const S = mirror.cellSize;
+    for (let slot = 0; slot < n; ++slot) {
+      const at = 4 * slot;
+      if (mirror.bodyAt(slot) === null) {
+        out[at] = out[at + 1] = out[at + 2] = out[at + 3] = NaN;
+        if (awake !== undefined) awake[slot] = 0;
+        continue;
+      }
+      out[at] = cell[2 * slot] * S + xf[at];
+      out[at + 1] = cell[2 * slot + 1] * S + xf[at + 1];
+      out[at + 2] = xf[at + 2];
+      out[at + 3] = xf[at + 3];
+      if (awake !== undefined) awake[slot] = flags[slot] !== 0 ? 1 : 0;
+    }
+    this.transformStaging.unmap();
+    this.readStats.bytes = bytes;
+    this.readStats.unpackMs = performance.now() - started;
+    return n;
+  }
+
   destroy(): void {
-    this.staging?.destroy();
+    this.bodyStaging.destroy();
+    this.transformStaging.destroy();
     this.solver.destroy();
     this.narrowPhase.destroy();
     this.broadPhase.destroy();

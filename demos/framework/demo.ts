@@ -1,0 +1,68 @@
+/*
+ * What every demo page shares: `window.webphysicsDemo`, the state tests and scripts read while a
+ * page runs; step times as a median over the last second; and a WebGPU adapter named for people.
+ */
+
+import type { GpuAdapterSummary } from '../../src-gpu/device';
+
+export interface DemoPane {
+  backend: 'js' | 'webgpu';
+  /** The WebGPU adapter that steps this pane, in words; null for the JavaScript engine. */
+  adapter: string | null;
+  bodies: number;
+  steps: number;
+  /** Median step time over the last second, in milliseconds (NaN before the first step). */
+  stepMs: number;
+}
+
+export interface WebPhysicsDemo {
+  /** The page has built its scene and stepped it at least once. */
+  ready: boolean;
+  panes: DemoPane[];
+}
+
+declare global {
+  interface Window {
+    webphysicsDemo: WebPhysicsDemo;
+  }
+}
+
+/** The adapter's vendor, architecture and description, and whether it is a software one. */
+export function adapterName(info: Pick<GpuAdapterSummary, 'vendor' | 'architecture' | 'description'> & { software?: boolean }): string {
+  const parts = [info.vendor, info.architecture, info.description].filter((s) => s !== '');
+  const name = parts.length > 0 ? parts.join(' / ') : 'an adapter that gives no name';
+  return info.software ? `${name} (software: a CPU emulating a GPU)` : name;
+}
+
+/** Step times kept for a second: the median of those, or the last one when the last second had none. */
+export class StepTimes {
+  private readonly times: number[] = [];
+  private readonly values: number[] = [];
+  private readonly scratch: number[] = [];
+
+  add(now: number, ms: number): void {
+    this.times.push(now);
+    this.values.push(ms);
+  }
+
+  clear(): void {
+    this.times.length = 0;
+    this.values.length = 0;
+  }
+
+  median(now: number): number {
+    let drop = 0;
+    while (drop < this.times.length - 1 && this.times[drop] < now - 1000) drop++;
+    if (drop > 0) {
+      this.times.splice(0, drop);
+      this.values.splice(0, drop);
+    }
+    const v = this.scratch;
+    v.length = 0;
+    for (const x of this.values) v.push(x);
+    if (v.length === 0) return NaN;
+    v.sort((a, b) => a - b);
+    const mid = v.length >> 1;
+    return v.length % 2 === 1 ? v[mid] : 0.5 * (v[mid - 1] + v[mid]);
+  }
+}
