@@ -6,9 +6,12 @@
  */
 
 import { b2Vec2, b2_dynamicBody, b2_kinematicBody, b2_staticBody } from '../src/index';
+import { BACKEND_NAMES, detectWebGpu, TestbedBackend } from './backend';
+import type { BackendName } from './backend';
 import { sceneDigests } from './determinism';
 import { srand } from './framework/random';
 import { g_debugDraw } from './framework/render';
+import type { DemoPane } from './framework/demo';
 import { kStepSettingKeys, Settings } from './framework/settings';
 import type { StepSettings } from './framework/settings';
 import type { Test, TestEntry } from './framework/test';
@@ -21,6 +24,8 @@ const $ = <T extends HTMLElement>(id: string) => document.getElementById(id) as 
 const canvas = $<HTMLCanvasElement>('canvas');
 const testList = $<HTMLSelectElement>('tests');
 const webgpuStatus = $<HTMLParagraphElement>('webgpu-status');
+const backendList = $<HTMLSelectElement>('backend');
+const backendNote = $<HTMLParagraphElement>('backend-note');
 const draw = g_debugDraw;
 draw.SetCanvas(canvas);
 
@@ -38,6 +43,7 @@ let savedStepSettings: StepSettings | null = null;
 /** Errors thrown by tests (also sent to the console). */
 const errors: string[] = [];
 let frameCount = 0;
+const backends = new TestbedBackend((error, what) => report(error, what));
 
 function syncView(): void {
   draw.viewCenter.Set(settings.viewCenter.x, settings.viewCenter.y);
@@ -108,9 +114,17 @@ function switchTo(index: number): void {
   testList.value = String(index);
   refreshControls();
   showMessage('');
-  if (location.hash !== `#${encodeURIComponent(entry.name)}`) {
-    history.replaceState(null, '', `#${encodeURIComponent(entry.name)}`);
-  }
+  putOnBackend();
+}
+
+/** Puts the current test on the chosen backend, and the choice into the URL. */
+function putOnBackend(): void {
+  const params = new URLSearchParams({ test: entry.name, backend: backends.chosen });
+  if (location.search !== `?${params}` || location.hash !== '') history.replaceState(null, '', `?${params}`);
+  backends.apply(test).then(refreshBackend, (error) => {
+    report(error, `${entry.name} could not be put on WebGPU`);
+    refreshBackend();
+  });
 }
 
 /** Main.cpp's Restart: a new instance of the same test, the view kept. */
@@ -119,19 +133,34 @@ function restart(): void {
     test = createTest(entry);
   } catch (error) {
     report(error, `${entry.name} could not be created`);
+    return;
   }
+  putOnBackend();
 }
 
-/** Main.cpp's SimulationLoop: one frame. */
+/**
+ * Main.cpp's SimulationLoop: one frame. On WebGPU a frame waits while the previous frame's
+ * synchronisation (or a backend switch) runs: it is skipped, and counted.
+ */
 function simulationLoop(): void {
+  if (backends.busy) {
+    backends.skippedFrames++;
+    return;
+  }
   syncView();
   draw.BeginFrame();
   test.SetTextLine(30);
   settings.hz = settingsHz;
+  backends.beforeStep(test, settings);
   try {
     test.Step(settings);
   } catch (error) {
     report(error, `${entry.name} threw in Step`);
+  }
+  backends.afterStep(test);
+  if (settings.drawStats) {
+    draw.DrawString(5, test.m_textLine, backends.describe(performance.now()));
+    test.m_textLine += 15;
   }
   test.DrawTitle(5, 15, entry.name);
   draw.EndFrame();
@@ -151,7 +180,13 @@ function tick(now: number): void {
   if (!autoRun || now - lastFrame < 1000 / 60 - 4) return;
   lastFrame = now;
   simulationLoop();
+  publish(now);
+  if (now - lastNote > 500) {
+    lastNote = now;
+    refreshBackend();
+  }
 }
+let lastNote = 0;
 
 // ---- The panel (Main.cpp's GLUI subwindow) ----
 
@@ -417,52 +452,69 @@ $<HTMLInputElement>('open-json').addEventListener('change', (event) => {
   canvas.focus();
 });
 
-// ---- Backends: the JavaScript engine; WebGPU is listed for when its solver lands ----
-
-export interface WebGpuStatus {
-  /** navigator.gpu exists. */
-  api: boolean;
-  /** requestAdapter() gave an adapter. */
-  adapter: boolean;
-  message: string;
-}
-
-async function detectWebGpu(): Promise<WebGpuStatus> {
-  const gpu = (navigator as unknown as { gpu?: { requestAdapter(): Promise<unknown> } }).gpu;
-  if (gpu === undefined) {
-    return {
-      api: false,
-      adapter: false,
-      message: 'This browser lacks WebGPU (no navigator.gpu). The JavaScript backend runs everything.',
-    };
-  }
-  try {
-    const adapter = (await gpu.requestAdapter()) as { info?: { vendor?: string; architecture?: string } } | null;
-    if (adapter === null) {
-      return {
-        api: true,
-        adapter: false,
-        message: 'This browser has WebGPU but no adapter (GPU access disabled or blocked). The JavaScript backend runs everything.',
-      };
-    }
-    const info = adapter.info;
-    const name = [info?.vendor, info?.architecture].filter((s) => s).join(' ');
-    return {
-      api: true,
-      adapter: true,
-      message: `This browser has WebGPU${name ? ` (adapter: ${name})` : ''}. The WebGPU backend is coming; the JavaScript backend runs for now.`,
-    };
-  } catch (error) {
-    return { api: true, adapter: false, message: `WebGPU adapter request failed: ${error instanceof Error ? error.message : String(error)}` };
-  }
-}
+// ---- Backends: the JavaScript engine, or WebGPU where the browser has an adapter ----
 
 const webgpu = detectWebGpu().then((status) => {
   webgpuStatus.textContent = status.message;
   webgpuStatus.className = `note ${status.adapter ? 'ok' : 'warn'}`;
   document.body.dataset.webgpu = status.adapter ? 'adapter' : status.api ? 'no-adapter' : 'none';
+  backendList.querySelector<HTMLOptionElement>('option[value="webgpu"]')!.disabled = !status.adapter;
   return status;
 });
+
+/** Steps the current test on `name` from now on; resolves with what steps it (a refused test stays on JavaScript). */
+async function chooseBackend(name: BackendName): Promise<BackendName> {
+  const status = await webgpu;
+  if (name === 'webgpu' && !status.adapter) {
+    showMessage(`WebGPU is not available here (${status.message}); the JavaScript engine runs.`, 'warn');
+    name = 'js';
+  }
+  backends.chosen = name;
+  backendList.value = name;
+  putOnBackend();
+  await backends.idle();
+  return backends.active;
+}
+
+backendList.addEventListener('change', () => {
+  void chooseBackend(backendList.value as BackendName);
+  backendList.blur();
+  canvas.focus();
+});
+
+/** The panel's note: what steps the test, and what the WebGPU backend's read-back costs. */
+function refreshBackend(): void {
+  backendList.value = backends.chosen;
+  let text = '';
+  if (backends.chosen === 'webgpu' && backends.active === 'js' && backends.refusal !== null) {
+    text = `${entry.name} runs on the JavaScript engine: ${backends.refusal}.`;
+  } else if (backends.active === 'webgpu') {
+    const read = backends.readStats;
+    text =
+      `Stepping on WebGPU (${backends.adapter}). Each frame reads the world back once (world.Synchronize: positions, ` +
+      `velocities, contact events)${read === null ? '' : `: ${(read.bytes / 1024).toFixed(1)} KB, ${read.unpackMs.toFixed(2)} ms on the host to unpack`}; ` +
+      `the drawing is one step behind the GPU. ${backends.skippedFrames} frames skipped while a read-back ran.`;
+  }
+  backendNote.textContent = text;
+  backendNote.className = `note ${backends.refusal !== null ? 'warn' : ''}`;
+  backendNote.hidden = text === '';
+}
+
+// ---- window.webphysicsDemo: the state every demo page publishes ----
+
+window.webphysicsDemo = { ready: false, panes: [] };
+
+function publish(now: number): void {
+  const pane: DemoPane = {
+    backend: backends.active,
+    adapter: backends.active === 'webgpu' ? backends.adapter : null,
+    bodies: test.m_world.GetBodyCount(),
+    steps: test.m_stepCount,
+    stepMs: backends.times.median(now),
+  };
+  window.webphysicsDemo.panes = [pane];
+  window.webphysicsDemo.ready = frameCount > 0;
+}
 
 // ---- Hooks for tests and the console ----
 
@@ -490,7 +542,21 @@ const hooks = {
   /** Run n frames now (each one Step of the test and a redraw). */
   frame(n = 1): void {
     for (let i = 0; i < n; ++i) simulationLoop();
+    publish(performance.now());
   },
+  /** Run n frames, each after the previous one's synchronisation (WebGPU) is done. */
+  async frameAsync(n = 1): Promise<void> {
+    for (let i = 0; i < n; ++i) {
+      await backends.idle();
+      simulationLoop();
+    }
+    await backends.idle();
+    publish(performance.now());
+  },
+  /** Choose the backend; resolves with what steps the current test. */
+  setBackend: chooseBackend,
+  /** The backend chosen, the one stepping the test, and why they differ. */
+  backend: () => ({ chosen: backends.chosen, active: backends.active, refusal: backends.refusal, adapter: backends.adapter }),
   settings,
   /** The current test and its world. */
   state() {
@@ -557,10 +623,18 @@ window.testbed = hooks;
 fillTestList();
 refreshControls();
 {
-  const wanted = decodeURIComponent(location.hash.slice(1));
+  // ?test=NAME&backend=js|webgpu, or the older #NAME.
+  const params = new URLSearchParams(location.search);
+  const wanted = params.get('test') ?? decodeURIComponent(location.hash.slice(1));
   const index = entries.findIndex((e) => e.name === wanted);
+  const backend = params.get('backend');
+  if (backend !== null && !(BACKEND_NAMES as readonly string[]).includes(backend)) {
+    report(new Error(`backend must be one of ${BACKEND_NAMES.join(', ')}; got "${backend}"`), 'URL');
+  }
   testSelection = index >= 0 ? index : 0;
   switchTo(testSelection);
+  if (wanted !== '' && index < 0) showMessage(`URL: no test named "${wanted}"; showing ${entry.name}.`, 'warn');
+  if (backend === 'webgpu') void chooseBackend('webgpu');
 }
 requestAnimationFrame(tick);
 canvas.focus();

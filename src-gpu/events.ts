@@ -15,7 +15,8 @@
  *      event order (sorted by the pair's proxy slots, then the contacts gone with their pair, in
  *      the same order), then, when it logged its contacts, PostSolve for the contacts the solver
  *      solved in it (touching, not sensors, in awake islands: MF.SOLVED), in contact order,
- *      with its normal and tangent impulses and its manifold in the b2Contact.
+ *      with its normal and tangent impulses and its manifold in the b2Contact; none for a contact
+ *      whose fixture was destroyed after the step (its EndContact comes with the next step).
  * Invariants: one b2Contact per GPU contact (pair of proxy slots, checked against the slots'
  *      fixtures) from its begin until its end or until it leaves the GPU's contact list: BeginContact
  *      and EndContact get the same object. These objects are not in the world's contact list.
@@ -360,7 +361,9 @@ export class GpuContactEvents {
       if ((h & MF.SOLVED) === 0) continue;
       const [pa, pb] = GpuContactEvents.oriented(set, i);
       const c = this.contactFor(mirror, pa, pb);
-      if (c === null) continue;
+      // A fixture destroyed after the step was taken is gone: the application hears of its
+      // contacts only through their EndContact (the next synchronisation's).
+      if (c === null || c.m_fixtureA.m_destroyed || c.m_fixtureB.m_destroyed) continue;
       GpuContactEvents.writeManifold(c, set, i);
       impulse.count = (h >> 2) & 3;
       for (let k = 0; k < impulse.count; ++k) {

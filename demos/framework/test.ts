@@ -29,6 +29,7 @@ import {
   b2_maxManifoldPoints,
 } from '../../src/index';
 import type { b2Contact, b2ContactImpulse, b2Fixture, b2Joint, b2Manifold } from '../../src/index';
+import { WebGPUBackend } from '../../src-gpu/backend';
 import { RandomFloat } from './random';
 import { g_debugDraw, TestbedDraw } from './render';
 import type { Settings, StepSettings } from './settings';
@@ -65,6 +66,27 @@ class DestructionListener extends b2DestructionListener {
       this.test.JointDestroyed(joint);
     }
   }
+}
+
+/**
+ * Not in the C++: the contact listener while the WebGPU backend steps the world. The GPU solves a
+ * whole step without calling back into JavaScript, so PreSolve, where the Testbed records its
+ * contact points, cannot run; the backend delivers BeginContact, EndContact and PostSolve after
+ * the step. This listener has only the ones the test overrides (the backend reads back and logs
+ * only what a listener has), and PostSolve records the contact points when they are drawn.
+ */
+function gpuContactListener(test: Test, recordPoints: boolean): b2ContactListener {
+  const listener = new b2ContactListener();
+  const own = (name: 'BeginContact' | 'EndContact' | 'PostSolve') => test[name] !== Test.prototype[name];
+  if (own('BeginContact')) listener.BeginContact = (contact) => test.BeginContact(contact);
+  if (own('EndContact')) listener.EndContact = (contact) => test.EndContact(contact);
+  if (own('PostSolve') || recordPoints) {
+    listener.PostSolve = (contact, impulse) => {
+      if (recordPoints) test.RecordSolvedPoints(contact, impulse);
+      if (own('PostSolve')) test.PostSolve(contact, impulse);
+    };
+  }
+  return listener;
 }
 
 class QueryCallback extends b2QueryCallback {
@@ -112,6 +134,11 @@ export class Test extends b2ContactListener {
   m_stepCount = 0;
   readonly m_maxProfile = new b2Profile();
   readonly m_totalProfile = new b2Profile();
+  /** Not in the C++: performance.now() when Step last called the world's Step (the GPU step's timer starts there). */
+  m_stepStart = 0;
+  /** The listener set while the WebGPU backend steps the world, and whether it records points. */
+  private m_gpuListener: b2ContactListener | null = null;
+  private m_gpuListenerRecords = false;
 
   /** `world`: use this world (a loaded scene) instead of a new one with gravity (0, -10). */
   constructor(world?: b2World) {
@@ -156,10 +183,19 @@ export class Test extends b2ContactListener {
       return;
     }
 
+    b2GetPointStates(s_state1, s_state2, oldManifold, manifold);
+
+    this.RecordPoints(contact, s_state2, null);
+  }
+
+  /**
+   * The contact's manifold points into m_points (PreSolve's loop), with their states (all persisting
+   * when null) and impulses: the step's from PostSolve, else the manifold's warm-starting ones.
+   */
+  private RecordPoints(contact: b2Contact, states: readonly b2PointState[] | null, impulse: b2ContactImpulse | null): void {
+    const manifold = contact.GetManifold();
     const fixtureA = contact.GetFixtureA();
     const fixtureB = contact.GetFixtureB();
-
-    b2GetPointStates(s_state1, s_state2, oldManifold, manifold);
 
     contact.GetWorldManifold(s_worldManifold);
 
@@ -169,14 +205,54 @@ export class Test extends b2ContactListener {
       cp.fixtureB = fixtureB;
       cp.position.Assign(s_worldManifold.points[i]);
       cp.normal.Assign(s_worldManifold.normal);
-      cp.state = s_state2[i];
-      cp.normalImpulse = manifold.points[i].normalImpulse;
-      cp.tangentImpulse = manifold.points[i].tangentImpulse;
+      cp.state = states === null ? b2PointState.b2_persistState : states[i];
+      cp.normalImpulse = impulse === null ? manifold.points[i].normalImpulse : impulse.normalImpulses[i];
+      cp.tangentImpulse = impulse === null ? manifold.points[i].tangentImpulse : impulse.tangentImpulses[i];
       ++this.m_pointCount;
     }
   }
 
   override PostSolve(contact: b2Contact, impulse: b2ContactImpulse): void {}
+
+  /**
+   * Not in the C++: why this test cannot run on the WebGPU backend, or null when it can. A test with
+   * its own PreSolve cannot (it must run inside the solver); a test that relies on what PreSolve
+   * records says so by overriding this.
+   */
+  GpuRefusal(): string | null {
+    if (this.PreSolve !== Test.prototype.PreSolve) {
+      return 'its PreSolve changes contacts between collision and the solve, and the GPU solves a step without calling back into JavaScript';
+    }
+    return null;
+  }
+
+  /**
+   * Not in the C++: whether the test reads m_points itself (not only to draw them), so that the
+   * WebGPU backend's listener records them from PostSolve whether they are drawn or not.
+   */
+  UsesContactPoints(): boolean {
+    return false;
+  }
+
+  /**
+   * Not in the C++: the contact listener for the WebGPU backend (see gpuContactListener), one
+   * object as long as `recordPoints` (the contact points are drawn or used) stays the same.
+   */
+  GpuContactListener(recordPoints: boolean): b2ContactListener {
+    if (this.m_gpuListener === null || this.m_gpuListenerRecords !== recordPoints) {
+      this.m_gpuListener = gpuContactListener(this, recordPoints);
+      this.m_gpuListenerRecords = recordPoints;
+    }
+    return this.m_gpuListener;
+  }
+
+  /**
+   * Not in the C++: the contact points of a solved contact from PostSolve, on the WebGPU backend,
+   * where PreSolve does not run. Drawn as persisting points with the step's impulses.
+   */
+  RecordSolvedPoints(contact: b2Contact, impulse: b2ContactImpulse): void {
+    this.RecordPoints(contact, null, impulse);
+  }
 
   MouseDown(p: b2Vec2): void {
     this.m_mouseWorld.Assign(p);
@@ -311,8 +387,12 @@ export class Test extends b2ContactListener {
     this.m_world.SetContinuousPhysics(settings.enableContinuous > 0);
     this.m_world.SetSubStepping(settings.enableSubStepping > 0);
 
-    this.m_pointCount = 0;
+    // On the WebGPU backend the points come with the synchronisation after the step (the testbed
+    // clears them before it), and this frame draws the last synchronised step's.
+    const backend = this.m_world.GetBackend();
+    if (backend === null) this.m_pointCount = 0;
 
+    this.m_stepStart = performance.now();
     this.m_world.Step(timeStep, settings.velocityIterations, settings.positionIterations);
 
     this.m_world.DrawDebugData();
@@ -327,7 +407,8 @@ export class Test extends b2ContactListener {
 
     if (settings.drawStats) {
       const bodyCount = this.m_world.GetBodyCount();
-      const contactCount = this.m_world.GetContactCount();
+      // The GPU keeps its contacts (the world's list is empty while it steps).
+      const contactCount = backend instanceof WebGPUBackend ? (backend.contactCounts?.contacts ?? 0) : this.m_world.GetContactCount();
       const jointCount = this.m_world.GetJointCount();
       this.m_debugDraw.DrawString(5, this.m_textLine, 'bodies/contacts/joints = %d/%d/%d', bodyCount, contactCount, jointCount);
       this.m_textLine += 15;
@@ -364,7 +445,10 @@ export class Test extends b2ContactListener {
       total.broadphase += p.broadphase;
     }
 
-    if (settings.drawProfile) {
+    if (settings.drawProfile && backend !== null) {
+      this.m_debugDraw.DrawString(5, this.m_textLine, 'profile: the JavaScript engine times its stages; the GPU step is one submission');
+      this.m_textLine += 15;
+    } else if (settings.drawProfile) {
       const p = this.m_world.GetProfile();
 
       const aveProfile = new b2Profile();

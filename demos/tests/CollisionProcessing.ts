@@ -121,6 +121,11 @@ export class CollisionProcessing extends Test {
     created(body6);
   }
 
+  /** The contact points decide what is destroyed (on the WebGPU backend they come from PostSolve). */
+  override UsesContactPoints(): boolean {
+    return true;
+  }
+
   override Step(settings: Settings): void {
     super.Step(settings);
 

@@ -423,6 +423,36 @@ describeGpu('WebGPUBackend: contact events after the step', (ctx) => {
     expect(await lastSync(await WebGPUBackend.create({ context: ctx }))).toEqual(engine);
   }, 300_000);
 
+  it('a body destroyed between a step and its synchronisation gets no PostSolve for that step, only its EndContact', async () => {
+    // Box 'b' rests on the ground from the start; after 30 synchronised steps, one more step, then
+    // 'b' is destroyed before the synchronisation (as a game destroys what a PostSolve reported).
+    const { world } = scene();
+    const listener = new Recorder();
+    world.SetContactListener(listener);
+    await world.SetBackend(await WebGPUBackend.create({ context: ctx }));
+    for (let step = 1; step <= 30; ++step) {
+      listener.step = step;
+      world.Step(DT, 8, 3);
+      await world.Synchronize();
+    }
+    listener.step = 31;
+    world.Step(DT, 8, 3);
+    let b: b2Body | null = null;
+    for (let body = world.GetBodyList(); body !== null; body = body.GetNext()) {
+      if (body.GetFixtureList()?.GetUserData() === 'b') b = body;
+    }
+    world.DestroyBody(b!);
+    await world.Synchronize();
+    listener.step = 32;
+    world.Step(DT, 8, 3);
+    await world.Synchronize();
+    await world.SetBackend(null);
+    const mentionsB = (pair: string) => pair.split('/').some((side) => side.startsWith('b#'));
+    expect(listener.postSolves.filter((p) => p.step === 30 && mentionsB(p.pair)).length).toBeGreaterThan(0);
+    expect(listener.postSolves.filter((p) => p.step >= 31 && mentionsB(p.pair))).toEqual([]);
+    expect(listener.events.filter((e) => e.step >= 31 && mentionsB(e.pair)).map((e) => e.kind)).toEqual(['end']);
+  }, 300_000);
+
   it('PostSolve skips contacts of sleeping islands, as b2Island::Report does: the calls stop when the boxes fall asleep', async () => {
     // The scene with sleeping on: per step, the PostSolve calls; the boxes come to rest and sleep.
     const perStep = async (backend: b2WorldBackend | null): Promise<number[]> => {

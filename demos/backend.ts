@@ -1,0 +1,252 @@
+/*
+ * The testbed's backend: the JavaScript engine or the WebGPU backend (webphysics/gpu) steps the
+ * running test's world, switched with the world's state carried over (b2World.SetBackend).
+ *
+ * On WebGPU a frame is: the test's Step (world.Step records and submits the GPU step; the test
+ * draws the world as the last synchronisation left it), then world.Synchronize(), which reads the
+ * step back once (positions, velocities, contact events) and delivers the events. The frame timer
+ * skips frames until that read is done, so the drawing is one step behind the GPU and the GPU is
+ * never more than one step ahead. The step time shown is from the test's world.Step to the end of
+ * that synchronisation.
+ *
+ * A test whose listener has its own PreSolve stays on JavaScript (Test.GpuRefusal says why); the
+ * others get a listener with only the callbacks they use (Test.GpuContactListener), since the
+ * backend logs and reads back only what a listener asks for.
+ */
+
+import { WebGPUBackend } from '../src-gpu/backend';
+import { requestGpu } from '../src-gpu/device';
+import type { GpuContext } from '../src-gpu/device';
+import { adapterName, StepTimes } from './framework/demo';
+import type { Settings } from './framework/settings';
+import type { Test } from './framework/test';
+
+export type BackendName = 'js' | 'webgpu';
+
+export const BACKEND_NAMES: readonly BackendName[] = ['js', 'webgpu'];
+
+export interface WebGpuStatus {
+  /** navigator.gpu exists. */
+  api: boolean;
+  /** requestAdapter() gave an adapter. */
+  adapter: boolean;
+  /** The adapter in words (vendor, architecture, description), when there is one. */
+  name: string | null;
+  message: string;
+}
+
+/** Whether this browser has WebGPU and an adapter, in words for the page. */
+export async function detectWebGpu(): Promise<WebGpuStatus> {
+  const gpu = (navigator as Navigator & { gpu?: GPU }).gpu;
+  if (gpu === undefined) {
+    return { api: false, adapter: false, name: null, message: 'This browser lacks WebGPU (no navigator.gpu). The JavaScript backend runs everything.' };
+  }
+  try {
+    const adapter = await gpu.requestAdapter();
+    if (adapter === null) {
+      return {
+        api: true,
+        adapter: false,
+        name: null,
+        message: 'This browser has WebGPU but no adapter (GPU access disabled or blocked). The JavaScript backend runs everything.',
+      };
+    }
+    const info = adapter.info;
+    const software = /swiftshader|llvmpipe|lavapipe|warp/i.test(`${info.vendor} ${info.architecture} ${info.description}`);
+    const name = adapterName({ vendor: info.vendor, architecture: info.architecture, description: info.description, software });
+    return { api: true, adapter: true, name, message: `This browser has WebGPU (adapter: ${name}). Choose the WebGPU backend above to step the tests on it.` };
+  } catch (error) {
+    return { api: true, adapter: false, name: null, message: `WebGPU adapter request failed: ${error instanceof Error ? error.message : String(error)}` };
+  }
+}
+
+export class TestbedBackend {
+  /** What the page asks for; a test the GPU refuses still runs on JavaScript (`refusal` says why). */
+  chosen: BackendName = 'js';
+  /** Why the current test runs on JavaScript although WebGPU is chosen; null otherwise. */
+  refusal: string | null = null;
+  /** The adapter that steps the world on WebGPU, in words. */
+  adapter: string | null = null;
+  /** Step times of the current test on its backend. */
+  readonly times = new StepTimes();
+  /** Frames skipped because a switch or a synchronisation was still running. */
+  skippedFrames = 0;
+  private context: Promise<GpuContext> | null = null;
+  private test: Test | null = null;
+  private backend: WebGPUBackend | null = null;
+  private pending: Promise<void> | null = null;
+
+  /** Called with what failed (a lost device, a synchronisation that threw); the test goes on on JavaScript. */
+  constructor(private readonly report: (error: unknown, what: string) => void) {}
+
+  /** What steps the current test. */
+  get active(): BackendName {
+    return this.backend !== null ? 'webgpu' : 'js';
+  }
+
+  /** A switch or a synchronisation is running: the frame must wait. */
+  get busy(): boolean {
+    return this.pending !== null;
+  }
+
+  /** Resolves once no switch or synchronisation is running. */
+  async idle(): Promise<void> {
+    while (this.pending !== null) await this.pending.catch(() => undefined);
+  }
+
+  /** Makes `run` the pending work until it settles. */
+  private track(run: Promise<void>): Promise<void> {
+    const tracked: Promise<void> = run.finally(() => {
+      if (this.pending === tracked) this.pending = null;
+    });
+    this.pending = tracked;
+    return tracked;
+  }
+
+  /** The last read-back's bytes and host time, on WebGPU. */
+  get readStats(): { bytes: number; unpackMs: number } | null {
+    return this.backend?.readStats ?? null;
+  }
+
+  /** Steps the current test on `name` from now on. */
+  async choose(name: BackendName, test: Test): Promise<void> {
+    this.chosen = name;
+    await this.apply(test);
+  }
+
+  /**
+   * Puts `test` (the current one, or a new or restarted one) on the chosen backend, after any
+   * switch or synchronisation already running. A test that replaces another gives the other's GPU
+   * resources back. Where no GPU work is involved (JavaScript chosen and running, or a test the GPU
+   * refuses) it is done at once, so the frame timer never waits for it.
+   */
+  apply(test: Test): Promise<void> {
+    if (this.pending === null && this.backend === null) {
+      const refusal = this.chosen === 'js' ? null : test.GpuRefusal();
+      if (this.chosen === 'js' || refusal !== null) {
+        this.adopt(test);
+        this.refusal = refusal;
+        return Promise.resolve();
+      }
+    }
+    const previous = this.pending ?? Promise.resolve();
+    return this.track(previous.catch(() => undefined).then(() => this.applyNow(test)));
+  }
+
+  /** Makes `test` the current one, its times started afresh. */
+  private adopt(test: Test): void {
+    this.test = test;
+    this.times.clear();
+  }
+
+  private async applyNow(test: Test): Promise<void> {
+    if (this.test !== test) {
+      const old = this.test;
+      const oldBackend = this.backend;
+      this.adopt(test);
+      this.backend = null;
+      // The old world is thrown away; handing it back frees its GPU buffers.
+      if (old !== null && oldBackend !== null) await old.m_world.SetBackend(null).catch(() => undefined);
+    }
+    this.refusal = null;
+    const world = test.m_world;
+    if (this.chosen === 'js') {
+      if (this.backend === null) return;
+      this.backend = null;
+      this.adopt(test);
+      try {
+        await world.SetBackend(null);
+      } finally {
+        world.SetContactListener(test);
+      }
+      return;
+    }
+    if (this.backend !== null) return;
+    const refusal = test.GpuRefusal();
+    if (refusal !== null) {
+      this.refusal = refusal;
+      return;
+    }
+    let backend: WebGPUBackend;
+    try {
+      backend = await WebGPUBackend.create({ context: await this.gpu() });
+      world.SetContactListener(test.GpuContactListener(test.UsesContactPoints()));
+      await world.SetBackend(backend);
+    } catch (error) {
+      world.SetContactListener(test);
+      this.refusal = error instanceof Error ? error.message : String(error);
+      throw error;
+    }
+    this.backend = backend;
+    this.adopt(test);
+  }
+
+  /** The device, requested once for the page (every test's backend shares it). */
+  private gpu(): Promise<GpuContext> {
+    if (this.context === null) {
+      this.context = requestGpu({
+        onLost: (info) => this.report(new Error(`the WebGPU device was lost (${info.reason}): ${info.message}`), 'WebGPU'),
+      });
+      this.context.then(
+        (ctx) => (this.adapter = adapterName(ctx.adapterInfo)),
+        () => (this.context = null),
+      );
+    }
+    return this.context;
+  }
+
+  /** Before the test's Step: on WebGPU, the listener that records contact points when they are drawn or used. */
+  beforeStep(test: Test, settings: Settings): void {
+    if (this.backend === null) return;
+    test.m_world.SetContactListener(test.GpuContactListener(settings.drawContactPoints !== 0 || test.UsesContactPoints()));
+  }
+
+  /**
+   * After the test's Step: on JavaScript, records the step's time (the world's profile); on WebGPU,
+   * starts the synchronisation, and the frames wait for it.
+   */
+  afterStep(test: Test): void {
+    if (this.backend === null) {
+      this.times.add(performance.now(), test.m_world.GetProfile().step);
+      return;
+    }
+    // The synchronisation's PostSolve calls record the points the next frame draws.
+    test.m_pointCount = 0;
+    const started = test.m_stepStart;
+    void this.track(
+      test.m_world.Synchronize().then(
+        () => {
+          const now = performance.now();
+          this.times.add(now, now - started);
+        },
+        (error) => this.fall(test, error),
+      ),
+    );
+  }
+
+  /** The GPU failed: say so and carry on with the JavaScript engine from the last synchronised state. */
+  private async fall(test: Test, error: unknown): Promise<void> {
+    this.report(error, 'The WebGPU backend failed; the test goes on with the JavaScript engine');
+    this.backend = null;
+    this.refusal = `the GPU failed: ${error instanceof Error ? error.message : String(error)}`;
+    this.adopt(test);
+    await test.m_world.SetBackend(null).catch(() => undefined);
+    test.m_world.SetContactListener(test);
+  }
+
+  /** The overlay's backend line. */
+  describe(now: number): string {
+    const ms = this.times.median(now);
+    const step = Number.isFinite(ms) ? `${ms.toFixed(2)} ms` : '–';
+    if (this.backend === null) {
+      return this.refusal === null
+        ? `backend: JavaScript engine, step ${step} (median, last second)`
+        : `backend: JavaScript engine (WebGPU refused this test), step ${step}`;
+    }
+    const read = this.backend.readStats;
+    return (
+      `backend: WebGPU, step + read-back ${step} (median, last second); ` +
+      `read-back ${read === null ? '–' : `${(read.bytes / 1024).toFixed(1)} KB, ${read.unpackMs.toFixed(2)} ms to unpack`} per frame`
+    );
+  }
+}
