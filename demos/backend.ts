@@ -234,19 +234,18 @@ export class TestbedBackend {
     test.m_world.SetContactListener(test);
   }
 
-  /** The overlay's backend line. */
-  describe(now: number): string {
+  /** The overlay's lines on the backend: which, its step time and, on WebGPU, the read-back. */
+  describe(now: number): string[] {
     const ms = this.times.median(now);
     const step = Number.isFinite(ms) ? `${ms.toFixed(2)} ms` : '–';
     if (this.backend === null) {
-      return this.refusal === null
-        ? `backend: JavaScript engine, step ${step} (median, last second)`
-        : `backend: JavaScript engine (WebGPU refused this test), step ${step}`;
+      const why = this.refusal === null ? '' : ' (WebGPU refused this test)';
+      return [`backend: JavaScript engine${why}, step ${step} (median, last second)`];
     }
     const read = this.backend.readStats;
-    return (
-      `backend: WebGPU, step + read-back ${step} (median, last second); ` +
-      `read-back ${read === null ? '–' : `${(read.bytes / 1024).toFixed(1)} KB, ${read.unpackMs.toFixed(2)} ms to unpack`} per frame`
-    );
+    return [
+      `backend: WebGPU, step + read-back ${step} (median, last second)`,
+      `read-back per frame: ${read === null ? '–' : `${(read.bytes / 1024).toFixed(1)} KB, ${read.unpackMs.toFixed(2)} ms to unpack`}`,
+    ];
   }
 }

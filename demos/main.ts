@@ -159,8 +159,10 @@ function simulationLoop(): void {
   }
   backends.afterStep(test);
   if (settings.drawStats) {
-    draw.DrawString(5, test.m_textLine, backends.describe(performance.now()));
-    test.m_textLine += 15;
+    for (const line of backends.describe(performance.now())) {
+      draw.DrawString(5, test.m_textLine, line);
+      test.m_textLine += 15;
+    }
   }
   test.DrawTitle(5, 15, entry.name);
   draw.EndFrame();
@@ -543,6 +545,7 @@ const hooks = {
   frame(n = 1): void {
     for (let i = 0; i < n; ++i) simulationLoop();
     publish(performance.now());
+    refreshBackend();
   },
   /** Run n frames, each after the previous one's synchronisation (WebGPU) is done. */
   async frameAsync(n = 1): Promise<void> {
@@ -552,6 +555,7 @@ const hooks = {
     }
     await backends.idle();
     publish(performance.now());
+    refreshBackend();
   },
   /** Choose the backend; resolves with what steps the current test. */
   setBackend: chooseBackend,

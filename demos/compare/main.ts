@@ -203,7 +203,7 @@ class Pane {
     this.statsLine.textContent =
       `step ${fmtMs(this.times.median(now))} ms (median, last second) · ${fmtCount(s.steps)} steps, ${(s.steps * DT).toFixed(1)} s simulated\n` +
       `${fmtCount(s.bodies)} bodies (${fmtCount(s.awake)} awake) · ${fmtCount(s.contacts)} contacts (${fmtCount(s.touching)} touching)` +
-      `${s.joints > 0 ? ` · ${fmtCount(s.joints)} joints` : ''}\n${pace}`;
+      `${s.joints > 0 ? ` · ${fmtCount(s.joints)} joint${s.joints === 1 ? '' : 's'}` : ''}\n${pace}`;
   }
 }
 

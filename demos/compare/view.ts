@@ -1,8 +1,9 @@
 /*
  * Drawing a pane from its transforms: every fixture of the scene's geometry placed by its body's
  * (x, y, cos, sin), batched into one path per colour and a few hundred shapes (one canvas call per
- * shape is slow past 10^4 bodies, and one huge path is slow in software rasterizers). Both panes
- * share one Camera. Colours are the Testbed's: static green, awake pink, asleep grey.
+ * shape is slow past 10^4 bodies, and one huge path is slow in software rasterizers); in large
+ * scenes, shapes a few pixels across are written into the pixels directly. Both panes share one
+ * Camera. Colours are the Testbed's: static green, awake pink, asleep grey.
  */
 
 import { GEOMETRY_CIRCLE, TRANSFORM_STRIDE } from './config';
@@ -38,18 +39,26 @@ export class Camera {
 }
 
 const STYLES = [
-  { fill: 'rgba(64,115,64,1)', stroke: 'rgb(128,230,128)' }, // static: b2Color(0.5, 0.9, 0.5)
-  { fill: 'rgba(115,89,89,1)', stroke: 'rgb(230,179,179)' }, // awake: b2Color(0.9, 0.7, 0.7)
-  { fill: 'rgba(77,77,77,1)', stroke: 'rgb(153,153,153)' }, // asleep: b2Color(0.6, 0.6, 0.6)
+  { fill: 'rgba(64,115,64,1)', stroke: 'rgb(128,230,128)', splat: [128, 230, 128] }, // static: b2Color(0.5, 0.9, 0.5)
+  { fill: 'rgba(115,89,89,1)', stroke: 'rgb(230,179,179)', splat: [230, 179, 179] }, // awake: b2Color(0.9, 0.7, 0.7)
+  { fill: 'rgba(77,77,77,1)', stroke: 'rgb(153,153,153)', splat: [153, 153, 153] }, // asleep: b2Color(0.6, 0.6, 0.6)
 ];
 /** Shapes per path. */
 const CHUNK = 256;
-/** Above this many fixtures in view, shapes are filled only (outlines would cover them anyway). */
+/** Above this many fixtures, shapes are filled only (outlines would cover them anyway). */
 const OUTLINE_LIMIT = 20000;
+/**
+ * Above this many fixtures, shapes smaller than SPLAT_PIXELS on screen are written straight into
+ * the pixels as their bounding squares: 10^5 tiny paths take a software canvas most of a second,
+ * and the page must stay responsive.
+ */
+const SPLAT_LIMIT = 5000;
+const SPLAT_PIXELS = 4;
 
 export class PaneView {
   readonly canvas: HTMLCanvasElement;
   private readonly ctx: CanvasRenderingContext2D;
+  private image: ImageData | null = null;
   width = 0;
   height = 0;
 
@@ -83,18 +92,83 @@ export class PaneView {
 
   /** Clears and draws every fixture of `geometry` in view at the bodies' transforms. */
   draw(geometry: SceneGeometry, transforms: Float32Array, awake: Uint8Array, camera: Camera): void {
-    this.clear();
     const ctx = this.ctx;
-    const dpr = this.canvas.width / this.width;
-    const s = camera.scale * dpr;
-    // World to device pixels: x' = s (x - cx) + W/2, y' = -s (y - cy) + H/2.
-    const ox = this.canvas.width / 2 - s * camera.x;
-    const oy = this.canvas.height / 2 + s * camera.y;
-    const halfW = this.width / 2 / camera.scale;
-    const halfH = this.height / 2 / camera.scale;
+    const W = this.canvas.width;
+    const H = this.canvas.height;
+    const s = camera.scale * (W / this.width);
+    // World to device pixels: x' = s x + ox, y' = oy - s y.
+    const ox = W / 2 - s * camera.x;
+    const oy = H / 2 + s * camera.y;
     const { fixtureBody, fixtureKind, fixtureStart, fixtureCount, points, bodyStatic } = geometry;
     const n = fixtureBody.length;
     const outline = n <= OUTLINE_LIMIT;
+    const splat = n > SPLAT_LIMIT;
+    let pixels: Uint8ClampedArray | null = null;
+    if (splat) {
+      if (this.image === null || this.image.width !== W || this.image.height !== H) this.image = ctx.createImageData(W, H);
+      pixels = this.image.data;
+      new Uint32Array(pixels.buffer).fill(0);
+    }
+    // The screen box of fixture f, in device pixels: [x0, y0, x1, y1].
+    const box = [0, 0, 0, 0];
+    const screenBox = (f: number, x: number, y: number, c: number, sn: number): void => {
+      const at = fixtureStart[f];
+      if (fixtureKind[f] === GEOMETRY_CIRCLE) {
+        const px = ox + s * (x + c * points[at] - sn * points[at + 1]);
+        const py = oy - s * (y + sn * points[at] + c * points[at + 1]);
+        const r = s * points[at + 2];
+        box[0] = px - r;
+        box[1] = py - r;
+        box[2] = px + r;
+        box[3] = py + r;
+        return;
+      }
+      box[0] = box[1] = Infinity;
+      box[2] = box[3] = -Infinity;
+      for (let i = 0; i < fixtureCount[f]; ++i) {
+        const lx = points[at + 2 * i];
+        const ly = points[at + 2 * i + 1];
+        const px = ox + s * (x + c * lx - sn * ly);
+        const py = oy - s * (y + sn * lx + c * ly);
+        box[0] = Math.min(box[0], px);
+        box[1] = Math.min(box[1], py);
+        box[2] = Math.max(box[2], px);
+        box[3] = Math.max(box[3], py);
+      }
+    };
+    const small = () => box[2] - box[0] < SPLAT_PIXELS && box[3] - box[1] < SPLAT_PIXELS;
+    const styleOf = (body: number) => (bodyStatic[body] === 1 ? 0 : awake[body] === 1 ? 1 : 2);
+
+    if (pixels !== null) {
+      for (let f = 0; f < n; ++f) {
+        const body = fixtureBody[f];
+        const t = TRANSFORM_STRIDE * body;
+        if (!(transforms[t] === transforms[t])) continue; // NaN: no body there
+        screenBox(f, transforms[t], transforms[t + 1], transforms[t + 2], transforms[t + 3]);
+        if (!small() || box[2] < 0 || box[0] >= W || box[3] < 0 || box[1] >= H) continue;
+        const [r, g, b] = STYLES[styleOf(body)].splat;
+        const x0 = Math.max(0, Math.floor(box[0]));
+        const x1 = Math.min(W - 1, Math.max(x0, Math.ceil(box[2]) - 1));
+        const y0 = Math.max(0, Math.floor(box[1]));
+        const y1 = Math.min(H - 1, Math.max(y0, Math.ceil(box[3]) - 1));
+        for (let py = y0; py <= y1; ++py) {
+          for (let px = x0; px <= x1; ++px) {
+            const k = 4 * (py * W + px);
+            pixels[k] = r;
+            pixels[k + 1] = g;
+            pixels[k + 2] = b;
+            pixels[k + 3] = 255;
+          }
+        }
+      }
+      // Transparent pixels are the black background once on screen (putImageData writes them as they are).
+      for (let k = 3; k < pixels.length; k += 4) if (pixels[k] === 0) pixels[k] = 255;
+      ctx.putImageData(this.image!, 0, 0);
+    } else {
+      this.clear();
+    }
+
+    ctx.setTransform(1, 0, 0, 1, 0, 0);
     ctx.lineWidth = 1;
     for (let style = 0; style < STYLES.length; ++style) {
       ctx.fillStyle = STYLES[style].fill;
@@ -103,47 +177,30 @@ export class PaneView {
       ctx.beginPath();
       for (let f = 0; f < n; ++f) {
         const body = fixtureBody[f];
-        const mine = bodyStatic[body] === 1 ? 0 : awake[body] === 1 ? 1 : 2;
-        if (mine !== style) continue;
+        if (styleOf(body) !== style) continue;
         const t = TRANSFORM_STRIDE * body;
         const x = transforms[t];
         const y = transforms[t + 1];
         const c = transforms[t + 2];
         const sn = transforms[t + 3];
-        if (!(x === x)) continue; // NaN: no body there
+        if (!(x === x)) continue;
+        screenBox(f, x, y, c, sn);
+        if (box[2] < 0 || box[0] >= W || box[3] < 0 || box[1] >= H) continue;
+        if (pixels !== null && small()) continue;
         const at = fixtureStart[f];
         if (fixtureKind[f] === GEOMETRY_CIRCLE) {
-          const px = x + c * points[at] - sn * points[at + 1];
-          const py = y + sn * points[at] + c * points[at + 1];
-          const r = points[at + 2];
-          if (Math.abs(px - camera.x) > halfW + r || Math.abs(py - camera.y) > halfH + r) continue;
-          const sx = ox + s * px;
-          const sy = oy - s * py;
-          ctx.moveTo(sx + s * r, sy);
-          ctx.arc(sx, sy, s * r, 0, 2 * Math.PI);
+          const sx = 0.5 * (box[0] + box[2]);
+          const sy = 0.5 * (box[1] + box[3]);
+          const r = 0.5 * (box[2] - box[0]);
+          ctx.moveTo(sx + r, sy);
+          ctx.arc(sx, sy, r, 0, 2 * Math.PI);
           if (outline) {
             // The radius line shows the rotation, as b2Draw::DrawSolidCircle's axis does.
             ctx.moveTo(sx, sy);
-            ctx.lineTo(sx + s * r * c, sy - s * r * sn);
+            ctx.lineTo(sx + r * c, sy - r * sn);
           }
         } else {
-          const count = fixtureCount[f];
-          let minX = Infinity;
-          let maxX = -Infinity;
-          let minY = Infinity;
-          let maxY = -Infinity;
-          for (let i = 0; i < count; ++i) {
-            const lx = points[at + 2 * i];
-            const ly = points[at + 2 * i + 1];
-            const px = x + c * lx - sn * ly;
-            const py = y + sn * lx + c * ly;
-            minX = Math.min(minX, px);
-            maxX = Math.max(maxX, px);
-            minY = Math.min(minY, py);
-            maxY = Math.max(maxY, py);
-          }
-          if (maxX < camera.x - halfW || minX > camera.x + halfW || maxY < camera.y - halfH || minY > camera.y + halfH) continue;
-          for (let i = 0; i < count; ++i) {
+          for (let i = 0; i < fixtureCount[f]; ++i) {
             const lx = points[at + 2 * i];
             const ly = points[at + 2 * i + 1];
             const sx = ox + s * (x + c * lx - sn * ly);

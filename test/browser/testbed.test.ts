@@ -60,19 +60,39 @@ describe('the testbed page', () => {
     expect(listed.filter((n) => !n.startsWith('Benchmark: '))).toHaveLength(45);
   });
 
-  it('says whether the browser has WebGPU and lists the WebGPU backend as coming, disabled', async () => {
+  it('says whether the browser has WebGPU and offers the WebGPU backend only where it has an adapter', async () => {
     const status = await page.evaluate(async () => {
       const s = await window.testbed.webgpu;
       const option = document.querySelector<HTMLOptionElement>('#backend option[value="webgpu"]')!;
       return { ...s, text: document.getElementById('webgpu-status')!.textContent, disabled: option.disabled, label: option.textContent };
     });
     // This browser runs with --disable-gpu: navigator.gpu may exist, but normally there is no
-    // adapter (webgpu.test.ts checks the browser that has one). The page says which it found.
+    // adapter (testbedWebgpu.test.ts checks the browser that has one). The page says which it found.
     if (!status.api) expect(status.text).toMatch(/^This browser lacks WebGPU/);
     else if (!status.adapter) expect(status.text).toMatch(/^This browser has WebGPU but no adapter/);
     else expect(status.text).toMatch(/^This browser has WebGPU \(adapter/);
-    expect(status.disabled).toBe(true);
-    expect(status.label).toBe('WebGPU (coming)');
+    expect(status.disabled).toBe(!status.adapter);
+    expect(status.label).toBe('WebGPU');
+  });
+
+  it('?backend=webgpu without an adapter says so and runs the test on JavaScript', async () => {
+    const opened = await openTestbed(chromium.browser, testbed.url, '?test=Pyramid&backend=webgpu');
+    try {
+      const state = await opened.page.evaluate(async () => {
+        const status = await window.testbed.webgpu;
+        const before = window.testbed.state().stepCount;
+        window.testbed.frame(3);
+        return { status, backend: window.testbed.backend(), steps: window.testbed.state().stepCount - before, message: document.getElementById('message')!.textContent };
+      });
+      // Launched with --disable-gpu: no adapter (testbedWebgpu.test.ts runs the browser that has one).
+      expect(state.status.adapter).toBe(false);
+      expect(state.backend.active).toBe('js');
+      expect(state.message).toMatch(/^WebGPU is not available here \(.*\); the JavaScript engine runs\.$/);
+      expect(state.steps).toBe(3);
+      expect(opened.errors).toEqual([]);
+    } finally {
+      await opened.page.close();
+    }
   });
 });
 
