@@ -141,12 +141,11 @@ export class TestbedBackend {
 
   private async applyNow(test: Test): Promise<void> {
     if (this.test !== test) {
-      const old = this.test;
       const oldBackend = this.backend;
       this.adopt(test);
       this.backend = null;
-      // The old world is thrown away; handing it back frees its GPU buffers.
-      if (old !== null && oldBackend !== null) await old.m_world.SetBackend(null).catch(() => undefined);
+      // The old world is thrown away: its GPU buffers go, without a read-back.
+      if (oldBackend !== null) await oldBackend.destroy().catch(() => undefined);
     }
     this.refusal = null;
     const world = test.m_world;

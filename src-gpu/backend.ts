@@ -137,6 +137,7 @@ export class WebGPUBackend implements b2WorldBackend {
   private stepsSinceRead = 0;
   private failure: unknown = null;
   private detaching = false;
+  private destroyed = false;
   private reading: Promise<unknown> = Promise.resolve();
   /** Maps made by synchronisations (for tests: one per synchronisation that had steps to read). */
   readbacks = 0;
@@ -195,7 +196,28 @@ export class WebGPUBackend implements b2WorldBackend {
     });
   }
 
+  /**
+   * Releases the GPU resources of the attached world without handing it back, for a world the
+   * application throws away (SetBackend(null) would read everything back and rebuild the engine's
+   * contacts first). Waits for the steps in flight. The backend is finished: its methods throw
+   * from now on, the world's Step and Synchronize with them; world.SetBackend(null) rejects, and
+   * leaves the world on the JavaScript engine with its last synchronised state and no contacts.
+   */
+  async destroy(): Promise<void> {
+    const { stepper, events } = this.attached('destroy');
+    await this.serialised(async () => {
+      await this.submitted();
+      await this.lastStep?.catch(() => undefined);
+    });
+    this.destroyed = true;
+    events.destroy();
+    stepper.destroy();
+    this.stepperNow = null;
+    this.events = null;
+  }
+
   Attach(world: b2World, engine: b2WorldBackendEngine): void {
+    if (this.destroyed) throw new Error('WebGPUBackend.Attach: this backend was destroyed (backend.destroy()); create another');
     if (this.world !== null) throw new Error('WebGPUBackend: already attached to a world; one backend steps one world');
     this.refuseUnsupported(world, engine);
     const stepper = new GpuStepper(this.ctx, world, this.stepperOptions);
@@ -236,6 +258,7 @@ export class WebGPUBackend implements b2WorldBackend {
   }
 
   private attached(method: string): { world: b2World; engine: b2WorldBackendEngine; stepper: GpuStepper; events: GpuContactEvents } {
+    if (this.destroyed) throw new Error(`WebGPUBackend.${method}: this backend was destroyed (backend.destroy()); its world can no longer be stepped on it`);
     if (this.world === null || this.engine === null || this.stepperNow === null || this.events === null) {
       throw new Error(`WebGPUBackend.${method}: not attached to a world (world.SetBackend(backend) attaches it)`);
     }

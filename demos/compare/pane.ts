@@ -144,6 +144,11 @@ export class GpuPane {
     return new GpuPane(scene, backend);
   }
 
+  /** Frees the scene's GPU buffers; the pane cannot step afterwards. */
+  destroy(): Promise<void> {
+    return this.backend.destroy();
+  }
+
   get adapter(): GpuAdapterSummary {
     return this.backend.ctx.adapterInfo;
   }

@@ -389,4 +389,68 @@ describeGpu('WebGPUBackend: the world API on the GPU', (ctx) => {
       boxes.forEach((b, i) => expect(Math.abs(b.GetPosition().y - positions[i].y)).toBeLessThan(1e-3));
     }
   }, 300_000);
+
+  it('readTransforms: one map copies every body slot\'s transform and awake flag, bit for bit what Synchronize gives the getters; empty slots are NaN', async () => {
+    const { world, boxes } = dropScene();
+    const backend = await WebGPUBackend.create({ context: ctx });
+    await world.SetBackend(backend);
+    for (let i = 0; i < 30; ++i) {
+      world.Step(DT, 8, 3);
+      if (i % 4 === 3) await backend.submitted();
+    }
+    await world.Synchronize();
+    world.DestroyBody(boxes[2]);
+    world.Step(DT, 8, 3);
+    // Each slot's x, y, cos, sin, read in float64 as Synchronize reads them.
+    const slots = backend.stepper!.mirror.bodySlotCount;
+    const out = new Float64Array(4 * slots);
+    const awake = new Uint8Array(slots);
+    let maps = 0;
+    maps = await countMaps(ctx, async () => {
+      expect(await backend.readTransforms(out, awake)).toBe(slots);
+    });
+    expect(maps).toBe(2); // the step's own counts, and the transforms
+    await world.Synchronize();
+    const live = [boxes[0], boxes[1], boxes[3], boxes[4]];
+    for (const b of live) {
+      const slot = backend.bodySlot(b);
+      const xf = b.GetTransform();
+      expect([out[4 * slot], out[4 * slot + 1], out[4 * slot + 2], out[4 * slot + 3]]).toEqual([xf.p.x, xf.p.y, xf.q.c, xf.q.s]);
+      expect(awake[slot]).toBe(b.IsAwake() ? 1 : 0);
+    }
+    // The destroyed box's slot holds no body until a new body takes it.
+    const freed = [...Array(slots).keys()].filter((slot) => backend.stepper!.mirror.bodyAt(slot) === null);
+    expect(freed).toHaveLength(1);
+    expect(Number.isNaN(out[4 * freed[0]])).toBe(true);
+    expect(backend.bodySlot(boxes[2])).toBe(-1);
+    await expect(backend.readTransforms(new Float32Array(4 * slots - 1))).rejects.toThrow(
+      `readTransforms: out holds ${4 * slots - 1} numbers; this world needs 4 per body slot, ${4 * slots}`,
+    );
+    await expect(backend.readTransforms(out, new Uint8Array(1))).rejects.toThrow(`readTransforms: awake holds 1 flags; this world needs one per body slot, ${slots}`);
+    // A rejected read loses nothing: the world steps and reads on.
+    world.Step(DT, 8, 3);
+    await backend.readTransforms(out);
+    expect(backend.contactCounts).toEqual({ contacts: 4, touching: 4 });
+    await world.SetBackend(null);
+  }, 300_000);
+
+  it('destroy() frees a discarded world\'s GPU buffers without reading it back; the backend is finished and says so', async () => {
+    const { world } = dropScene();
+    const backend = await WebGPUBackend.create({ context: ctx });
+    await world.SetBackend(backend);
+    for (let i = 0; i < 4; ++i) world.Step(DT, 8, 3);
+    await backend.submitted();
+    world.Step(DT, 8, 3);
+    const readbacks = backend.readbacks;
+    const maps = await countMaps(ctx, () => backend.destroy());
+    // At most the last step's own count read (in flight when destroy() began); nothing of the world.
+    expect(maps).toBeLessThanOrEqual(1);
+    expect(backend.readbacks).toBe(readbacks);
+    expect(() => world.Step(DT, 8, 3)).toThrow('WebGPUBackend.Step: this backend was destroyed (backend.destroy()); its world can no longer be stepped on it');
+    await expect(new b2World(new b2Vec2(0, -10)).SetBackend(backend)).rejects.toThrow('WebGPUBackend.Attach: this backend was destroyed');
+    await expect(world.SetBackend(null)).rejects.toThrow('WebGPUBackend.Detach: this backend was destroyed');
+    // The world is on the JavaScript engine again and steps.
+    expect(world.GetBackend()).toBeNull();
+    world.Step(DT, 8, 3);
+  }, 300_000);
 });
