@@ -6,7 +6,7 @@
  * external), so it runs where only Node and .device/node_modules exist:
  *
  *   node dist/bench-gpu-step.mjs [--sizes 1e3,1e4,1e5,1e6] [--scenes pyramids,rain] [--steps 10]
- *        [--js-max 1e5] [--js-budget 3] [--quick] [--out DIR]
+ *        [--js-max 1e5] [--js-budget 3] [--validation] [--quick] [--out DIR]
  *
  * On a lent H100 (kind nvidia-h100-x1; `.device` from `bash ../shared/gpu/prepare.sh`): carry
  * `.device` and `dist/bench-gpu-step.mjs`, run
@@ -22,7 +22,8 @@
  *             sideways).
  * Both engines: 1/60 s, 8 velocity / 3 position iterations, sleeping and continuous physics off
  * (resting pyramids would fall asleep and cost nothing: this measures the full step's work).
- * GPU: a device with Dawn's validation off (requestGpu skipValidation) and timestamp queries when
+ * GPU: a device with Dawn's validation off (requestGpu skipValidation; --validation keeps it on, as
+ * browsers run it) and timestamp queries when
  * the adapter has them. Each world gets a GpuStepper; after GPU_WARMUP awaited steps (on the H100
  * the first five steps of 10^6 pyramids take 36 ms of device time, then 14.7: a warm-up of 3
  * put those slow steps into the medians), `--steps` awaited
@@ -54,7 +55,8 @@ import { b2World } from '../src/dynamics/b2World';
 import { requestGpu } from '../src-gpu/device';
 import type { GpuContext } from '../src-gpu/device';
 import { GpuStepper } from '../src-gpu/stepper';
-import { box, circle, fmt, logLogChart, median, rng } from './gpu-support';
+import { box, circle, crossover, fmt, logLogChart, median, rng, sizeText } from './gpu-support';
+import type { Crossover } from './gpu-support';
 
 const DT = 1 / 60;
 const VELOCITY_ITERATIONS = 8;
@@ -261,49 +263,11 @@ interface Row {
   jsError: string | null;
 }
 
-interface Crossover {
-  scene: string;
-  /** Smallest measured size where the awaited GPU step beats the engine, or null. */
-  measured: number | null;
-  /** Where JS/GPU crosses 1, interpolated in log-log between two measured sizes, or null. */
-  interpolated: number | null;
-  text: string;
-}
-
-function sizeText(n: number): string {
-  return n.toExponential(2).replace(/\.?0+e/, 'e').replace('e+', 'e');
-}
-
-function crossover(scene: string, rows: Row[]): Crossover {
-  const pts = rows
-    .filter((r) => r.scene === scene && r.gpu && r.js && Number.isFinite(r.gpu.wallMs) && Number.isFinite(r.js.ms))
-    .map((r) => ({ n: r.bodies, ratio: r.js!.ms / r.gpu!.wallMs }))
-    .sort((a, b) => a.n - b.n);
-  if (pts.length === 0) return { scene, measured: null, interpolated: null, text: 'no size measured on both' };
-  const first = pts.findIndex((p) => p.ratio > 1);
-  if (first < 0) {
-    const top = pts[pts.length - 1];
-    return { scene, measured: null, interpolated: null, text: `not reached up to ${sizeText(top.n)} bodies (JS/GPU ${fmt(top.ratio)} there)` };
-  }
-  const measured = pts[first].n;
-  if (first === 0) return { scene, measured, interpolated: null, text: `GPU faster at every measured size (from ${sizeText(measured)} bodies)` };
-  const a = pts[first - 1];
-  const b = pts[first];
-  const t = -Math.log(a.ratio) / (Math.log(b.ratio) - Math.log(a.ratio));
-  const interpolated = Math.exp(Math.log(a.n) + t * (Math.log(b.n) - Math.log(a.n)));
-  return {
-    scene,
-    measured,
-    interpolated,
-    text: `GPU faster from ${sizeText(measured)} bodies (measured); JS/GPU = 1 at about ${sizeText(interpolated)} bodies (interpolated in log-log between ${sizeText(a.n)} and ${sizeText(b.n)})`,
-  };
-}
-
 function markdown(rows: Row[], crossovers: Crossover[], meta: Record<string, unknown>): string {
   const lines = [
     '# Full step on the GPU (broad phase + narrow phase + solver) vs the JavaScript engine',
     '',
-    `Device: ${meta.device}; timestamps: ${meta.timestamps}; Dawn validation off. Node ${meta.node}. ${meta.date}.`,
+    `Device: ${meta.device}; timestamps: ${meta.timestamps}; Dawn validation ${meta.skipValidation ? 'off' : 'on'}. Node ${meta.node}. ${meta.date}.`,
     `1/60 s, ${VELOCITY_ITERATIONS} velocity / ${POSITION_ITERATIONS} position iterations, sleeping and continuous physics off`,
     `in both (resting pyramids would fall asleep and cost nothing: this measures the full step's work). ${GPU_WARMUP} warm-up steps on the GPU, ${WARMUP} in JS, then medians of ${meta.steps} steps`,
     `(JS: at most ${meta.steps} steps or ${meta.jsBudget} s). Milliseconds per step.`,
@@ -376,6 +340,7 @@ async function main(): Promise<number> {
       steps: { type: 'string' },
       'js-max': { type: 'string' },
       'js-budget': { type: 'string' },
+      validation: { type: 'boolean' },
       quick: { type: 'boolean' },
       out: { type: 'string' },
       help: { type: 'boolean', short: 'h' },
@@ -383,7 +348,7 @@ async function main(): Promise<number> {
   });
   if (values.help) {
     process.stdout.write(
-      'node dist/bench-gpu-step.mjs [--sizes 1e3,1e4,1e5,1e6] [--scenes pyramids,rain] [--steps 10] [--js-max 1e5] [--js-budget 3] [--quick] [--out DIR]\n',
+      'node dist/bench-gpu-step.mjs [--sizes 1e3,1e4,1e5,1e6] [--scenes pyramids,rain] [--steps 10] [--js-max 1e5] [--js-budget 3] [--validation] [--quick] [--out DIR]\n',
     );
     return 0;
   }
@@ -399,7 +364,7 @@ async function main(): Promise<number> {
   let finished = false;
   const ctx = await requestGpu({
     dawnOptions: ['disable-dawn-features=timestamp_quantization'],
-    skipValidation: true,
+    skipValidation: values.validation !== true,
     onLost: (info) => {
       if (!finished) console.error('device lost', info);
     },
@@ -438,12 +403,17 @@ async function main(): Promise<number> {
       );
     }
   }
-  const crossovers = scenes.map((s) => crossover(s, rows));
+  const crossovers = scenes.map((s) =>
+    crossover(
+      s,
+      rows.filter((r) => r.scene === s && r.gpu && r.js).map((r) => ({ n: r.bodies, jsMs: r.js!.ms, gpuMs: r.gpu!.wallMs })),
+    ),
+  );
   const meta = {
     device: deviceName,
     adapter: a,
     timestamps: ctx.timestamps,
-    skipValidation: true,
+    skipValidation: values.validation !== true,
     node: process.version,
     date: new Date().toISOString(),
     dt: DT,

@@ -47,6 +47,47 @@ export function circle(r: number): b2CircleShape {
   return s;
 }
 
+/** Where the GPU overtakes the JavaScript engine in one scene. */
+export interface Crossover {
+  scene: string;
+  /** Smallest measured size where the GPU step beats the engine, or null. */
+  measured: number | null;
+  /** Where JS/GPU crosses 1, interpolated in log-log between two measured sizes, or null. */
+  interpolated: number | null;
+  text: string;
+}
+
+/** 12000 -> '1.2e4'. */
+export function sizeText(n: number): string {
+  return n.toExponential(2).replace(/\.?0+e/, 'e').replace('e+', 'e');
+}
+
+/** The crossover of one scene from its sizes measured on both (milliseconds per step). */
+export function crossover(scene: string, measured: { n: number; jsMs: number; gpuMs: number }[]): Crossover {
+  const pts = measured
+    .filter((m) => Number.isFinite(m.jsMs) && Number.isFinite(m.gpuMs))
+    .map((m) => ({ n: m.n, ratio: m.jsMs / m.gpuMs }))
+    .sort((a, b) => a.n - b.n);
+  if (pts.length === 0) return { scene, measured: null, interpolated: null, text: 'no size measured on both' };
+  const first = pts.findIndex((p) => p.ratio > 1);
+  if (first < 0) {
+    const top = pts[pts.length - 1];
+    return { scene, measured: null, interpolated: null, text: `not reached up to ${sizeText(top.n)} bodies (JS/GPU ${fmt(top.ratio)} there)` };
+  }
+  const at = pts[first].n;
+  if (first === 0) return { scene, measured: at, interpolated: null, text: `GPU faster at every measured size (from ${sizeText(at)} bodies)` };
+  const a = pts[first - 1];
+  const b = pts[first];
+  const t = -Math.log(a.ratio) / (Math.log(b.ratio) - Math.log(a.ratio));
+  const interpolated = Math.exp(Math.log(a.n) + t * (Math.log(b.n) - Math.log(a.n)));
+  return {
+    scene,
+    measured: at,
+    interpolated,
+    text: `GPU faster from ${sizeText(at)} bodies (measured); JS/GPU = 1 at about ${sizeText(interpolated)} bodies (interpolated in log-log between ${sizeText(a.n)} and ${sizeText(b.n)})`,
+  };
+}
+
 /** One line per (group, series) of a log-log chart: its label, value and dash pattern. */
 export interface ChartSeries<R> {
   label: string;

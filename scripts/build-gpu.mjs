@@ -7,7 +7,7 @@ import path from 'node:path';
 
 const outDir = process.argv[2] ?? 'dist';
 
-for (const name of ['broadphase', 'narrowphase', 'step']) {
+for (const name of ['broadphase', 'narrowphase', 'step', 'compare']) {
   await build({
     entryPoints: [`bench/gpu-${name}.ts`],
     bundle: true,

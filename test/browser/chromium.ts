@@ -1,67 +1,25 @@
 /*
  * Headless Chromium for the browser tests, through puppeteer-core (which never downloads a
- * browser): the executable is $CHROME_PATH, else Debian's /usr/bin/chromium (installed by
- * `npm run setup`), else another usual location. A missing browser is an error that says how to
- * install one: the tests never skip silently.
+ * browser): the executable and its flags are scripts/chromium.mjs's (shared with
+ * bench/compare-browser.mjs). A missing browser is an error that says how to install one: the
+ * tests never skip silently.
  */
 
-import { existsSync, mkdirSync, mkdtempSync, rmSync } from 'node:fs';
+import { mkdirSync, mkdtempSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import puppeteer from 'puppeteer-core';
 import type { Browser, Page } from 'puppeteer-core';
 import { buildDemos } from '../../scripts/build-demos.mjs';
+import { chromiumArgs, chromiumPath } from '../../scripts/chromium.mjs';
+
+export { chromiumArgs, chromiumPath };
 import { startServer } from '../../scripts/serve.mjs';
 
 export const repoRoot = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
 /** Screenshots and other files the browser tests leave for people to look at (gitignored). */
 export const artifactsDir = path.join(repoRoot, 'test-artifacts', 'browser');
-
-const kCandidates = [
-  '/usr/bin/chromium',
-  '/usr/bin/chromium-browser',
-  '/usr/bin/google-chrome-stable',
-  '/usr/bin/google-chrome',
-  '/Applications/Google Chrome.app/Contents/MacOS/Google Chrome',
-  '/Applications/Chromium.app/Contents/MacOS/Chromium',
-];
-
-/** The Chromium or Chrome executable to test with; throws, saying how to get one, when there is none. */
-export function chromiumPath(): string {
-  const fromEnv = process.env.CHROME_PATH;
-  if (fromEnv !== undefined && fromEnv !== '') {
-    if (existsSync(fromEnv)) return fromEnv;
-    throw new Error(`CHROME_PATH is ${fromEnv}, which does not exist. Point it at a Chromium or Chrome executable.`);
-  }
-  const found = kCandidates.find((candidate) => existsSync(candidate));
-  if (found !== undefined) return found;
-  throw new Error(
-    'The browser tests need Chromium and found none (looked at $CHROME_PATH, ' +
-      kCandidates.join(', ') +
-      '). On Debian or Ubuntu run `npm run setup` (it runs `apt-get install chromium`); elsewhere ' +
-      'install Chromium or Google Chrome and set CHROME_PATH to its executable.',
-  );
-}
-
-/** The flags that make Chromium run offline, without a display, in a fresh profile. */
-export function chromiumArgs({ webgpu = false } = {}): string[] {
-  const args = [
-    '--headless',
-    '--no-sandbox',
-    '--disable-background-networking',
-    '--disable-component-update',
-    '--disable-sync',
-    '--no-first-run',
-    '--hide-scrollbars',
-    '--disable-dev-shm-usage', // containers often have a small /dev/shm
-    '--window-size=1000,700',
-  ];
-  // WebGPU on SwiftShader (the CPU Vulkan driver Chromium ships) needs the GPU process.
-  if (webgpu) args.push('--enable-unsafe-webgpu', '--enable-features=Vulkan', '--use-webgpu-adapter=swiftshader');
-  else args.push('--disable-gpu');
-  return args;
-}
 
 export interface LaunchedBrowser {
   browser: Browser;
