@@ -1,4 +1,5 @@
-// npm start: build the testbed (demos/) with esbuild and serve it on localhost.
+// npm start: build the demo pages (demos/: the testbed and the comparison page) with esbuild and
+// serve them on localhost.
 //
 //   npm start                      # http://localhost:8080/ (the next free port if 8080 is taken)
 //   npm start -- --port 3000       # or PORT=3000 npm start; a port given explicitly must be free
@@ -35,10 +36,10 @@ const started = Date.now();
 try {
   await buildDemos(defaultOutDir, { watch });
 } catch (error) {
-  console.error(`npm start: the testbed did not build: ${error.message}`);
+  console.error(`npm start: the demo pages did not build: ${error.message}`);
   process.exit(1);
 }
-console.log(`Built the testbed into ${path.relative(repoRoot, defaultOutDir)} in ${Date.now() - started} ms${watch ? ' (watching for changes)' : ''}`);
+console.log(`Built the demo pages into ${path.relative(repoRoot, defaultOutDir)} in ${Date.now() - started} ms${watch ? ' (watching for changes)' : ''}`);
 
 let served = null;
 for (let candidate = firstPort; served === null; ++candidate) {
@@ -54,5 +55,5 @@ for (let candidate = firstPort; served === null; ++candidate) {
     process.exit(1);
   }
 }
-console.log(`WebPhysics testbed: ${served.url}   (Ctrl+C to stop)`);
+console.log(`WebPhysics testbed: ${served.url}   side by side: ${served.url}compare.html   (Ctrl+C to stop)`);
 for (const signal of ['SIGINT', 'SIGTERM']) process.on(signal, () => served.close().then(() => process.exit(0)));
