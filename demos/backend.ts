@@ -233,7 +233,7 @@ export class TestbedBackend {
     test.m_world.SetContactListener(test);
   }
 
-  /** The overlay's lines on the backend: which, its step time and, on WebGPU, the read-back. */
+  /** The overlay's lines on the backend: which, its step time and, on WebGPU, the adapter and the read-back. */
   describe(now: number): string[] {
     const ms = this.times.median(now);
     const step = Number.isFinite(ms) ? `${ms.toFixed(2)} ms` : '–';
@@ -244,6 +244,7 @@ export class TestbedBackend {
     const read = this.backend.readStats;
     return [
       `backend: WebGPU, step + read-back ${step} (median, last second)`,
+      `adapter: ${this.adapter}`,
       `read-back per frame: ${read === null ? '–' : `${(read.bytes / 1024).toFixed(1)} KB, ${read.unpackMs.toFixed(2)} ms to unpack`}`,
     ];
   }

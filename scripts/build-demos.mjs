@@ -57,7 +57,7 @@ const kEntries = {
   compare: path.join(repoRoot, 'demos', 'compare', 'main.ts'),
   'compare-worker': path.join(repoRoot, 'demos', 'compare', 'worker.ts'),
 };
-const kStatic = ['index.html', 'testbed.css', 'compare.html', 'compare.css'];
+const kStatic = ['index.html', 'page.css', 'testbed.css', 'compare.html', 'compare.css'];
 
 function options(outDir) {
   return {
