@@ -6,13 +6,17 @@
  * In:  the world (Attach: a GpuStepper is built from it, its contacts and impulses seed the GPU's);
  *      Step(dt, vi, pi) from b2World.Step.
  * Out: Step submits a GpuStepper step without waiting. Synchronize() / StepAsync() wait for the
- *      steps in flight and read back, in one map (GpuStepper.readBodies with extra ranges), the
+ *      steps in flight and read back, in one map (GpuStepper.readState with extra ranges), the
  *      body motion, the logged steps' contact events (logged while the listener has BeginContact or
  *      EndContact) and contacts (logged while it has PostSolve: each step's impulses and
  *      manifolds), and the last step's contacts when the listener has any event method (their
- *      b2Contact objects' manifolds) or the world is handed back; then delivers the events
- *      (events.ts). Detach() reads everything, rebuilds the JavaScript engine's contacts with the
- *      GPU's manifolds and impulses, and moves its broad-phase proxies.
+ *      b2Contact objects' manifolds) or the world is handed back; then advance the world's
+ *      m_stateEpoch and deliver the events (events.ts). The body motion stays on the host, mapped:
+ *      PullBody writes a body's into its object when the body is first read, PullAll every body's
+ *      and moves the engine's broad-phase proxies (queries, ray casts, the debug draw).
+ *      readTransforms() reads every transform in bulk without touching the objects. Detach()
+ *      reads everything, pulls every body, rebuilds the JavaScript engine's contacts with the
+ *      GPU's manifolds and impulses, and touches its broad-phase proxies.
  * Invariants: steps run in call order, each recorded after the previous one's submission; at most
  *      `maxQueuedSteps` wait to be recorded (Step throws beyond); the GPU holds at most four more
  *      (the narrow phase's read-back ring). A listener overriding PreSolve, or a custom contact
@@ -31,6 +35,7 @@ import { GpuContactEvents, wantsEvents } from './events';
 import type { GpuContactSet } from './events';
 import type { NarrowPhaseResult } from './narrowPhase';
 import { GpuStepper } from './stepper';
+import type { GpuWorld } from './world';
 import type { GpuReadStats, GpuStepperOptions } from './stepper';
 
 export interface WebGPUBackendOptions extends GpuContextOptions {
@@ -55,19 +60,30 @@ class ForceSnapshot {
   readonly bodies: b2Body[] = [];
   readonly values: number[] = [];
 
-  /** Takes the world's non-zero forces; clears them when the world auto-clears forces. */
-  take(world: b2World): void {
+  /**
+   * Takes the world's non-zero forces; clears them when the world auto-clears forces. Then only
+   * the bodies the API changed since the last step was recorded can hold one (GpuWorld's change
+   * log), so a step costs what changed; forces kept across steps are found by walking the bodies.
+   */
+  take(world: b2World, mirror: GpuWorld): void {
     this.bodies.length = 0;
     this.values.length = 0;
-    const clear = (world.m_flags & e_clearForces) !== 0;
-    for (let b = world.m_bodyList; b; b = b.m_next) {
-      if (b.m_force.x === 0 && b.m_force.y === 0 && b.m_torque === 0) continue;
-      this.bodies.push(b);
-      this.values.push(b.m_force.x, b.m_force.y, b.m_torque);
-      if (clear) {
-        b.m_force.SetZero();
-        b.m_torque = 0;
-      }
+    if ((world.m_flags & e_clearForces) !== 0) {
+      mirror.forEachChangedBody(this.takeAndClear);
+    } else {
+      for (let b = world.m_bodyList; b; b = b.m_next) this.takeBody(b, false);
+    }
+  }
+
+  private readonly takeAndClear = (b: b2Body): void => this.takeBody(b, true);
+
+  private takeBody(b: b2Body, clear: boolean): void {
+    if (b.m_force.x === 0 && b.m_force.y === 0 && b.m_torque === 0) return;
+    this.bodies.push(b);
+    this.values.push(b.m_force.x, b.m_force.y, b.m_torque);
+    if (clear) {
+      b.m_force.SetZero();
+      b.m_torque = 0;
     }
   }
 
@@ -75,8 +91,8 @@ class ForceSnapshot {
    * Swaps these forces with the world's (a second swap restores both), telling the world's change
    * listener (GpuWorld's change log) about every body whose force it sets.
    */
-  swap(world: b2World, other: ForceSnapshot): void {
-    other.take(world);
+  swap(world: b2World, mirror: GpuWorld, other: ForceSnapshot): void {
+    other.take(world, mirror);
     const changes = world.m_changeListener;
     for (const b of other.bodies) {
       b.m_force.SetZero();
@@ -138,6 +154,8 @@ export class WebGPUBackend implements b2WorldBackend {
   private failure: unknown = null;
   private detaching = false;
   private destroyed = false;
+  /** The world's m_stateEpoch when every body and proxy was last brought to the synchronised state (PullAll). */
+  private pulledEpoch = 0;
   private reading: Promise<unknown> = Promise.resolve();
   /** Maps made by synchronisations (for tests: one per synchronisation that had steps to read). */
   readbacks = 0;
@@ -216,6 +234,22 @@ export class WebGPUBackend implements b2WorldBackend {
     this.events = null;
   }
 
+  PullBody(body: b2Body): void {
+    this.stepperNow?.pullBody(body);
+  }
+
+  PullAll(): void {
+    const world = this.world;
+    const stepper = this.stepperNow;
+    if (world === null || stepper === null || this.pulledEpoch === world.m_stateEpoch) return;
+    stepper.pullAll(world.m_stateEpoch);
+    // Queries (QueryAABB, RayCast) see the synchronised positions. The GPU finds its own pairs, so
+    // the moves are not kept for the engine's pair search (Detach touches every proxy instead).
+    for (let b = world.m_bodyList; b; b = b.m_next) b.SynchronizeFixtures();
+    world.m_contactManager.m_broadPhase.m_moveCount = 0;
+    this.pulledEpoch = world.m_stateEpoch;
+  }
+
   Attach(world: b2World, engine: b2WorldBackendEngine): void {
     if (this.destroyed) throw new Error('WebGPUBackend.Attach: this backend was destroyed (backend.destroy()); create another');
     if (this.world !== null) throw new Error('WebGPUBackend: already attached to a world; one backend steps one world');
@@ -235,6 +269,7 @@ export class WebGPUBackend implements b2WorldBackend {
     this.lastContactCount = null;
     this.countsKnown = false;
     this.stepsSinceRead = 0;
+    this.pulledEpoch = world.m_stateEpoch;
   }
 
   /** Throws when the world asks for what must run inside the solver or per pair on the host. */
@@ -266,7 +301,7 @@ export class WebGPUBackend implements b2WorldBackend {
   }
 
   Step(dt: number, velocityIterations: number, positionIterations: number): void {
-    const { world, engine } = this.attached('Step');
+    const { world, engine, stepper } = this.attached('Step');
     if (this.detaching) throw new Error('b2World.Step: the world is being handed back to the JavaScript engine; await world.SetBackend(null) first');
     if (this.failure !== null) throw this.failure;
     this.refuseUnsupported(world, engine);
@@ -284,7 +319,7 @@ export class WebGPUBackend implements b2WorldBackend {
     } else {
       const forces = this.forces[this.forceCursor];
       this.forceCursor = (this.forceCursor + 1) % this.forces.length;
-      forces.take(world);
+      forces.take(world, stepper.mirror);
       this.tail = this.tail.then(() => this.runStep(dt, velocityIterations, positionIterations, forces));
     }
   }
@@ -294,9 +329,9 @@ export class WebGPUBackend implements b2WorldBackend {
       if (this.failure !== null) return;
       const { world, engine, stepper, events } = this.attached('Step');
       // GpuStepper.step takes the forces (and clears them) before its first await.
-      forces?.swap(world, this.pending);
+      forces?.swap(world, stepper.mirror, this.pending);
       const stepping = stepper.step(dt, velocityIterations, positionIterations, { wait: false });
-      if (forces !== null) this.pending.swap(world, forces);
+      if (forces !== null) this.pending.swap(world, stepper.mirror, forces);
       const result = await stepping;
       const settled = result.settled!;
       this.lastStep = settled;
@@ -365,12 +400,13 @@ export class WebGPUBackend implements b2WorldBackend {
     const plan = events.plan(stepper.narrowPhase, needContacts, needContacts ? this.lastContactCount! : 0);
     this.stepsSinceRead = 0;
     this.readbacks++;
-    await stepper.readBodies(GpuContactEvents.ranges(plan));
-    // Queries (QueryAABB, RayCast) see the synchronised positions. The GPU finds its own pairs, so
-    // the moves are not kept for the engine's pair search (Detach touches every proxy instead).
-    const broadPhase = world.m_contactManager.m_broadPhase;
-    for (let b = world.m_bodyList; b; b = b.m_next) b.SynchronizeFixtures();
-    broadPhase.m_moveCount = 0;
+    await stepper.readState(GpuContactEvents.ranges(plan));
+    // Each body fetches this state when it is first read (b2Body.PullState), queries and the debug
+    // draw all of it first (PullAll): a synchronisation costs what the application reads.
+    world.m_stateEpoch++;
+    // The GPU finds its own pairs: the engine's move buffer is not kept (PullAll and Detach
+    // bring the proxies up to date).
+    world.m_contactManager.m_broadPhase.m_moveCount = 0;
     const set = GpuContactEvents.contactSet(plan.last);
     events.deliver(world, stepper.mirror, plan, set);
     return set;
@@ -382,6 +418,7 @@ export class WebGPUBackend implements b2WorldBackend {
     try {
       const stepped = this.lastStep !== null;
       const set = await this.serialised(() => this.read(world, true));
+      this.PullAll();
       const mirror = stepper.mirror;
       if (stepped && set !== null) {
         for (let i = 0; i < set.count; ++i) {

@@ -8,7 +8,7 @@
  *      capacity records), and of its contact keys and manifolds (with the solver's impulses) when
  *      asked (for PostSolve: the whole buffers, contact capacity records); the counts are known
  *      only from the step's read-back. plan(): the ranges a synchronisation copies in
- *      readBodies()'s one map: each logged step's events and contacts, and the last step's contact
+ *      readState()'s one map: each logged step's events and contacts, and the last step's contact
  *      keys and manifolds when someone needs them (a listener, or the switch back to the
  *      JavaScript engine): its logged ones when it logged them, else the narrow phase's.
  * Out: deliver(): for every logged step, in step order, its BeginContact / EndContact in the GPU's
@@ -76,7 +76,7 @@ export interface ContactRead {
   count: number;
 }
 
-/** A synchronisation's read: readBodies() fills the ranges, then contactSet() decodes. */
+/** A synchronisation's read: readState() fills the ranges, then contactSet() decodes. */
 export interface EventPlan {
   /** Every logged step, in step order. */
   steps: { events: GpuReadRange | null; contacts: ContactRead | null }[];
@@ -209,7 +209,7 @@ export class GpuContactEvents {
     };
   }
 
-  /** The ranges of a plan, for readBodies() (the last step's contacts once, when it logged them). */
+  /** The ranges of a plan, for readState() (the last step's contacts once, when it logged them). */
   static ranges(plan: EventPlan): GpuReadRange[] {
     const out: GpuReadRange[] = [];
     for (const s of plan.steps) {

@@ -1,8 +1,8 @@
 /*
- * webphysics/gpu: the WebGPU backend (part 1: devices, the world mirrored on the GPU, and a
- * sweep-and-prune broad phase; part 2: the narrow phase; part 3, in progress: the graph-coloured
- * solver, GpuStepper, and WebGPUBackend behind b2World's API). The engine never imports this
- * module; it reads the engine's world through its public fields and its b2ChangeListener.
+ * webphysics/gpu: the WebGPU backend (devices, the world mirrored on the GPU, a sweep-and-prune
+ * broad phase, the narrow phase, the graph-coloured solver, GpuStepper, and WebGPUBackend behind
+ * b2World's API). The engine never imports this module; it reads the engine's world through its
+ * public fields and its b2ChangeListener.
  *
  *   const gpu = await requestGpu({ onLost: (info) => console.warn('GPU lost', info) });
  *   const mirror = new GpuWorld(gpu, world);
@@ -15,7 +15,8 @@
  * The world API on the GPU (docs/GPU.md, "The world API on the GPU"):
  *   await world.SetBackend(await WebGPUBackend.create());
  *   world.Step(1 / 60, 8, 3);           // submitted; world.StepAsync() also waits and reads back
- *   await world.Synchronize();          // positions, velocities, contact events
+ *   await world.Synchronize();          // positions, velocities (fetched as bodies are read), contact events
+ *   await backend.readTransforms(out);  // or every body's transform in bulk, for a renderer
  *   await world.SetBackend(null);       // back to the JavaScript engine, contacts and impulses kept
  *
  * Stepping on the GPU (contacts, the ten joint types, sleeping, a time-of-impact pass):

@@ -6,12 +6,13 @@
  *
  * In:  a b2World built with the normal API; step(dt, velocityIterations, positionIterations).
  * Out: the bodies' motion on the GPU (GpuWorld's bodyXf, bodyCell, bodySweep, bodyVel), contacts
- *      and impulses in the narrow phase's buffers; readBodies() copies the motion, the awake flag
- *      and the sleep time back into the world's b2Body objects, and the joints' impulses and limit
- *      states into its b2Joint objects, with one map.
+ *      and impulses in the narrow phase's buffers; readState() reads the motion, the awake flag and
+ *      the sleep time back with one map and keeps them mapped on the host, writing the joints'
+ *      impulses and limit states into the b2Joint objects; pullBody() and pullAll() write the
+ *      bodies' into their b2Body objects (readBodies(): both at once).
  * Authority: from the first step the GPU's copy of the body motion is the one that counts
  * (GpuWorld.gpuOwnsMotion): the world's bodies keep their old positions and velocities until
- * readBodies(). Motion set through the API (SetTransform, SetLinearVelocity, impulses) replaces the
+ * they are pulled. Motion set through the API (SetTransform, SetLinearVelocity, impulses) replaces the
  * GPU's for that body at the next step (GpuWorld's change log, b2ChangeListener), computed from the
  * state the body had in JavaScript: read back first. Everything else still flows from the world at
  * each step: bodies and fixtures created or destroyed, masses, forces (cleared after each step when
@@ -24,9 +25,10 @@
  * motion, and SetAwake from JavaScript reaches the GPU by GpuWorld's rule (its header).
  * Not yet (docs/GPU.md, "The solver"): 2.2.1's TOI island solve and sub-steps (a body is stopped at
  * its time of impact and the next step solves the contact). Contact listeners: WebGPUBackend
- * (backend.ts) reads events and contacts in readBodies()'s map and delivers them after the step.
+ * (backend.ts) reads events and contacts in readState()'s map and delivers them after the step.
  */
 
+import type { b2Body } from '../src/dynamics/b2Body';
 import type { b2World } from '../src/dynamics/b2World';
 import type { GpuContext } from './device';
 import { GpuBroadPhase } from './broadPhase';
@@ -45,12 +47,12 @@ export interface GpuStepperOptions {
   narrowPhase?: GpuNarrowPhaseOptions;
 }
 
-/** A range of a GPU buffer read back in readBodies()'s map (offset and size multiples of 4). */
+/** A range of a GPU buffer read back in readState()'s map (offset and size multiples of 4). */
 export interface GpuReadRange {
   buffer: GPUBuffer;
   offset: number;
   size: number;
-  /** Set by readBodies(): a copy of the range's bytes. */
+  /** Set by readState(): a copy of the range's bytes. */
   data: ArrayBuffer | null;
 }
 
@@ -63,10 +65,13 @@ export interface GpuStepOptions {
 const e_clearForces = 0x0004;
 /** b2Body::e_awakeFlag. */
 const e_awakeFlag = 0x0002;
-/** Bytes per body slot in readBodies()'s staging buffer: xf 16, cell 8, sweep 32, velocity 16, awake 4. */
+/** Bytes per body slot in readState()'s staging buffer: xf 16, cell 8, sweep 32, velocity 16, awake 4. */
 const BODY_READ_BYTES = 76;
 /** Bytes per joint slot read back with the bodies: jointState, impulses and limit state. */
 const JOINT_STATE_BYTES = 32;
+const EMPTY_F32 = new Float32Array(0);
+const EMPTY_I32 = new Int32Array(0);
+const EMPTY_U32 = new Uint32Array(0);
 /** Bytes per body slot in readTransforms()'s staging buffer: xf 16, cell 8, awake 4. */
 const TRANSFORM_READ_BYTES = 28;
 
@@ -87,10 +92,16 @@ export class GpuStepper {
   readonly solver: GpuSolver;
   /** Steps taken on the GPU. */
   steps = 0;
-  /** What the last readBodies() or readTransforms() cost. */
+  /** What the last readState() or readTransforms() cost (unpacking: joints and extras; bodies are pulled later). */
   readonly readStats: GpuReadStats = { bytes: 0, unpackMs: 0 };
   private invDt0: number;
-  private readonly bodyStaging: StagingBuffer;
+  /** Two staging buffers for readState: the one holding the last state stays mapped while the other is read into. */
+  private readonly bodyStaging: [StagingBuffer, StagingBuffer];
+  /** Which of them holds the last read state (mapped), -1 for none; and its slot count. */
+  private stagingNow = -1;
+  private stateSlots = 0;
+  /** Views of the last read state (valid while its staging buffer is mapped). */
+  private readonly state = { xf: EMPTY_F32, cell: EMPTY_I32, sweep: EMPTY_F32, vel: EMPTY_F32, awake: EMPTY_U32 };
   private readonly transformStaging: StagingBuffer;
   private readonly solverStep: SolverStep = { dt: 0, dtRatio: 0, velocityIterations: 0, positionIterations: 0, warmStarting: true, gravity: { x: 0, y: 0 } };
   private readonly encodeSolver = (pass: PassRecorder, outputs: NarrowPhaseOutputs): void => this.solver.encode(pass, this.mirror, outputs);
@@ -102,7 +113,10 @@ export class GpuStepper {
     this.broadPhase = new GpuBroadPhase(ctx, options.broadPhase);
     this.narrowPhase = new GpuNarrowPhase(ctx, options.narrowPhase);
     this.solver = new GpuSolver(ctx);
-    this.bodyStaging = new StagingBuffer(ctx, 'stepper body read-back', 64 * BODY_READ_BYTES);
+    this.bodyStaging = [
+      new StagingBuffer(ctx, 'stepper body read-back 0', 64 * BODY_READ_BYTES),
+      new StagingBuffer(ctx, 'stepper body read-back 1', 64 * BODY_READ_BYTES),
+    ];
     this.transformStaging = new StagingBuffer(ctx, 'stepper transform read-back', 64 * TRANSFORM_READ_BYTES);
     this.mirror.sync();
     this.narrowPhase.seedFromWorld(this.mirror);
@@ -140,11 +154,13 @@ export class GpuStepper {
   }
 
   /**
-   * Copies the GPU's body motion into the world's bodies (m_xf, m_sweep, velocities) with one map,
-   * after every step submitted so far; `extras` (events, contacts: WebGPUBackend) are copied in the
-   * same map. Returns the number of bodies written.
+   * Reads the bodies' state back with one map, after every step submitted so far, and keeps it on
+   * the host (the staging buffer stays mapped until the next read): pullBody() and pullAll() write
+   * it into b2Body objects as they are needed. The joints' impulses and limit states are written
+   * into the b2Joint objects at once, and `extras` (events, contacts: WebGPUBackend) copied from the
+   * same map. Returns the number of body slots read.
    */
-  async readBodies(extras: GpuReadRange[] = []): Promise<number> {
+  async readState(extras: GpuReadRange[] = []): Promise<number> {
     const ctx = this.ctx;
     ctx.assertAlive();
     const mirror = this.mirror;
@@ -153,7 +169,10 @@ export class GpuStepper {
     let bytes = BODY_READ_BYTES * n + JOINT_STATE_BYTES * joints;
     for (const r of extras) bytes += r.size;
     if (bytes === 0) return 0;
-    const staging = this.bodyStaging.get(bytes);
+    // The other staging buffer than the one holding the state now, which stays readable until this one is mapped.
+    const next = this.stagingNow === 0 ? 1 : 0;
+    const target = this.bodyStaging[next];
+    const staging = target.get(bytes);
     const encoder = ctx.device.createCommandEncoder({ label: 'stepper body read-back' });
     encoder.copyBufferToBuffer(mirror.bodyXf.buffer, 0, staging, 0, 16 * n);
     encoder.copyBufferToBuffer(mirror.bodyCell.buffer, 0, staging, 16 * n, 8 * n);
@@ -167,52 +186,91 @@ export class GpuStepper {
       at += r.size;
     }
     ctx.device.queue.submit([encoder.finish()]);
-    const mapped = await this.bodyStaging.map(bytes, 'reading the bodies back from the GPU failed');
+    const mapped = await target.map(bytes, 'reading the bodies back from the GPU failed');
     const started = performance.now();
+    this.releaseState();
+    this.stagingNow = next;
+    this.stateSlots = n;
+    const views = this.state;
+    views.xf = new Float32Array(mapped, 0, 4 * n);
+    views.cell = new Int32Array(mapped, 16 * n, 2 * n);
+    views.sweep = new Float32Array(mapped, 24 * n, 8 * n);
+    views.vel = new Float32Array(mapped, 56 * n, 4 * n);
+    const awake = new Uint32Array(mapped, 72 * n, n);
+    views.awake = awake;
+    // The mirror's shadow of the awake flags now holds what the GPU holds: sync() uploads a flag
+    // again only when JavaScript changes it (GpuWorld's header).
+    mirror.bodyAwake.u32.set(awake);
     mirror.unpackJointStates(new Float32Array(mapped, BODY_READ_BYTES * n, (JOINT_STATE_BYTES / 4) * joints));
     at = BODY_READ_BYTES * n + JOINT_STATE_BYTES * joints;
     for (const r of extras) {
       r.data = mapped.slice(at, at + r.size);
       at += r.size;
     }
-    const xf = new Float32Array(mapped, 0, 4 * n);
-    const cell = new Int32Array(mapped, 16 * n, 2 * n);
-    const sweep = new Float32Array(mapped, 24 * n, 8 * n);
-    const vel = new Float32Array(mapped, 56 * n, 4 * n);
-    const awake = new Uint32Array(mapped, 72 * n, n);
-    const S = mirror.cellSize;
-    let written = 0;
-    for (let slot = 0; slot < n; ++slot) {
-      const b = mirror.bodyAt(slot);
-      if (b === null) continue;
-      const ox = cell[2 * slot] * S;
-      const oy = cell[2 * slot + 1] * S;
-      b.m_xf.p.x = ox + xf[4 * slot];
-      b.m_xf.p.y = oy + xf[4 * slot + 1];
-      b.m_xf.q.c = xf[4 * slot + 2];
-      b.m_xf.q.s = xf[4 * slot + 3];
-      const s = 8 * slot;
-      b.m_sweep.c0.x = ox + sweep[s];
-      b.m_sweep.c0.y = oy + sweep[s + 1];
-      b.m_sweep.a0 = sweep[s + 2];
-      b.m_sweep.alpha0 = sweep[s + 3];
-      b.m_sweep.c.x = ox + sweep[s + 4];
-      b.m_sweep.c.y = oy + sweep[s + 5];
-      b.m_sweep.a = sweep[s + 6];
-      b.m_linearVelocity.x = vel[4 * slot];
-      b.m_linearVelocity.y = vel[4 * slot + 1];
-      b.m_angularVelocity = vel[4 * slot + 2];
-      b.m_sleepTime = sweep[s + 7];
-      b.m_flags = awake[slot] !== 0 ? b.m_flags | e_awakeFlag : b.m_flags & ~e_awakeFlag;
-      // The mirror's shadow now holds what the GPU holds: sync() uploads the flag again only
-      // when JavaScript changes it (GpuWorld's header).
-      mirror.bodyAwake.u32[slot] = awake[slot];
-      written++;
-    }
-    this.bodyStaging.unmap();
     this.readStats.bytes = bytes;
     this.readStats.unpackMs = performance.now() - started;
+    return n;
+  }
+
+  /** The state read last (readState) into `body`; false when that read has none for it (a body new since). */
+  pullBody(body: b2Body): boolean {
+    const slot = this.mirror.bodySlot(body);
+    if (slot < 0 || slot >= this.stateSlots) return false;
+    const { xf, cell, sweep, vel, awake } = this.state;
+    const S = this.mirror.cellSize;
+    const ox = cell[2 * slot] * S;
+    const oy = cell[2 * slot + 1] * S;
+    body.m_xf.p.x = ox + xf[4 * slot];
+    body.m_xf.p.y = oy + xf[4 * slot + 1];
+    body.m_xf.q.c = xf[4 * slot + 2];
+    body.m_xf.q.s = xf[4 * slot + 3];
+    const s = 8 * slot;
+    body.m_sweep.c0.x = ox + sweep[s];
+    body.m_sweep.c0.y = oy + sweep[s + 1];
+    body.m_sweep.a0 = sweep[s + 2];
+    body.m_sweep.alpha0 = sweep[s + 3];
+    body.m_sweep.c.x = ox + sweep[s + 4];
+    body.m_sweep.c.y = oy + sweep[s + 5];
+    body.m_sweep.a = sweep[s + 6];
+    body.m_linearVelocity.x = vel[4 * slot];
+    body.m_linearVelocity.y = vel[4 * slot + 1];
+    body.m_angularVelocity = vel[4 * slot + 2];
+    body.m_sleepTime = sweep[s + 7];
+    body.m_flags = awake[slot] !== 0 ? body.m_flags | e_awakeFlag : body.m_flags & ~e_awakeFlag;
+    return true;
+  }
+
+  /**
+   * The state read last into every body it has, or (`epoch` given) into those whose m_stateEpoch
+   * differs, stamping them with it. Returns the number of bodies written.
+   */
+  pullAll(epoch?: number): number {
+    const mirror = this.mirror;
+    let written = 0;
+    for (let slot = 0; slot < this.stateSlots; ++slot) {
+      const b = mirror.bodyAt(slot);
+      if (b === null || (epoch !== undefined && b.m_stateEpoch === epoch)) continue;
+      this.pullBody(b);
+      if (epoch !== undefined) b.m_stateEpoch = epoch;
+      written++;
+    }
     return written;
+  }
+
+  /**
+   * Reads the bodies back (readState) and writes every body's motion into the world's b2Body
+   * objects (m_xf, m_sweep, velocities, awake flag, sleep time) at once. Returns the number written.
+   */
+  async readBodies(extras: GpuReadRange[] = []): Promise<number> {
+    await this.readState(extras);
+    return this.pullAll();
+  }
+
+  /** Unmaps the staging buffer holding the last read state (its views are then gone). */
+  private releaseState(): void {
+    if (this.stagingNow >= 0) this.bodyStaging[this.stagingNow].unmap();
+    this.stagingNow = -1;
+    this.stateSlots = 0;
   }
 
   /**
@@ -267,7 +325,8 @@ export class GpuStepper {
   }
 
   destroy(): void {
-    this.bodyStaging.destroy();
+    this.releaseState();
+    for (const staging of this.bodyStaging) staging.destroy();
     this.transformStaging.destroy();
     this.solver.destroy();
     this.narrowPhase.destroy();

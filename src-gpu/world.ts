@@ -32,7 +32,7 @@
  * changed records of those tables. Everything else (mass, forces, damping, flags, fixtures, joint
  * parameters) is still mirrored from the world.
  * The awake flag (bodyAwake) is GPU-owned in the same way, with one more rule: the GPU wakes and
- * puts bodies to sleep (islands, part 3) and GpuStepper.readBodies() writes e_awakeFlag and
+ * puts bodies to sleep (islands, part 3) and GpuStepper's pulls (readState) write e_awakeFlag and
  * m_sleepTime back; sync() uploads a body's awake flag when the world's e_awakeFlag differs from
  * the value last uploaded or read back (SetAwake, or ApplyForce / SetLinearVelocity waking a body,
  * after a read-back that showed it asleep), for a body new to the mirror, and for every body when
@@ -575,6 +575,11 @@ export class GpuWorld {
     return stats;
   }
 
+  /** Calls `visit` for every body the API changed since the last sync (the change log: applied forces included). */
+  forEachChangedBody(visit: (body: b2Body) => void): void {
+    for (const body of this.changes.bodies.keys()) visit(body);
+  }
+
   /** A body in the change log, when sync() does not walk them all. */
   private readonly packChangedBody = (_motion: boolean, b: b2Body): void => {
     const slot = this.bodySlot(b);
@@ -681,8 +686,12 @@ export class GpuWorld {
 
     this.bodyFlags.commitWords(slot, ((b.m_flags & 0xffff) | (b.m_type << 16) | BODY_LIVE) >>> 0);
     // The awake flag (header): commit uploads it when it differs from the last value uploaded or
-    // read back; a new body's, and every body's once sleeping is turned off, always.
-    this.bodyAwake.commitWords(slot, (b.m_flags & e_awakeFlag) !== 0 ? 1 : 0);
+    // read back; a new body's, and every body's once sleeping is turned off, always. A body that has
+    // not fetched the last read-back's state (b2Body.PullState) shows an older flag, which is not
+    // the application's: the GPU's stands.
+    if (!this.ownsMotion || created || this.wakeAll || b.m_stateEpoch === this.world.m_stateEpoch) {
+      this.bodyAwake.commitWords(slot, (b.m_flags & e_awakeFlag) !== 0 ? 1 : 0);
+    }
     if (this.ownsMotion && (created || this.wakeAll)) this.bodyAwake.markDirty(slot);
   }
 

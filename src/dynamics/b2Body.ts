@@ -182,6 +182,14 @@ export class b2Body {
   /** Set by b2World.DestroyBody (no C++ counterpart: the C++ frees the memory). */
   m_destroyed = false;
 
+  /**
+   * Not in the C++: the world's m_stateEpoch when this object last received its state. On a
+   * backend (b2World.SetBackend) a synchronisation only advances the world's epoch; the body
+   * fetches its motion, awake flag and sleep time from the backend when one of its methods first
+   * reads or changes them (PullState), so a synchronisation costs what the application reads.
+   */
+  m_stateEpoch = 0;
+
   constructor(bd: b2BodyDef, world: b2World) {
     // The C++ asserts; b2ArgumentError names the field (see b2DefValidation).
     b2CheckBodyDef('b2World.CreateBody', bd);
@@ -203,6 +211,7 @@ export class b2Body {
     }
 
     this.m_world = world;
+    this.m_stateEpoch = world.m_stateEpoch;
 
     this.m_xf.p.Assign(bd.position);
     this.m_xf.q.Set(bd.angle);
@@ -244,6 +253,7 @@ export class b2Body {
    */
   CreateFixture(defOrShape: b2FixtureDef | b2Shape, density = 0.0): b2Fixture {
     checkBody(this, 'b2Body.CreateFixture', true);
+    this.PullState();
 
     let def: b2FixtureDef;
     if (defOrShape instanceof b2Shape) {
@@ -295,6 +305,7 @@ export class b2Body {
   DestroyFixture(fixture: b2Fixture): void {
     checkBody(this, 'b2Body.DestroyFixture', true);
     b2CheckObject('b2Body.DestroyFixture', 'fixture', fixture);
+    this.PullState();
     if (fixture.m_destroyed) {
       throw b2DestroyedError('b2Body.DestroyFixture', 'fixture');
     }
@@ -367,6 +378,7 @@ export class b2Body {
     checkBody(this, 'b2Body.SetTransform', true);
     b2CheckVec2('b2Body.SetTransform', 'position', position);
     b2CheckFinite('b2Body.SetTransform', 'angle', angle);
+    this.PullState();
 
     const xf = this.m_xf;
     xf.q.Set(angle);
@@ -394,21 +406,25 @@ export class b2Body {
 
   /** Get the body transform for the body's origin (the body's own object: treat it as read-only). */
   GetTransform(): Readonly<b2Transform> {
+    this.PullState();
     return this.m_xf;
   }
 
   /** Get the world body origin position (the body's own object: treat it as read-only). */
   GetPosition(): Readonly<b2Vec2> {
+    this.PullState();
     return this.m_xf.p;
   }
 
   /** Get the angle in radians. */
   GetAngle(): number {
+    this.PullState();
     return this.m_sweep.a;
   }
 
   /** Get the world position of the center of mass (the body's own object: treat it as read-only). */
   GetWorldCenter(): Readonly<b2Vec2> {
+    this.PullState();
     return this.m_sweep.c;
   }
 
@@ -424,6 +440,7 @@ export class b2Body {
   SetLinearVelocity(v: Readonly<b2Vec2>): void {
     checkBody(this, 'b2Body.SetLinearVelocity', false);
     b2CheckVec2('b2Body.SetLinearVelocity', 'v', v);
+    this.PullState();
     if (this.m_type === b2BodyType.b2_staticBody) {
       return;
     }
@@ -438,6 +455,7 @@ export class b2Body {
 
   /** Get the linear velocity of the center of mass (a copy, written to `out` when given). */
   GetLinearVelocity(out: b2Vec2 = new b2Vec2()): b2Vec2 {
+    this.PullState();
     return out.Assign(this.m_linearVelocity);
   }
 
@@ -448,6 +466,7 @@ export class b2Body {
   SetAngularVelocity(w: number): void {
     checkBody(this, 'b2Body.SetAngularVelocity', false);
     b2CheckFinite('b2Body.SetAngularVelocity', 'w', w);
+    this.PullState();
     if (this.m_type === b2BodyType.b2_staticBody) {
       return;
     }
@@ -462,6 +481,7 @@ export class b2Body {
 
   /** Get the angular velocity in radians/second. */
   GetAngularVelocity(): number {
+    this.PullState();
     return this.m_angularVelocity;
   }
 
@@ -476,6 +496,7 @@ export class b2Body {
     checkBody(this, 'b2Body.ApplyForce', false);
     b2CheckVec2('b2Body.ApplyForce', 'force', force);
     b2CheckVec2('b2Body.ApplyForce', 'point', point);
+    this.PullState();
     if (this.m_type !== b2BodyType.b2_dynamicBody) {
       return;
     }
@@ -502,6 +523,7 @@ export class b2Body {
   ApplyForceToCenter(force: Readonly<b2Vec2>): void {
     checkBody(this, 'b2Body.ApplyForceToCenter', false);
     b2CheckVec2('b2Body.ApplyForceToCenter', 'force', force);
+    this.PullState();
     if (this.m_type !== b2BodyType.b2_dynamicBody) {
       return;
     }
@@ -524,6 +546,7 @@ export class b2Body {
   ApplyTorque(torque: number): void {
     checkBody(this, 'b2Body.ApplyTorque', false);
     b2CheckFinite('b2Body.ApplyTorque', 'torque', torque);
+    this.PullState();
     if (this.m_type !== b2BodyType.b2_dynamicBody) {
       return;
     }
@@ -547,6 +570,7 @@ export class b2Body {
     checkBody(this, 'b2Body.ApplyLinearImpulse', false);
     b2CheckVec2('b2Body.ApplyLinearImpulse', 'impulse', impulse);
     b2CheckVec2('b2Body.ApplyLinearImpulse', 'point', point);
+    this.PullState();
     if (this.m_type !== b2BodyType.b2_dynamicBody) {
       return;
     }
@@ -572,6 +596,7 @@ export class b2Body {
   ApplyAngularImpulse(impulse: number): void {
     checkBody(this, 'b2Body.ApplyAngularImpulse', false);
     b2CheckFinite('b2Body.ApplyAngularImpulse', 'impulse', impulse);
+    this.PullState();
     if (this.m_type !== b2BodyType.b2_dynamicBody) {
       return;
     }
@@ -625,6 +650,7 @@ export class b2Body {
     b2CheckFinite('b2Body.SetMassData', 'massData.mass', massData.mass);
     b2CheckVec2('b2Body.SetMassData', 'massData.center', massData.center);
     b2CheckFinite('b2Body.SetMassData', 'massData.I', massData.I);
+    this.PullState();
     if (massData.I > 0.0 && (this.m_flags & b2Body.e_fixedRotationFlag) === 0) {
       // The C++ asserts that the inertia about the center of mass stays positive.
       const mass = massData.mass > 0.0 ? massData.mass : 1.0;
@@ -672,6 +698,7 @@ export class b2Body {
    */
   ResetMassData(): void {
     checkBody(this, 'b2Body.ResetMassData', false);
+    this.PullState();
     // Compute mass data from shapes. Each shape has its own density.
     this.m_mass = 0.0;
     this.m_invMass = 0.0;
@@ -759,6 +786,7 @@ export class b2Body {
    * @return the same point expressed in world coordinates (in `out` when given).
    */
   GetWorldPoint(localPoint: Readonly<b2Vec2>, out: b2Vec2 = new b2Vec2()): b2Vec2 {
+    this.PullState();
     const xf = this.m_xf;
     const x = localPoint.x;
     const y = localPoint.y;
@@ -773,6 +801,7 @@ export class b2Body {
    * @return the same vector expressed in world coordinates (in `out` when given).
    */
   GetWorldVector(localVector: Readonly<b2Vec2>, out: b2Vec2 = new b2Vec2()): b2Vec2 {
+    this.PullState();
     const q = this.m_xf.q;
     const x = localVector.x;
     const y = localVector.y;
@@ -787,6 +816,7 @@ export class b2Body {
    * @return the corresponding local point relative to the body's origin (in `out` when given).
    */
   GetLocalPoint(worldPoint: Readonly<b2Vec2>, out: b2Vec2 = new b2Vec2()): b2Vec2 {
+    this.PullState();
     const xf = this.m_xf;
     const px = worldPoint.x - xf.p.x;
     const py = worldPoint.y - xf.p.y;
@@ -801,6 +831,7 @@ export class b2Body {
    * @return the corresponding local vector (in `out` when given).
    */
   GetLocalVector(worldVector: Readonly<b2Vec2>, out: b2Vec2 = new b2Vec2()): b2Vec2 {
+    this.PullState();
     const q = this.m_xf.q;
     const x = worldVector.x;
     const y = worldVector.y;
@@ -815,6 +846,7 @@ export class b2Body {
    * @return the world velocity of a point (in `out` when given).
    */
   GetLinearVelocityFromWorldPoint(worldPoint: Readonly<b2Vec2>, out: b2Vec2 = new b2Vec2()): b2Vec2 {
+    this.PullState();
     // m_linearVelocity + b2Cross(m_angularVelocity, worldPoint - m_sweep.c)
     const w = this.m_angularVelocity;
     const dx = worldPoint.x - this.m_sweep.c.x;
@@ -880,6 +912,7 @@ export class b2Body {
   SetType(type: b2BodyType): void {
     checkBody(this, 'b2Body.SetType', true);
     b2CheckBodyType('b2Body.SetType', 'type', type);
+    this.PullState();
     if (type !== b2BodyType.b2_dynamicBody) {
       for (let je = this.m_jointList; je; je = je.next) {
         if (je.joint.m_type === b2JointType.e_mouseJoint && je.joint.m_bodyB === this) {
@@ -949,6 +982,7 @@ export class b2Body {
    */
   SetSleepingAllowed(flag: boolean): void {
     checkBody(this, 'b2Body.SetSleepingAllowed', false);
+    this.PullState();
     if (flag) {
       this.m_flags |= b2Body.e_autoSleepFlag;
     } else {
@@ -969,6 +1003,7 @@ export class b2Body {
    * @param flag set to true to put body to sleep, false to wake it.
    */
   SetAwake(flag: boolean): void {
+    this.PullState();
     if (flag) {
       if ((this.m_flags & b2Body.e_awakeFlag) === 0) {
         this.m_flags |= b2Body.e_awakeFlag;
@@ -991,6 +1026,7 @@ export class b2Body {
    * @return true if the body is awake.
    */
   IsAwake(): boolean {
+    this.PullState();
     return (this.m_flags & b2Body.e_awakeFlag) === b2Body.e_awakeFlag;
   }
 
@@ -1011,6 +1047,7 @@ export class b2Body {
    */
   SetActive(flag: boolean): void {
     checkBody(this, 'b2Body.SetActive', true);
+    this.PullState();
 
     if (flag === this.IsActive()) {
       return;
@@ -1058,6 +1095,7 @@ export class b2Body {
    */
   SetFixedRotation(flag: boolean): void {
     checkBody(this, 'b2Body.SetFixedRotation', false);
+    this.PullState();
     if (flag) {
       this.m_flags |= b2Body.e_fixedRotationFlag;
     } else {
@@ -1114,6 +1152,7 @@ export class b2Body {
 
   /** Dump this body to a log file */
   Dump(): void {
+    this.PullState();
     const bodyIndex = this.m_islandIndex;
 
     b2Log('{\n');
@@ -1141,13 +1180,23 @@ export class b2Body {
     b2Log('}\n');
   }
 
-  /** Recompute the broad-phase proxies for the motion from (c0, a0) to the current transform. */
+  /**
+   * Not in the C++: on a backend, brings this object to the last synchronisation's state if it has
+   * not received it yet (m_stateEpoch); a no-op on this engine. The methods that read or change the
+   * motion, the awake flag or the sleep time call it first; code reading the m_ fields directly
+   * on a backend calls it too.
+   */
+  PullState(): void {
+    if (this.m_stateEpoch !== this.m_world.m_stateEpoch) this.m_world.PullBody(this);
+  }
+
   /** Not in the C++: tells the world's change listener (b2ChangeListener) that this body changed. */
   private NotifyChanged(motion: boolean): void {
     const listener = this.m_world.m_changeListener;
     if (listener !== null) listener.BodyChanged(this, motion);
   }
 
+  /** Recompute the broad-phase proxies for the motion from (c0, a0) to the current transform. */
   SynchronizeFixtures(): void {
     const xf1 = s_xf1;
     xf1.q.Set(this.m_sweep.a0);

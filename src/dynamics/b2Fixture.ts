@@ -374,6 +374,7 @@ export class b2Fixture {
         `must be an integer in [0, ${this.m_proxyCount}) (the fixture's proxy count; 0 while its body is inactive), got ${childIndex}`,
       );
     }
+    this.m_body.m_world.PullState();
     return this.m_proxies[childIndex].aabb;
   }
 

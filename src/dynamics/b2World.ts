@@ -173,6 +173,12 @@ export class b2World {
   /** Not in the C++: see SetChangeListener. */
   m_changeListener: b2ChangeListener | null = null;
 
+  /**
+   * Not in the C++: advanced by a backend at each synchronisation. A body whose m_stateEpoch lags
+   * behind fetches its state from the backend when it is read (b2Body.PullState).
+   */
+  m_stateEpoch = 0;
+
   /** This is used to compute the time step ratio to support a variable time step. */
   m_inv_dt0 = 0.0;
 
@@ -710,6 +716,20 @@ export class b2World {
     return this.m_backend;
   }
 
+  /** Not in the C++: the last synchronisation's state into `body` (b2Body.PullState calls this). */
+  PullBody(body: b2Body): void {
+    body.m_stateEpoch = this.m_stateEpoch;
+    this.m_backend?.PullBody(body);
+  }
+
+  /**
+   * Not in the C++: on a backend, every body's last synchronised state, and the broad-phase proxies
+   * moved to it; queries, ray casts, the debug draw and Dump call it first. A no-op on this engine.
+   */
+  PullState(): void {
+    this.m_backend?.PullAll();
+  }
+
   /**
    * Manually clear the force buffer on all bodies. By default, forces are cleared automatically
    * after each call to Step. The default behavior is modified by calling SetAutoClearForces.
@@ -732,6 +752,7 @@ export class b2World {
     if (debugDraw === null) {
       return;
     }
+    this.PullState();
 
     const flags = debugDraw.GetFlags();
 
@@ -806,6 +827,7 @@ export class b2World {
     b2CheckObject('b2World.QueryAABB', 'aabb', aabb);
     b2CheckVec2('b2World.QueryAABB', 'aabb.lowerBound', aabb.lowerBound);
     b2CheckVec2('b2World.QueryAABB', 'aabb.upperBound', aabb.upperBound);
+    this.PullState();
     const depth = this.m_queryDepth;
     if (depth === this.m_queryWrappers.length) {
       this.m_queryWrappers.push(new b2WorldQueryWrapper(this.m_contactManager.m_broadPhase));
@@ -840,6 +862,7 @@ export class b2World {
     if (!(dx * dx + dy * dy > 0.0)) {
       throw new b2ArgumentError('b2World.RayCast', 'point2', 'must differ from point1 (|point2 - point1|^2 must be > 0)');
     }
+    this.PullState();
     const depth = this.m_rayCastDepth;
     if (depth === this.m_rayCastWrappers.length) {
       this.m_rayCastWrappers.push(new b2WorldRayCastWrapper(this.m_contactManager.m_broadPhase));
@@ -1032,6 +1055,7 @@ export class b2World {
     if ((this.m_flags & b2World.e_locked) === b2World.e_locked) {
       return;
     }
+    this.PullState();
 
     b2Log('b2Vec2 g(%.15lef, %.15lef);\n', this.m_gravity.x, this.m_gravity.y);
     b2Log('m_world->SetGravity(g);\n');

@@ -6,10 +6,13 @@
  *
  * The world keeps owning its bodies, fixtures and joints; the backend owns the motion between
  * synchronisations. b2World.Step delegates to Step (which may return before the step has run),
- * StepAsync and Synchronize resolve once the world's objects show the backend's state.
+ * StepAsync and Synchronize resolve once the world shows the backend's state. A synchronisation
+ * advances b2World.m_stateEpoch and keeps the state on the backend's side; each body fetches its
+ * own (PullBody) when it is first read, and queries, ray casts and the debug draw fetch all (PullAll).
  */
 
 import { b2Contact } from './contacts/b2Contact';
+import type { b2Body } from './b2Body';
 import type { b2Fixture } from './b2Fixture';
 import type { b2World } from './b2World';
 import { b2ContactFilter, b2ContactImpulse, b2ContactListener } from './b2WorldCallbacks';
@@ -41,8 +44,16 @@ export interface b2WorldBackend {
   Step(dt: number, velocityIterations: number, positionIterations: number): void;
   /** A Step, then Synchronize. */
   StepAsync(dt: number, velocityIterations: number, positionIterations: number): Promise<void>;
-  /** Resolves once the world's objects show the state after every step taken so far. */
+  /**
+   * Resolves once the world shows the state after every step taken so far: the contact events
+   * delivered, and the bodies' state fetched as they are read (PullBody) after the backend advances
+   * b2World.m_stateEpoch.
+   */
   Synchronize(): Promise<void>;
+  /** Writes the last synchronisation's motion, awake flag and sleep time into `body`. */
+  PullBody(body: b2Body): void;
+  /** Every body's last synchronised state, and the engine's broad-phase proxies moved to it. */
+  PullAll(): void;
 }
 
 function listenerOverrides(listener: object | null, method: b2OverridableCallback): boolean {

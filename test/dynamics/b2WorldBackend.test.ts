@@ -1,10 +1,11 @@
 /*
  * The backend hooks of b2World (SetBackend, GetBackend, StepAsync, Synchronize, the branch in
- * Step) with the JavaScript engine and with a recording stand-in backend, and the engine functions
- * handed to a backend (b2WorldBackendEngine).
+ * Step, the state fetched as it is read) with the JavaScript engine and with recording stand-in
+ * backends, and the engine functions handed to a backend (b2WorldBackendEngine).
  */
 
 import { describe, expect, it } from 'vitest';
+import { b2AABB } from '../../src/collision/b2Collision';
 import { b2PolygonShape } from '../../src/collision/shapes/b2PolygonShape';
 import { b2Vec2 } from '../../src/common/b2Math';
 import { b2BodyDef, b2BodyType } from '../../src/dynamics/b2Body';
@@ -14,6 +15,7 @@ import { b2WorldBackendEngineFunctions } from '../../src/dynamics/b2WorldBackend
 import type { b2WorldBackend, b2WorldBackendEngine } from '../../src/dynamics/b2WorldBackend';
 import { b2ContactFilter, b2ContactImpulse, b2ContactListener } from '../../src/dynamics/b2WorldCallbacks';
 import { b2Contact } from '../../src/dynamics/contacts/b2Contact';
+import { b2RevoluteJoint, b2RevoluteJointDef } from '../../src/dynamics/joints/b2RevoluteJoint';
 import { Box2D } from '../../src/index';
 
 const h = 1 / 60;
@@ -63,6 +65,36 @@ class StandIn implements b2WorldBackend {
   }
   async Synchronize(): Promise<void> {
     this.calls.push('Synchronize');
+  }
+  PullBody(body: b2Body): void {
+    this.calls.push('PullBody');
+  }
+  PullAll(): void {
+    this.calls.push('PullAll');
+  }
+}
+
+/**
+ * A backend whose synchronisations move every body up by 1 m: it keeps the state on its side and
+ * advances the world's epoch, as the WebGPU backend does; records what the world pulls.
+ */
+class Lifting extends StandIn {
+  readonly pulled: b2Body[] = [];
+  pulls = 0;
+  private readonly lift = new Map<b2Body, number>();
+
+  override async Synchronize(): Promise<void> {
+    await super.Synchronize();
+    for (let b = this.world!.GetBodyList(); b !== null; b = b.GetNext()) this.lift.set(b, (this.lift.get(b) ?? 0) + 1);
+    this.world!.m_stateEpoch++;
+  }
+  override PullBody(body: b2Body): void {
+    this.pulled.push(body);
+    body.m_xf.p.y = body.m_sweep.c.y = 100 + (this.lift.get(body) ?? 0);
+  }
+  override PullAll(): void {
+    this.pulls++;
+    for (let b = this.world!.GetBodyList(); b !== null; b = b.GetNext()) b.PullState();
   }
 }
 
@@ -131,6 +163,78 @@ describe('b2World backend hooks', () => {
     expect(inside).not.toBeNull();
     await expect(inside!).rejects.toThrow(/SetBackend/);
     expect(world.GetBackend()).toBeNull();
+  });
+});
+
+describe('state fetched as it is read, on a backend that keeps it (b2World.m_stateEpoch)', () => {
+  it('a synchronisation moves no body; each body fetches its state when one of its methods first reads it, once per synchronisation', async () => {
+    const { world, ground, box } = scene();
+    const backend = new Lifting();
+    await world.SetBackend(backend);
+    await world.Synchronize();
+    expect(backend.pulled).toEqual([]);
+    expect(box.GetPosition().y).toBe(101);
+    expect(box.GetWorldCenter().y).toBe(101);
+    expect(box.IsAwake()).toBe(true);
+    expect(backend.pulled).toEqual([box]);
+    await world.Synchronize();
+    await world.Synchronize();
+    // Two synchronisations later, one fetch brings the latest state; the ground was never read.
+    expect(box.GetLinearVelocity().x).toBe(0);
+    expect(box.GetPosition().y).toBe(103);
+    expect(backend.pulled).toEqual([box, box]);
+    expect(backend.pulled).not.toContain(ground);
+    // A body created after a synchronisation has its own state already.
+    const def = new b2BodyDef();
+    def.position.Set(5, 5);
+    const fresh = world.CreateBody(def);
+    expect(fresh.GetPosition().y).toBe(5);
+    expect(backend.pulled).toHaveLength(2);
+  });
+
+  it('a setter fetches first, so the value it sets is not overwritten by a later fetch of the same state', async () => {
+    const { world, box } = scene();
+    const backend = new Lifting();
+    await world.SetBackend(backend);
+    await world.Synchronize();
+    box.SetLinearVelocity(new b2Vec2(3, 0));
+    expect(backend.pulled).toEqual([box]);
+    expect(box.GetPosition().y).toBe(101);
+    expect(box.GetLinearVelocity().x).toBe(3);
+    expect(backend.pulled).toEqual([box]);
+  });
+
+  it('queries, ray casts, the debug draw and fixtures\' AABBs fetch every body first (PullAll); joint getters fetch their bodies', async () => {
+    const { world, box } = scene();
+    const backend = new Lifting();
+    await world.SetBackend(backend);
+    await world.Synchronize();
+    const aabb = new b2AABB();
+    aabb.lowerBound.Set(-1, -1);
+    aabb.upperBound.Set(1, 1);
+    world.QueryAABB({ ReportFixture: () => true }, aabb);
+    expect(backend.pulls).toBe(1);
+    world.RayCast({ ReportFixture: () => 1 }, new b2Vec2(0, 5), new b2Vec2(0, -5));
+    box.GetFixtureList()!.GetAABB(0);
+    expect(backend.pulls).toBe(3);
+    expect(backend.pulled).toHaveLength(2); // both bodies, once
+    await world.Synchronize();
+    const jd = new b2RevoluteJointDef();
+    jd.bodyA = world.GetBodyList()!.GetNext()!;
+    jd.bodyB = box;
+    jd.collideConnected = false;
+    const joint = world.CreateJoint(jd) as b2RevoluteJoint;
+    backend.pulled.length = 0;
+    await world.Synchronize();
+    joint.GetJointAngle();
+    expect(new Set(backend.pulled)).toEqual(new Set([box, jd.bodyA]));
+  });
+
+  it('on the JavaScript engine the epoch never moves and nothing is fetched: the golden bits stay (see the golden suites)', () => {
+    const { world, box } = scene();
+    for (let i = 0; i < 30; ++i) world.Step(h, 8, 3);
+    expect(world.m_stateEpoch).toBe(0);
+    expect(box.m_stateEpoch).toBe(0);
   });
 });
 

@@ -434,6 +434,56 @@ describeGpu('WebGPUBackend: the world API on the GPU', (ctx) => {
     await world.SetBackend(null);
   }, 300_000);
 
+  it('the getters show the last synchronisation bit for bit, each body fetched when first read; between synchronisations they keep it; RayCast sees it', async () => {
+    const { world, boxes } = dropScene();
+    const backend = await WebGPUBackend.create({ context: ctx });
+    await world.SetBackend(backend);
+    for (let i = 0; i < 8; ++i) {
+      world.Step(DT, 8, 3);
+      if (i % 4 === 3) await world.Synchronize();
+    }
+    const epoch = world.m_stateEpoch;
+    expect(epoch).toBeGreaterThan(0);
+    // The same state in bulk (no steps since the synchronisation), as float64 like the getters.
+    const slots = backend.stepper!.mirror.bodySlotCount;
+    const synced = new Float64Array(4 * slots);
+    await backend.readTransforms(synced);
+    // No body has fetched it yet; box 0 does when read, before more steps are taken.
+    expect(boxes.map((b) => b.m_stateEpoch === epoch)).toEqual([false, false, false, false, false]);
+    const first = { p: { ...boxes[0].GetPosition() }, v: boxes[0].GetLinearVelocity(), w: boxes[0].GetAngularVelocity() };
+    expect(boxes.map((b) => b.m_stateEpoch === epoch)).toEqual([true, false, false, false, false]);
+    for (let i = 0; i < 4; ++i) world.Step(DT, 8, 3);
+    await backend.submitted();
+    // Four steps later, unsynchronised: every body still shows the synchronised state.
+    for (const b of boxes) {
+      const slot = backend.bodySlot(b);
+      const xf = b.GetTransform();
+      expect([xf.p.x, xf.p.y, xf.q.c, xf.q.s]).toEqual([synced[4 * slot], synced[4 * slot + 1], synced[4 * slot + 2], synced[4 * slot + 3]]);
+    }
+    expect({ ...boxes[0].GetPosition() }).toEqual(first.p);
+    expect(boxes[0].GetLinearVelocity()).toEqual(first.v);
+    expect(boxes[0].GetAngularVelocity()).toBe(first.w);
+    // The ray down through box 3 hits its top where the synchronisation put it.
+    const x = boxes[3].GetPosition().x;
+    let hit = NaN;
+    world.RayCast(
+      {
+        ReportFixture: (_f: b2Fixture, point: b2Vec2, _n: b2Vec2, fraction: number) => {
+          hit = point.y;
+          return fraction;
+        },
+      },
+      new b2Vec2(x, 5),
+      new b2Vec2(x, -5),
+    );
+    expect(Math.abs(hit - (boxes[3].GetPosition().y + 0.5))).toBeLessThan(1e-3);
+    // The next synchronisation moves on to the four steps' state (box 4, dropped from 1.5 m, still falls).
+    const before = boxes[4].GetPosition().y;
+    await world.Synchronize();
+    expect(boxes[4].GetPosition().y).toBeLessThan(before);
+    await world.SetBackend(null);
+  }, 300_000);
+
   it('destroy() frees a discarded world\'s GPU buffers without reading it back; the backend is finished and says so', async () => {
     const { world } = dropScene();
     const backend = await WebGPUBackend.create({ context: ctx });

@@ -214,8 +214,8 @@ async function onGpuCountingReads(ctx: GpuContext, world: b2World): Promise<numb
   await world.SetBackend(backend);
   const stepper = backend.stepper!;
   const ranges: number[] = [];
-  const read = stepper.readBodies.bind(stepper);
-  stepper.readBodies = (extras: GpuReadRange[] = []) => {
+  const read = stepper.readState.bind(stepper);
+  stepper.readState = (extras: GpuReadRange[] = []) => {
     ranges.push(extras.length);
     return read(extras);
   };

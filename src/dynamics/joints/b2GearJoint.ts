@@ -151,6 +151,8 @@ export class b2GearJoint extends b2Joint {
     this.m_bodyA = this.m_joint1.GetBodyB();
 
     // Get geometry of joint1
+    this.m_bodyA.PullState();
+    this.m_bodyC.PullState();
     const xfA = this.m_bodyA.m_xf;
     const aA = this.m_bodyA.m_sweep.a;
     const xfC = this.m_bodyC.m_xf;
@@ -182,6 +184,8 @@ export class b2GearJoint extends b2Joint {
     this.m_bodyB = this.m_joint2.GetBodyB();
 
     // Get geometry of joint2
+    this.m_bodyB.PullState();
+    this.m_bodyD.PullState();
     const xfB = this.m_bodyB.m_xf;
     const aB = this.m_bodyB.m_sweep.a;
     const xfD = this.m_bodyD.m_xf;

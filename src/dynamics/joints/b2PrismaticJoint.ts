@@ -653,6 +653,8 @@ export class b2PrismaticJoint extends b2Joint {
   GetJointSpeed(): number {
     const bA = this.m_bodyA;
     const bB = this.m_bodyB;
+    bA.PullState();
+    bB.PullState();
 
     const rA = b2MulRV(bA.m_xf.q, b2SubVV(this.m_localAnchorA, bA.m_sweep.localCenter, s_rA), s_rA);
     const rB = b2MulRV(bB.m_xf.q, b2SubVV(this.m_localAnchorB, bB.m_sweep.localCenter, s_rB), s_rB);

@@ -404,6 +404,8 @@ export class b2RevoluteJoint extends b2Joint {
   GetJointAngle(): number {
     const bA = this.m_bodyA;
     const bB = this.m_bodyB;
+    bA.PullState();
+    bB.PullState();
     return bB.m_sweep.a - bA.m_sweep.a - this.m_referenceAngle;
   }
 
@@ -411,6 +413,8 @@ export class b2RevoluteJoint extends b2Joint {
   GetJointSpeed(): number {
     const bA = this.m_bodyA;
     const bB = this.m_bodyB;
+    bA.PullState();
+    bB.PullState();
     return bB.m_angularVelocity - bA.m_angularVelocity;
   }
 

@@ -512,6 +512,8 @@ export class b2WheelJoint extends b2Joint {
 
   /** Get the current joint translation speed, usually in meters per second. */
   GetJointSpeed(): number {
+    this.m_bodyA.PullState();
+    this.m_bodyB.PullState();
     const wA = this.m_bodyA.m_angularVelocity;
     const wB = this.m_bodyB.m_angularVelocity;
     return wB - wA;
