@@ -34,6 +34,11 @@
  * is not a steady-state cost), `--steps` more steps not awaited ({ wait: false }, up to four in
  * flight) give the wall time per step of a stream of steps, and the host time each step spent
  * recording and waiting for a free read-back buffer (the GPU being the bottleneck).
+ * World API: the same world built again and attached to a WebGPUBackend (SetBackend timed), then
+ * GPU_WARMUP synchronised steps, then `--steps` steps of world.Step + await world.Synchronize() (the
+ * Step call and the synchronisation timed apart), the same with a synchronisation every 4 steps,
+ * with the bulk read of every transform after the synchronisation (backend.readTransforms), and
+ * with the bulk read alone: what an application pays through the documented path.
  * JS: the same world built again, WARMUP steps, then world.Step timed per step, `--steps` steps or
  * until `--js-budget` seconds have passed, for sizes up to `--js-max`. Times are medians.
  * JS/GPU is the throughput ratio (JS ms / GPU ms: above 1 the GPU steps faster). The crossover per
@@ -54,6 +59,7 @@ import { b2FixtureDef } from '../src/dynamics/b2Fixture';
 import { b2World } from '../src/dynamics/b2World';
 import { requestGpu } from '../src-gpu/device';
 import type { GpuContext } from '../src-gpu/device';
+import { WebGPUBackend } from '../src-gpu/backend';
 import { GpuStepper } from '../src-gpu/stepper';
 import { box, circle, crossover, fmt, logLogChart, median, rng, sizeText } from './gpu-support';
 import type { Crossover } from './gpu-support';
@@ -234,6 +240,81 @@ async function runGpu(ctx: GpuContext, world: b2World, steps: number): Promise<G
   }
 }
 
+/**
+ * The world API an application uses (WebGPUBackend), on a world built afresh: attaching it, and
+ * per step (medians) Step + Synchronize every step with its split, Step + Synchronize every 4 steps,
+ * Step + Synchronize + the bulk read of every transform, and Step + the bulk read alone.
+ */
+interface WorldApiRow {
+  /** world.SetBackend(backend) (the pipelines are compiled already). */
+  attachMs: number;
+  /** Step then await Synchronize, each step: wall, the Step call, and the Synchronize. */
+  syncEach: { wallMs: number; stepMs: number; syncMs: number };
+  /** Four Steps, then await Synchronize: wall per step. */
+  syncEvery4Ms: number;
+  /** Step, await Synchronize, await readTransforms of every body. */
+  syncAndBulkMs: number;
+  /** Step, await readTransforms of every body (no Synchronize). */
+  bulkMs: number;
+}
+
+async function runWorldApi(ctx: GpuContext, world: b2World, steps: number): Promise<WorldApiRow> {
+  const backend = await WebGPUBackend.create({ context: ctx });
+  const a0 = performance.now();
+  await world.SetBackend(backend);
+  const attachMs = performance.now() - a0;
+  try {
+    const out = new Float32Array(4 * backend.stepper!.mirror.bodySlotCount);
+    const step = () => world.Step(DT, VELOCITY_ITERATIONS, POSITION_ITERATIONS);
+    for (let i = 0; i < GPU_WARMUP; ++i) {
+      step();
+      await world.Synchronize();
+    }
+    const wall: number[] = [];
+    const stepCall: number[] = [];
+    const sync: number[] = [];
+    for (let i = 0; i < steps; ++i) {
+      const t0 = performance.now();
+      step();
+      const t1 = performance.now();
+      await world.Synchronize();
+      const t2 = performance.now();
+      wall.push(t2 - t0);
+      stepCall.push(t1 - t0);
+      sync.push(t2 - t1);
+    }
+    const every4: number[] = [];
+    for (let i = 0; i < Math.max(1, Math.round(steps / 4)); ++i) {
+      const t0 = performance.now();
+      for (let k = 0; k < 4; ++k) step();
+      await world.Synchronize();
+      every4.push((performance.now() - t0) / 4);
+    }
+    const syncAndBulk: number[] = [];
+    const bulk: number[] = [];
+    for (let i = 0; i < steps; ++i) {
+      const t0 = performance.now();
+      step();
+      await world.Synchronize();
+      await backend.readTransforms(out);
+      syncAndBulk.push(performance.now() - t0);
+      const t1 = performance.now();
+      step();
+      await backend.readTransforms(out);
+      bulk.push(performance.now() - t1);
+    }
+    return {
+      attachMs,
+      syncEach: { wallMs: median(wall), stepMs: median(stepCall), syncMs: median(sync) },
+      syncEvery4Ms: median(every4),
+      syncAndBulkMs: median(syncAndBulk),
+      bulkMs: median(bulk),
+    };
+  } finally {
+    await backend.destroy();
+  }
+}
+
 interface JsRow {
   ms: number;
   steps: number;
@@ -259,6 +340,8 @@ interface Row {
   buildMs: number;
   gpu: GpuRow | null;
   gpuError: string | null;
+  api: WorldApiRow | null;
+  apiError: string | null;
   js: JsRow | null;
   jsError: string | null;
 }
@@ -286,6 +369,25 @@ function markdown(rows: Row[], crossovers: Crossover[], meta: Record<string, unk
   }
   lines.push('', 'Crossover (awaited GPU step faster than the engine):', '');
   for (const c of crossovers) lines.push(`- ${c.scene}: ${c.text}`);
+  lines.push(
+    '',
+    '## The world API (WebGPUBackend), per step (ms)',
+    '',
+    '| scene | bodies | build the world (µs a body) | SetBackend | Step + Synchronize | of which Step | of which Synchronize | Synchronize every 4 steps | Step + Synchronize + bulk read | Step + bulk read | Step + Synchronize / GpuStepper awaited |',
+    '| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |',
+  );
+  for (const r of rows) {
+    const a = r.api;
+    if (a === null) {
+      lines.push(`| ${r.scene} | ${r.bodies} | ${fmt((1000 * r.buildMs) / r.bodies)} | failed: ${r.apiError ?? '–'} | | | | | | | |`);
+      continue;
+    }
+    const ratio = r.gpu ? fmt(a.syncEach.wallMs / r.gpu.wallMs) : '–';
+    lines.push(
+      `| ${r.scene} | ${r.bodies} | ${fmt((1000 * r.buildMs) / r.bodies)} | ${fmt(a.attachMs)} | ${fmt(a.syncEach.wallMs)} | ${fmt(a.syncEach.stepMs)} | ${fmt(a.syncEach.syncMs)} | ` +
+        `${fmt(a.syncEvery4Ms)} | ${fmt(a.syncAndBulkMs)} | ${fmt(a.bulkMs)} | ${ratio} |`,
+    );
+  }
   lines.push('', '## Host time of an awaited GPU step (ms)', '', '| scene | bodies | setup (new GpuStepper) | mirror sync and other | record | submit call | wait | not awaited: record + submit | not awaited: wait for room | not-awaited steps truncated |', '| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |');
   for (const r of rows) {
     const g = r.gpu;
@@ -310,6 +412,9 @@ function markdown(rows: Row[], crossovers: Crossover[], meta: Record<string, unk
     'other" is the wall time of step() outside the narrow phase\'s recording, submit and wait, mostly GpuWorld.sync().',
     'Not awaited: per step, host time recording and submitting, and waiting for a free read-back buffer (four in',
     'flight: the wait is the GPU finishing the oldest step; near the not-awaited time per step, the GPU is the limit).',
+    'World API: the same scene built again (build: b2World objects, µs a body) and attached with SetBackend (pipelines',
+    'already compiled); then world.Step and await world.Synchronize() (the bodies fetch their state when read: none is',
+    'read here), every step and every 4 steps, and with the bulk read of every transform (backend.readTransforms).',
   );
   return lines.join('\n') + '\n';
 }
@@ -376,7 +481,7 @@ async function main(): Promise<number> {
   const started = performance.now();
   for (const n of sizes) {
     for (const scene of scenes) {
-      const row: Row = { scene, bodies: n, buildMs: 0, gpu: null, gpuError: null, js: null, jsError: null };
+      const row: Row = { scene, bodies: n, buildMs: 0, gpu: null, gpuError: null, api: null, apiError: null, js: null, jsError: null };
       try {
         const b0 = performance.now();
         const world = buildWorld(scene, n);
@@ -384,6 +489,11 @@ async function main(): Promise<number> {
         row.gpu = await runGpu(ctx, world, steps);
       } catch (err) {
         row.gpuError = message(err);
+      }
+      try {
+        row.api = await runWorldApi(ctx, buildWorld(scene, n), steps);
+      } catch (err) {
+        row.apiError = message(err);
       }
       if (n <= jsMax) {
         try {
@@ -399,6 +509,7 @@ async function main(): Promise<number> {
           (g
             ? `contacts ${g.contacts} (${g.touching} touching), ${g.dispatches} dispatches; gpu wall ${fmt(g.wallMs)} ms, not awaited ${fmt(g.deferredMs)} ms, device ${fmt(g.deviceMs)} ms`
             : `gpu failed: ${row.gpuError}`) +
+          `; world API ${row.api ? `attach ${fmt(row.api.attachMs)} ms, step + sync ${fmt(row.api.syncEach.wallMs)} ms, + bulk ${fmt(row.api.syncAndBulkMs)} ms` : (row.apiError ?? '–')}` +
           `; js ${row.js ? `${fmt(row.js.ms)} ms` : (row.jsError ?? '–')} [build ${fmt(row.buildMs)} ms; ${((performance.now() - started) / 1000).toFixed(0)} s]`,
       );
     }
@@ -437,7 +548,7 @@ async function main(): Promise<number> {
   console.error(`wrote ${path.join(outDir, 'gpu-step.{json,md,svg}')}`);
   finished = true;
   ctx.destroy();
-  return rows.some((r) => r.gpuError !== null || r.jsError !== null) ? 1 : 0;
+  return rows.some((r) => r.gpuError !== null || r.apiError !== null || r.jsError !== null) ? 1 : 0;
 }
 
 main().then(

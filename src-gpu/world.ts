@@ -532,6 +532,7 @@ export class GpuWorld {
     // otherwise only what the change log names (and every joint: they report nothing).
     const log = this.changes;
     const full = !this.ownsMotion || log.structure || this.wakeAll || world.m_changeListener !== log;
+    if (full) this.reserveFor(world);
     if (full) this.syncBodies(world, gen, stats);
     else log.bodies.forEach(this.packChangedBody);
 
@@ -573,6 +574,31 @@ export class GpuWorld {
     const queue = this.ctx.device.queue;
     for (const table of this.allTables) table.flush(queue, stats.upload);
     return stats;
+  }
+
+  /**
+   * Grows the tables once to what the world holds, instead of doubling them over and over while a
+   * large world is first walked (each doubling a new buffer and shadow, and work for the collector).
+   */
+  private reserveFor(world: b2World): void {
+    const bodies = world.m_bodyCount;
+    if (bodies <= this.bodyXf.capacity) return;
+    let fixtures = 0;
+    let proxies = 0;
+    let shapes = this.pool.top;
+    for (let b = world.m_bodyList; b; b = b.m_next) {
+      fixtures += b.m_fixtureCount;
+      for (let f = b.m_fixtureList; f; f = f.m_next) {
+        proxies += f.m_proxyCount;
+        shapes += shapeSize(f);
+      }
+    }
+    this.shapePool.reserve(shapes);
+    for (const table of [this.bodyXf, this.bodyCell, this.bodySweep, this.bodyVel, this.bodyForce, this.bodyMass, this.bodyParams, this.bodyFlags, this.bodyAwake, this.jointRange]) {
+      table.reserve(bodies);
+    }
+    for (const table of [this.fixtureShape, this.fixtureMaterial]) table.reserve(fixtures);
+    for (const table of [this.proxyRef, this.proxyFilter, this.proxyKey]) table.reserve(proxies);
   }
 
   /** Calls `visit` for every body the API changed since the last sync (the change log: applied forces included). */
