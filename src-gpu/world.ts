@@ -103,15 +103,13 @@ function put4(record: Float32Array, at: number, a: number, b: number, c: number,
   record[at + 3] = d;
 }
 
-/** A fixture slot without proxies. */
-const EMPTY_SLOTS: number[] = [];
-
-/** `array`, or a copy of it with its length doubled until `index` fits. */
-function withRoom<T extends Int32Array | Uint32Array>(array: T, index: number): T {
+/** `array`, or a copy of it with its length doubled until `index` fits (new elements `fill`). */
+function withRoom<T extends Int32Array | Uint32Array>(array: T, index: number, fill = 0): T {
   if (index < array.length) return array;
   let size = array.length;
   while (size <= index) size *= 2;
   const grown = new (array.constructor as new (length: number) => T)(size);
+  if (fill !== 0) grown.fill(fill, array.length);
   grown.set(array);
   return grown;
 }
@@ -354,8 +352,13 @@ export class GpuWorld {
   private readonly proxyChild: number[] = [];
   /** Generation of each proxy slot (proxyKey.y). */
   private proxyGeneration = new Uint32Array(64);
-  /** The proxy slots of each fixture slot, by child index. */
-  private readonly fixtureProxies: number[][] = [];
+  /**
+   * The proxy slots of each fixture slot: child 0's (-1 for none), and the other children's for
+   * the fixtures that have more (chains). A typed array rather than an array a fixture: a world of
+   * a million single-child fixtures then makes no million small objects to collect.
+   */
+  private fixtureProxy0 = new Int32Array(64).fill(-1);
+  private readonly fixtureProxyRest = new Map<number, number[]>();
   /** Body slots in body-list order (sync's walk). */
   private walkSlots = new Int32Array(64);
   private walkCount = 0;
@@ -468,8 +471,9 @@ export class GpuWorld {
   /** The slot of child `childIndex` of `fixture`'s proxies, -1 when it has none (inactive body). */
   proxySlot(fixture: b2Fixture, childIndex: number): number {
     const fixtureSlot = this.fixtureSlot(fixture);
-    const slots = fixtureSlot < 0 ? undefined : this.fixtureProxies[fixtureSlot];
-    return slots !== undefined && childIndex < slots.length ? slots[childIndex] : -1;
+    if (fixtureSlot < 0 || fixtureSlot >= this.fixtureProxy0.length || this.fixtureProxy0[fixtureSlot] < 0) return -1;
+    if (childIndex === 0) return this.fixtureProxy0[fixtureSlot];
+    return this.fixtureProxyRest.get(fixtureSlot)?.[childIndex - 1] ?? -1;
   }
   proxyAt(slot: number): { fixture: b2Fixture; childIndex: number } | null {
     const fixture = this.proxyFixture[slot];
@@ -687,7 +691,8 @@ export class GpuWorld {
       this.fixtureShape.commitWords(slot, 0, 0, 0, 0);
       if (this.fixturePoolSize[slot] > 0) this.pool.free(this.fixturePoolOffset[slot], this.fixturePoolSize[slot]);
       this.fixturePoolSize[slot] = 0;
-      this.fixtureProxies[slot] = EMPTY_SLOTS;
+      this.fixtureProxy0[slot] = -1;
+      this.fixtureProxyRest.delete(slot);
     });
     stats.proxies.released = this.proxySlots.sweep(gen, (slot) => {
       this.proxyFixture[slot] = null;
@@ -1059,18 +1064,15 @@ export class GpuWorld {
     // Proxies belong to (fixture slot, child): a fixture slot is reused only after the sync that
     // released it, so the pair names one live proxy.
     const n = f.m_proxyCount;
-    let slots = this.fixtureProxies[fixtureSlot];
-    if (slots === undefined || slots === EMPTY_SLOTS) {
-      if (n === 0) {
-        this.fixtureProxies[fixtureSlot] = EMPTY_SLOTS;
-        return;
-      }
-      slots = [];
-      this.fixtureProxies[fixtureSlot] = slots;
-    }
+    this.fixtureProxy0 = withRoom(this.fixtureProxy0, fixtureSlot, -1);
     // Children beyond n (a body made inactive) are left unmarked: the sweep releases them.
-    if (slots.length > n) slots.length = n;
-    if (n === 0) return;
+    if (n === 0) {
+      this.fixtureProxy0[fixtureSlot] = -1;
+      this.fixtureProxyRest.delete(fixtureSlot);
+      return;
+    }
+    let rest = this.fixtureProxyRest.get(fixtureSlot);
+    if (rest !== undefined && rest.length > n - 1) rest.length = n - 1;
     const filter = f.m_filter;
     const word =
       f.m_shape.m_type | (bodyType << 2) | PROXY_LIVE | (f.m_isSensor ? PROXY_SENSOR : 0) | (jointed ? PROXY_JOINTED : 0);
@@ -1079,14 +1081,17 @@ export class GpuWorld {
     const proxies = this.proxySlots;
     const engineProxies = (f as { m_proxies?: { proxyId: number }[] }).m_proxies;
     for (let child = 0; child < n; ++child) {
-      let slot: number;
+      let slot = child === 0 ? this.fixtureProxy0[fixtureSlot] : (rest?.[child - 1] ?? -1);
       let fresh = false;
-      if (child < slots.length) {
-        slot = slots[child];
-      } else {
+      if (slot < 0) {
         slot = proxies.alloc();
         proxies.items[slot] = fixtureSlot;
-        slots.push(slot);
+        if (child === 0) {
+          this.fixtureProxy0[fixtureSlot] = slot;
+        } else {
+          if (rest === undefined) this.fixtureProxyRest.set(fixtureSlot, (rest = []));
+          rest.push(slot);
+        }
         stats.proxies.created++;
         fresh = true;
       }
