@@ -256,6 +256,11 @@ interface WorldApiRow {
   syncAndBulkMs: number;
   /** Step, await readTransforms of every body (no Synchronize). */
   bulkMs: number;
+  /**
+   * After a synchronisation, world.PullState(): every body fetched and the proxies moved, as a
+   * query does (and as every synchronisation did before bodies fetched their state when read).
+   */
+  pullAllMs: number;
 }
 
 async function runWorldApi(ctx: GpuContext, world: b2World, steps: number): Promise<WorldApiRow> {
@@ -303,8 +308,17 @@ async function runWorldApi(ctx: GpuContext, world: b2World, steps: number): Prom
       await backend.readTransforms(out);
       bulk.push(performance.now() - t1);
     }
+    const pullAll: number[] = [];
+    for (let i = 0; i < Math.max(1, Math.round(steps / 2)); ++i) {
+      step();
+      await world.Synchronize();
+      const t0 = performance.now();
+      world.PullState();
+      pullAll.push(performance.now() - t0);
+    }
     return {
       attachMs,
+      pullAllMs: median(pullAll),
       syncEach: { wallMs: median(wall), stepMs: median(stepCall), syncMs: median(sync) },
       syncEvery4Ms: median(every4),
       syncAndBulkMs: median(syncAndBulk),
@@ -373,19 +387,19 @@ function markdown(rows: Row[], crossovers: Crossover[], meta: Record<string, unk
     '',
     '## The world API (WebGPUBackend), per step (ms)',
     '',
-    '| scene | bodies | build the world (µs a body) | SetBackend | Step + Synchronize | of which Step | of which Synchronize | Synchronize every 4 steps | Step + Synchronize + bulk read | Step + bulk read | Step + Synchronize / GpuStepper awaited |',
-    '| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |',
+    '| scene | bodies | build the world (µs a body) | SetBackend | Step + Synchronize | of which Step | of which Synchronize | Synchronize every 4 steps | Step + Synchronize + bulk read | Step + bulk read | Step + Synchronize / GpuStepper awaited | fetch every body and proxy |',
+    '| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |',
   );
   for (const r of rows) {
     const a = r.api;
     if (a === null) {
-      lines.push(`| ${r.scene} | ${r.bodies} | ${fmt((1000 * r.buildMs) / r.bodies)} | failed: ${r.apiError ?? '–'} | | | | | | | |`);
+      lines.push(`| ${r.scene} | ${r.bodies} | ${fmt((1000 * r.buildMs) / r.bodies)} | failed: ${r.apiError ?? '–'} | | | | | | | | |`);
       continue;
     }
     const ratio = r.gpu ? fmt(a.syncEach.wallMs / r.gpu.wallMs) : '–';
     lines.push(
       `| ${r.scene} | ${r.bodies} | ${fmt((1000 * r.buildMs) / r.bodies)} | ${fmt(a.attachMs)} | ${fmt(a.syncEach.wallMs)} | ${fmt(a.syncEach.stepMs)} | ${fmt(a.syncEach.syncMs)} | ` +
-        `${fmt(a.syncEvery4Ms)} | ${fmt(a.syncAndBulkMs)} | ${fmt(a.bulkMs)} | ${ratio} |`,
+        `${fmt(a.syncEvery4Ms)} | ${fmt(a.syncAndBulkMs)} | ${fmt(a.bulkMs)} | ${ratio} | ${fmt(a.pullAllMs)} |`,
     );
   }
   lines.push('', '## Host time of an awaited GPU step (ms)', '', '| scene | bodies | setup (new GpuStepper) | mirror sync and other | record | submit call | wait | not awaited: record + submit | not awaited: wait for room | not-awaited steps truncated |', '| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |');
@@ -414,7 +428,9 @@ function markdown(rows: Row[], crossovers: Crossover[], meta: Record<string, unk
     'flight: the wait is the GPU finishing the oldest step; near the not-awaited time per step, the GPU is the limit).',
     'World API: the same scene built again (build: b2World objects, µs a body) and attached with SetBackend (pipelines',
     'already compiled); then world.Step and await world.Synchronize() (the bodies fetch their state when read: none is',
-    'read here), every step and every 4 steps, and with the bulk read of every transform (backend.readTransforms).',
+    'read here), every step and every 4 steps, and with the bulk read of every transform (backend.readTransforms);',
+    'last, world.PullState() after a synchronisation: every body fetched and the broad-phase proxies moved, as a query',
+    'does, and as every synchronisation did before bodies fetched their state when read.',
   );
   return lines.join('\n') + '\n';
 }

@@ -200,8 +200,8 @@ export class WebGPUBackend implements b2WorldBackend {
    * A bulk read for renderers and games that want every body: waits for every step called so far
    * and copies, with one map of 28 bytes a body, each body slot's transform into `out` (x, y, cos,
    * sin at 4 * slot; bodySlot(body) gives the slot) and its awake flag into `awake[slot]`. No
-   * per-body objects, and the world's b2Body objects keep their last synchronised state: call
-   * Synchronize where the application reads bodies through the API or needs contact events.
+   * per-body objects, and the world's b2Body objects are not touched: call Synchronize where the
+   * application reads bodies through the API or needs contact events.
    * Slots without a body are written as NaN. Resolves with the slot count.
    */
   async readTransforms(out: Float32Array | Float64Array, awake?: Uint8Array): Promise<number> {
@@ -219,7 +219,7 @@ export class WebGPUBackend implements b2WorldBackend {
    * application throws away (SetBackend(null) would read everything back and rebuild the engine's
    * contacts first). Waits for the steps in flight. The backend is finished: its methods throw
    * from now on, the world's Step and Synchronize with them; world.SetBackend(null) rejects, and
-   * leaves the world on the JavaScript engine with its last synchronised state and no contacts.
+   * leaves the world on the JavaScript engine with the state its bodies last fetched and no contacts.
    */
   async destroy(): Promise<void> {
     const { stepper, events } = this.attached('destroy');
