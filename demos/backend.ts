@@ -25,41 +25,6 @@ export type BackendName = 'js' | 'webgpu';
 
 export const BACKEND_NAMES: readonly BackendName[] = ['js', 'webgpu'];
 
-export interface WebGpuStatus {
-  /** navigator.gpu exists. */
-  api: boolean;
-  /** requestAdapter() gave an adapter. */
-  adapter: boolean;
-  /** The adapter in words (vendor, architecture, description), when there is one. */
-  name: string | null;
-  message: string;
-}
-
-/** Whether this browser has WebGPU and an adapter, in words for the page. */
-export async function detectWebGpu(): Promise<WebGpuStatus> {
-  const gpu = (navigator as Navigator & { gpu?: GPU }).gpu;
-  if (gpu === undefined) {
-    return { api: false, adapter: false, name: null, message: 'This browser lacks WebGPU (no navigator.gpu). The JavaScript backend runs everything.' };
-  }
-  try {
-    const adapter = await gpu.requestAdapter();
-    if (adapter === null) {
-      return {
-        api: true,
-        adapter: false,
-        name: null,
-        message: 'This browser has WebGPU but no adapter (GPU access disabled or blocked). The JavaScript backend runs everything.',
-      };
-    }
-    const info = adapter.info;
-    const software = /swiftshader|llvmpipe|lavapipe|warp/i.test(`${info.vendor} ${info.architecture} ${info.description}`);
-    const name = adapterName({ vendor: info.vendor, architecture: info.architecture, description: info.description, software });
-    return { api: true, adapter: true, name, message: `This browser has WebGPU (adapter: ${name}). Choose the WebGPU backend above to step the tests on it.` };
-  } catch (error) {
-    return { api: true, adapter: false, name: null, message: `WebGPU adapter request failed: ${error instanceof Error ? error.message : String(error)}` };
-  }
-}
-
 export class TestbedBackend {
   /** What the page asks for; a test the GPU refuses still runs on JavaScript (`refusal` says why). */
   chosen: BackendName = 'js';

@@ -6,11 +6,12 @@
  */
 
 import { b2Vec2, b2_dynamicBody, b2_kinematicBody, b2_staticBody } from '../src/index';
-import { BACKEND_NAMES, detectWebGpu, TestbedBackend } from './backend';
+import { BACKEND_NAMES, TestbedBackend } from './backend';
 import type { BackendName } from './backend';
 import { sceneDigests } from './determinism';
 import { srand } from './framework/random';
 import { g_debugDraw } from './framework/render';
+import { detectWebGpu } from './framework/demo';
 import type { DemoPane } from './framework/demo';
 import { kStepSettingKeys, Settings } from './framework/settings';
 import type { StepSettings } from './framework/settings';
@@ -457,7 +458,11 @@ $<HTMLInputElement>('open-json').addEventListener('change', (event) => {
 // ---- Backends: the JavaScript engine, or WebGPU where the browser has an adapter ----
 
 const webgpu = detectWebGpu().then((status) => {
-  webgpuStatus.textContent = status.message;
+  const message =
+    status.name !== null
+      ? `This browser has WebGPU (adapter: ${status.name}). Choose the WebGPU backend above to step the tests on it.`
+      : `${status.reason}. The JavaScript backend runs everything.`;
+  webgpuStatus.textContent = message;
   webgpuStatus.className = `note ${status.adapter ? 'ok' : 'warn'}`;
   document.body.dataset.webgpu = status.adapter ? 'adapter' : status.api ? 'no-adapter' : 'none';
   backendList.querySelector<HTMLOptionElement>('option[value="webgpu"]')!.disabled = !status.adapter;
@@ -468,7 +473,7 @@ const webgpu = detectWebGpu().then((status) => {
 async function chooseBackend(name: BackendName): Promise<BackendName> {
   const status = await webgpu;
   if (name === 'webgpu' && !status.adapter) {
-    showMessage(`WebGPU is not available here (${status.message}); the JavaScript engine runs.`, 'warn');
+    showMessage(`WebGPU is not available here (${status.reason}); the JavaScript engine runs.`, 'warn');
     name = 'js';
   }
   backends.chosen = name;

@@ -7,7 +7,7 @@
  * scripts what runs.
  */
 
-import { adapterName, StepTimes } from '../framework/demo';
+import { adapterName, detectWebGpu, StepTimes } from '../framework/demo';
 import type { DemoPane } from '../framework/demo';
 import { StepChart } from './chart';
 import { BODY_COUNTS, checkConfig, DT, SCENE_NAMES, SCENE_TITLES, TRANSFORM_STRIDE } from './config';
@@ -359,34 +359,19 @@ window.addEventListener('resize', redrawAll);
 
 // ---- WebGPU: is there an adapter? ----
 
-async function detectWebGpu(): Promise<void> {
-  const gpu = (navigator as Navigator & { gpu?: GPU }).gpu;
-  let why: string | null = null;
-  if (gpu === undefined) {
-    why = 'This browser has no WebGPU (navigator.gpu is missing)';
-  } else {
-    try {
-      const adapter = await gpu.requestAdapter();
-      if (adapter === null) why = 'This browser has WebGPU but gave no adapter (GPU access disabled or blocked)';
-      else {
-        const info = adapter.info;
-        const software = (info as GPUAdapterInfo & { isFallbackAdapter?: boolean }).isFallbackAdapter === true || /swiftshader/i.test(`${info.architecture} ${info.description}`);
-        panes[1].adapter = adapterName({ vendor: info.vendor, architecture: info.architecture, description: info.description, software });
-        adapterNote.textContent = `WebGPU adapter: ${panes[1].adapter}.`;
-        adapterNote.className = 'note ok';
-      }
-    } catch (error) {
-      why = `Requesting a WebGPU adapter failed (${error instanceof Error ? error.message : String(error)})`;
-    }
-  }
-  if (why !== null) {
-    panes[1].unavailable = `${why}: the JavaScript engine runs alone.`;
-    adapterNote.textContent = panes[1].unavailable;
-    adapterNote.className = 'note warn';
-    document.body.dataset.webgpu = 'none';
-  } else {
+async function findAdapter(): Promise<void> {
+  const status = await detectWebGpu();
+  if (status.name !== null) {
+    panes[1].adapter = status.name;
+    adapterNote.textContent = `WebGPU adapter: ${status.name}.`;
+    adapterNote.className = 'note ok';
     document.body.dataset.webgpu = 'adapter';
+    return;
   }
+  panes[1].unavailable = `${status.reason}: the JavaScript engine runs alone.`;
+  adapterNote.textContent = panes[1].unavailable;
+  adapterNote.className = 'note warn';
+  document.body.dataset.webgpu = 'none';
 }
 
 // ---- The frame loop ----
@@ -406,7 +391,7 @@ function frame(now: number): void {
 
 config = fromUrl();
 showControls();
-void detectWebGpu().then(() => {
+void findAdapter().then(() => {
   rebuild();
   requestAnimationFrame(frame);
 });

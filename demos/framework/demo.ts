@@ -1,6 +1,7 @@
 /*
  * What every demo page shares: `window.webphysicsDemo`, the state tests and scripts read while a
- * page runs; step times as a median over the last second; and a WebGPU adapter named for people.
+ * page runs; step times as a median over the last second; whether there is WebGPU, and the
+ * adapter named for people.
  */
 
 import type { GpuAdapterSummary } from '../../src-gpu/device';
@@ -32,6 +33,34 @@ export function adapterName(info: Pick<GpuAdapterSummary, 'vendor' | 'architectu
   const parts = [info.vendor, info.architecture, info.description].filter((s) => s !== '');
   const name = parts.length > 0 ? parts.join(' / ') : 'an adapter that gives no name';
   return info.software ? `${name} (software: a CPU emulating a GPU)` : name;
+}
+
+export interface WebGpuStatus {
+  /** navigator.gpu exists. */
+  api: boolean;
+  /** requestAdapter() gave an adapter. */
+  adapter: boolean;
+  /** The adapter in words (adapterName), when there is one. */
+  name: string | null;
+  /** Why there is no adapter, in words; null when there is one. */
+  reason: string | null;
+}
+
+/** Whether this browser (or worker) has WebGPU and an adapter. */
+export async function detectWebGpu(): Promise<WebGpuStatus> {
+  const gpu = (navigator as Navigator & { gpu?: GPU }).gpu;
+  if (gpu === undefined) return { api: false, adapter: false, name: null, reason: 'This browser lacks WebGPU (no navigator.gpu)' };
+  try {
+    const adapter = await gpu.requestAdapter();
+    if (adapter === null) {
+      return { api: true, adapter: false, name: null, reason: 'This browser has WebGPU but no adapter (GPU access disabled or blocked)' };
+    }
+    const info = adapter.info;
+    const software = (info as GPUAdapterInfo & { isFallbackAdapter?: boolean }).isFallbackAdapter === true || /swiftshader|llvmpipe|lavapipe|warp/i.test(`${info.vendor} ${info.architecture} ${info.description}`);
+    return { api: true, adapter: true, name: adapterName({ vendor: info.vendor, architecture: info.architecture, description: info.description, software }), reason: null };
+  } catch (error) {
+    return { api: true, adapter: false, name: null, reason: `The WebGPU adapter request failed (${error instanceof Error ? error.message : String(error)})` };
+  }
 }
 
 /** Step times kept for a second: the median of those, or the last one when the last second had none. */

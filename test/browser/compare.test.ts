@@ -177,7 +177,7 @@ describe('the comparison page without WebGPU', () => {
     const { page, errors } = await open(chromium, '?scene=tumbler&bodies=500');
     const state = await stepped(page, 3);
     expect(state.panes.map((p) => p.backend)).toEqual(['js']);
-    expect(await page.$eval('#adapter', (e) => e.textContent)).toMatch(/^This browser has (no WebGPU|WebGPU but gave no adapter).*: the JavaScript engine runs alone\.$/);
+    expect(await page.$eval('#adapter', (e) => e.textContent)).toMatch(/^This browser (lacks WebGPU|has WebGPU but no adapter).*: the JavaScript engine runs alone\.$/);
     expect(await drawnPixels(page, 'js')).toBeGreaterThan(1000);
     await page.screenshot({ path: path.join(artifacts, 'compare-no-webgpu.png') });
     expect(errors).toEqual([]);
