@@ -1136,7 +1136,7 @@ export class b2World {
         continue;
       }
 
-      if (seed.IsAwake() === false || seed.IsActive() === false) {
+      if ((seed.m_flags & b2Body.e_awakeFlag) === 0 || seed.IsActive() === false) {
         continue;
       }
 
@@ -1333,8 +1333,8 @@ export class b2World {
       const typeB = bB.m_type;
       b2Assert(typeA === b2BodyType.b2_dynamicBody || typeB === b2BodyType.b2_dynamicBody);
 
-      const activeA = bA.IsAwake() && typeA !== b2BodyType.b2_staticBody;
-      const activeB = bB.IsAwake() && typeB !== b2BodyType.b2_staticBody;
+      const activeA = (bA.m_flags & b2Body.e_awakeFlag) !== 0 && typeA !== b2BodyType.b2_staticBody;
+      const activeB = (bB.m_flags & b2Body.e_awakeFlag) !== 0 && typeB !== b2BodyType.b2_staticBody;
 
       // Is at least one body active (awake and dynamic or kinematic)?
       if (activeA === false && activeB === false) {

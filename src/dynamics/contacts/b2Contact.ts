@@ -503,8 +503,9 @@ export class b2Contact {
 
     const bodyA = this.m_fixtureA.GetBody();
     const bodyB = this.m_fixtureB.GetBody();
-    const xfA = bodyA.GetTransform();
-    const xfB = bodyB.GetTransform();
+    // The fields, not GetTransform(): the engine's own step has no backend state to fetch (b2Body.PullState).
+    const xfA = bodyA.m_xf;
+    const xfB = bodyB.m_xf;
 
     // Is this contact a sensor?
     if (sensor) {
