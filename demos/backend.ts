@@ -73,12 +73,6 @@ export class TestbedBackend {
     return this.backend?.readStats ?? null;
   }
 
-  /** Steps the current test on `name` from now on. */
-  async choose(name: BackendName, test: Test): Promise<void> {
-    this.chosen = name;
-    await this.apply(test);
-  }
-
   /**
    * Puts `test` (the current one, or a new or restarted one) on the chosen backend, after any
    * switch or synchronisation already running. A test that replaces another gives the other's GPU
