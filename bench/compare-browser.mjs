@@ -39,6 +39,7 @@ await buildDemos(dir);
 const server = await startServer({ root: dir, port: 0 });
 const browser = await puppeteer.launch({ executablePath: chromiumPath(), headless: true, args: chromiumArgs({ webgpu: true }), protocolTimeout: 600_000 });
 const rows = [];
+const version = await browser.version();
 let adapter = null;
 try {
   for (const scene of scenes) {
@@ -74,12 +75,6 @@ try {
   rmSync(dir, { recursive: true, force: true });
 }
 
-const version = await (async () => {
-  const b = await puppeteer.launch({ executablePath: chromiumPath(), headless: true, args: chromiumArgs() });
-  const v = await b.version();
-  await b.close();
-  return v;
-})();
 const meta = { browser: version, adapter, cpu: `${cpus()[0]?.model ?? 'unknown'} (${cpus().length} threads)`, date: new Date().toISOString(), steps, warmup, budget };
 const fmt = (r) => (r === null ? '–' : `${r.ms < 10 ? r.ms.toFixed(2) : r.ms.toFixed(0)}${r.partial ? '*' : ''}`);
 const lines = [

@@ -17,6 +17,7 @@
 import { WebGPUBackend } from '../src-gpu/backend';
 import { requestGpu } from '../src-gpu/device';
 import type { GpuContext } from '../src-gpu/device';
+import type { GpuReadStats } from '../src-gpu/stepper';
 import { adapterName, StepTimes } from './framework/demo';
 import type { Settings } from './framework/settings';
 import type { Test } from './framework/test';
@@ -69,7 +70,7 @@ export class TestbedBackend {
   }
 
   /** The last read-back's bytes and host time, on WebGPU. */
-  get readStats(): { bytes: number; unpackMs: number } | null {
+  get readStats(): GpuReadStats | null {
     return this.backend?.readStats ?? null;
   }
 
@@ -204,7 +205,7 @@ export class TestbedBackend {
     return [
       `backend: WebGPU, step + read-back ${step} (median, last second)`,
       `adapter: ${this.adapter}`,
-      `read-back per frame: ${read === null ? '–' : `${(read.bytes / 1024).toFixed(1)} KB, ${read.unpackMs.toFixed(2)} ms to unpack`}`,
+      `read-back per frame: ${read === null ? '–' : `${(read.bytes / 1024).toFixed(1)} KB, ${read.unpackMs.toFixed(2)} ms to unpack, ${read.pullMs.toFixed(2)} ms to update the bodies`}`,
     ];
   }
 }

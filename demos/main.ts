@@ -499,7 +499,7 @@ function refreshBackend(): void {
     const read = backends.readStats;
     text =
       `Stepping on WebGPU (${backends.adapter}). Each frame reads the world back once (world.Synchronize: positions, ` +
-      `velocities, contact events)${read === null ? '' : `: ${(read.bytes / 1024).toFixed(1)} KB, ${read.unpackMs.toFixed(2)} ms on the host to unpack`}; ` +
+      `velocities, contact events)${read === null ? '' : `: ${(read.bytes / 1024).toFixed(1)} KB, ${read.unpackMs.toFixed(2)} ms on the host to unpack and ${read.pullMs.toFixed(2)} ms to update the bodies drawn`}; ` +
       `the drawing is one step behind the GPU. ${backends.skippedFrames} frames skipped while a read-back ran.`;
   }
   backendNote.textContent = text;

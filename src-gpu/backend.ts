@@ -186,7 +186,7 @@ export class WebGPUBackend implements b2WorldBackend {
     return this.countsKnown ? this.counts : null;
   }
 
-  /** Bytes and host time of the last read-back (Synchronize, StepAsync, readTransforms). */
+  /** Bytes and host time of the last read-back (Synchronize, StepAsync, readTransforms), and of the last PullAll. */
   get readStats(): GpuReadStats | null {
     return this.stepperNow?.readStats ?? null;
   }
@@ -242,12 +242,14 @@ export class WebGPUBackend implements b2WorldBackend {
     const world = this.world;
     const stepper = this.stepperNow;
     if (world === null || stepper === null || this.pulledEpoch === world.m_stateEpoch) return;
+    const started = performance.now();
     stepper.pullAll(world.m_stateEpoch);
     // Queries (QueryAABB, RayCast) see the synchronised positions. The GPU finds its own pairs, so
     // the moves are not kept for the engine's pair search (Detach touches every proxy instead).
     for (let b = world.m_bodyList; b; b = b.m_next) b.SynchronizeFixtures();
     world.m_contactManager.m_broadPhase.m_moveCount = 0;
     this.pulledEpoch = world.m_stateEpoch;
+    stepper.readStats.pullMs = performance.now() - started;
   }
 
   Attach(world: b2World, engine: b2WorldBackendEngine): void {

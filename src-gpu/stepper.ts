@@ -81,6 +81,11 @@ export interface GpuReadStats {
   bytes: number;
   /** Milliseconds from the map resolving to the data written out (the host's share of the read). */
   unpackMs: number;
+  /**
+   * Milliseconds the last time every body was brought to a read-back's state (WebGPUBackend's
+   * PullAll: the bodies written and the engine's proxies moved, before a query or the debug draw).
+   */
+  pullMs: number;
 }
 
 export class GpuStepper {
@@ -93,7 +98,7 @@ export class GpuStepper {
   /** Steps taken on the GPU. */
   steps = 0;
   /** What the last readState() or readTransforms() cost (unpacking: joints and extras; bodies are pulled later). */
-  readonly readStats: GpuReadStats = { bytes: 0, unpackMs: 0 };
+  readonly readStats: GpuReadStats = { bytes: 0, unpackMs: 0, pullMs: 0 };
   private invDt0: number;
   /** Two staging buffers for readState: the one holding the last state stays mapped while the other is read into. */
   private readonly bodyStaging: [StagingBuffer, StagingBuffer];
@@ -212,10 +217,14 @@ export class GpuStepper {
     return n;
   }
 
-  /** The state read last (readState) into `body`; false when that read has none for it (a body new since). */
-  pullBody(body: b2Body): boolean {
+  /** The state read last (readState) into `body`, when that read has it (not for a body new since). */
+  pullBody(body: b2Body): void {
     const slot = this.mirror.bodySlot(body);
-    if (slot < 0 || slot >= this.stateSlots) return false;
+    if (slot >= 0 && slot < this.stateSlots) this.writeBody(slot, body);
+  }
+
+  /** Body slot `slot` of the last read state into `body`. */
+  private writeBody(slot: number, body: b2Body): void {
     const { xf, cell, sweep, vel, awake } = this.state;
     const S = this.mirror.cellSize;
     const ox = cell[2 * slot] * S;
@@ -237,7 +246,6 @@ export class GpuStepper {
     body.m_angularVelocity = vel[4 * slot + 2];
     body.m_sleepTime = sweep[s + 7];
     body.m_flags = awake[slot] !== 0 ? body.m_flags | e_awakeFlag : body.m_flags & ~e_awakeFlag;
-    return true;
   }
 
   /**
@@ -250,7 +258,7 @@ export class GpuStepper {
     for (let slot = 0; slot < this.stateSlots; ++slot) {
       const b = mirror.bodyAt(slot);
       if (b === null || (epoch !== undefined && b.m_stateEpoch === epoch)) continue;
-      this.pullBody(b);
+      this.writeBody(slot, b);
       if (epoch !== undefined) b.m_stateEpoch = epoch;
       written++;
     }

@@ -536,9 +536,12 @@ export class GpuWorld {
     // otherwise only what the change log names (and every joint: they report nothing).
     const log = this.changes;
     const full = !this.ownsMotion || log.structure || this.wakeAll || world.m_changeListener !== log;
-    if (full) this.reserveFor(world);
-    if (full) this.syncBodies(world, gen, stats);
-    else log.bodies.forEach(this.packChangedBody);
+    if (full) {
+      this.reserveFor(world);
+      this.syncBodies(world, gen, stats);
+    } else {
+      log.bodies.forEach(this.packChangedBody);
+    }
 
     // 2. Joints, and the per-body lists of joints that turn collision off (only a structural
     // change alters those).

@@ -59,6 +59,8 @@ export class PaneView {
   readonly canvas: HTMLCanvasElement;
   private readonly ctx: CanvasRenderingContext2D;
   private image: ImageData | null = null;
+  /** A polygon's vertices on screen (b2_maxPolygonVertices x, y pairs). */
+  private readonly screen = new Float64Array(16);
   width = 0;
   height = 0;
 
@@ -109,8 +111,10 @@ export class PaneView {
       pixels = this.image.data;
       new Uint32Array(pixels.buffer).fill(0);
     }
-    // The screen box of fixture f, in device pixels: [x0, y0, x1, y1].
+    // The screen box of fixture f, in device pixels: [x0, y0, x1, y1]; a polygon's vertices on
+    // screen in `screen` (x, y pairs), for its path.
     const box = [0, 0, 0, 0];
+    const screen = this.screen;
     const screenBox = (f: number, x: number, y: number, c: number, sn: number): void => {
       const at = fixtureStart[f];
       if (fixtureKind[f] === GEOMETRY_CIRCLE) {
@@ -130,6 +134,8 @@ export class PaneView {
         const ly = points[at + 2 * i + 1];
         const px = ox + s * (x + c * lx - sn * ly);
         const py = oy - s * (y + sn * lx + c * ly);
+        screen[2 * i] = px;
+        screen[2 * i + 1] = py;
         box[0] = Math.min(box[0], px);
         box[1] = Math.min(box[1], py);
         box[2] = Math.max(box[2], px);
@@ -187,7 +193,6 @@ export class PaneView {
         screenBox(f, x, y, c, sn);
         if (box[2] < 0 || box[0] >= W || box[3] < 0 || box[1] >= H) continue;
         if (pixels !== null && small()) continue;
-        const at = fixtureStart[f];
         if (fixtureKind[f] === GEOMETRY_CIRCLE) {
           const sx = 0.5 * (box[0] + box[2]);
           const sy = 0.5 * (box[1] + box[3]);
@@ -200,14 +205,8 @@ export class PaneView {
             ctx.lineTo(sx + r * c, sy - r * sn);
           }
         } else {
-          for (let i = 0; i < fixtureCount[f]; ++i) {
-            const lx = points[at + 2 * i];
-            const ly = points[at + 2 * i + 1];
-            const sx = ox + s * (x + c * lx - sn * ly);
-            const sy = oy - s * (y + sn * lx + c * ly);
-            if (i === 0) ctx.moveTo(sx, sy);
-            else ctx.lineTo(sx, sy);
-          }
+          ctx.moveTo(screen[0], screen[1]);
+          for (let i = 1; i < fixtureCount[f]; ++i) ctx.lineTo(screen[2 * i], screen[2 * i + 1]);
           ctx.closePath();
         }
         if (++inPath === CHUNK) {

@@ -73,7 +73,8 @@ class DestructionListener extends b2DestructionListener {
  * whole step without calling back into JavaScript, so PreSolve, where the Testbed records its
  * contact points, cannot run; the backend delivers BeginContact, EndContact and PostSolve after
  * the step. This listener has only the ones the test overrides (the backend reads back and logs
- * only what a listener has), and PostSolve records the contact points when they are drawn.
+ * only what a listener has), and PostSolve records the contact points when they are drawn or
+ * the test uses them (UsesContactPoints).
  */
 function gpuContactListener(test: Test, recordPoints: boolean): b2ContactListener {
   const listener = new b2ContactListener();
@@ -216,8 +217,8 @@ export class Test extends b2ContactListener {
 
   /**
    * Not in the C++: why this test cannot run on the WebGPU backend, or null when it can. A test with
-   * its own PreSolve cannot (it must run inside the solver); a test that relies on what PreSolve
-   * records says so by overriding this.
+   * its own PreSolve cannot (it must run inside the solver); a test with another reason overrides
+   * this.
    */
   GpuRefusal(): string | null {
     if (this.PreSolve !== Test.prototype.PreSolve) {
