@@ -10,7 +10,7 @@
  *
  * On a lent H100 (kind nvidia-h100-x1; `.device` from `bash ../shared/gpu/prepare.sh`): carry
  * `.device` and `dist/bench-gpu-step.mjs`, run
- *   bash .device/run.sh node --max-old-space-size=16000 dist/bench-gpu-step.mjs
+ *   bash .device/run.sh node --expose-gc --max-old-space-size=60000 dist/bench-gpu-step.mjs
  *
  * Scenes, built with the engine's API (n dynamic bodies plus one static ground box, density 1,
  * friction 0.6, gravity -10):
@@ -39,6 +39,8 @@
  * Step call and the synchronisation timed apart), the same with a synchronisation every 4 steps,
  * with the bulk read of every transform after the synchronisation (backend.readTransforms), and
  * with the bulk read alone: what an application pays through the documented path.
+ * Each world is built after a full collection and timed after another (with --expose-gc; meta's
+ * heapSettled), so no phase pays for collecting the last one's world.
  * JS: the same world built again, WARMUP steps, then world.Step timed per step, `--steps` steps or
  * until `--js-budget` seconds have passed, for sizes up to `--js-max`. Times are medians.
  * JS/GPU is the throughput ratio (JS ms / GPU ms: above 1 the GPU steps faster). The crossover per
@@ -61,7 +63,7 @@ import { requestGpu } from '../src-gpu/device';
 import type { GpuContext } from '../src-gpu/device';
 import { WebGPUBackend } from '../src-gpu/backend';
 import { GpuStepper } from '../src-gpu/stepper';
-import { box, circle, crossover, fmt, logLogChart, median, rng, sizeText } from './gpu-support';
+import { box, circle, crossover, fmt, logLogChart, median, rng, settleHeap, sizeText } from './gpu-support';
 import type { Crossover } from './gpu-support';
 
 const DT = 1 / 60;
@@ -364,7 +366,7 @@ function markdown(rows: Row[], crossovers: Crossover[], meta: Record<string, unk
   const lines = [
     '# Full step on the GPU (broad phase + narrow phase + solver) vs the JavaScript engine',
     '',
-    `Device: ${meta.device}; timestamps: ${meta.timestamps}; Dawn validation ${meta.skipValidation ? 'off' : 'on'}. Node ${meta.node}. ${meta.date}.`,
+    `Device: ${meta.device}; timestamps: ${meta.timestamps}; Dawn validation ${meta.skipValidation ? 'off' : 'on'}. Node ${meta.node}. ${meta.date}. ${meta.heapSettled ? 'Full garbage collection before each world is built and before it is timed.' : 'Run without --expose-gc: a phase may pay for collecting the previous one\'s world.'}`,
     `1/60 s, ${VELOCITY_ITERATIONS} velocity / ${POSITION_ITERATIONS} position iterations, sleeping and continuous physics off`,
     `in both (resting pyramids would fall asleep and cost nothing: this measures the full step's work). ${GPU_WARMUP} warm-up steps on the GPU, ${WARMUP} in JS, then medians of ${meta.steps} steps`,
     `(JS: at most ${meta.steps} steps or ${meta.jsBudget} s). Milliseconds per step.`,
@@ -499,21 +501,29 @@ async function main(): Promise<number> {
     for (const scene of scenes) {
       const row: Row = { scene, bodies: n, buildMs: 0, gpu: null, gpuError: null, api: null, apiError: null, js: null, jsError: null };
       try {
+        settleHeap();
         const b0 = performance.now();
         const world = buildWorld(scene, n);
         row.buildMs = performance.now() - b0;
+        settleHeap();
         row.gpu = await runGpu(ctx, world, steps);
       } catch (err) {
         row.gpuError = message(err);
       }
       try {
-        row.api = await runWorldApi(ctx, buildWorld(scene, n), steps);
+        settleHeap();
+        const world = buildWorld(scene, n);
+        settleHeap();
+        row.api = await runWorldApi(ctx, world, steps);
       } catch (err) {
         row.apiError = message(err);
       }
       if (n <= jsMax) {
         try {
-          row.js = runJs(buildWorld(scene, n), steps, jsBudget);
+          settleHeap();
+          const world = buildWorld(scene, n);
+          settleHeap();
+          row.js = runJs(world, steps, jsBudget);
         } catch (err) {
           row.jsError = message(err);
         }
@@ -551,6 +561,7 @@ async function main(): Promise<number> {
     steps,
     jsBudget,
     jsMax,
+    heapSettled: settleHeap(),
     sleeping: false,
     continuousPhysics: false,
     limits: { maxStorageBufferBindingSize: ctx.limits.maxStorageBufferBindingSize, maxBufferSize: ctx.limits.maxBufferSize },

@@ -29,6 +29,7 @@ import type { b2Body } from '../src/dynamics/b2Body';
 import type { b2Fixture } from '../src/dynamics/b2Fixture';
 import type { b2World } from '../src/dynamics/b2World';
 import type { b2WorldBackend, b2WorldBackendEngine } from '../src/dynamics/b2WorldBackend';
+import { b2ContactFlags, b2WorldFlags } from '../src/common/b2Constants';
 import { requestGpu } from './device';
 import type { GpuContext, GpuContextOptions } from './device';
 import { GpuContactEvents, wantsEvents } from './events';
@@ -46,10 +47,8 @@ export interface WebGPUBackendOptions extends GpuContextOptions {
   maxQueuedSteps?: number;
 }
 
-/** b2World::e_newFixture and e_clearForces, b2Contact::e_touchingFlag. */
-const e_newFixture = 0x0001;
-const e_clearForces = 0x0004;
-const e_touchingFlag = 0x0002;
+const { e_newFixture, e_clearForces } = b2WorldFlags;
+const { e_touchingFlag } = b2ContactFlags;
 
 /**
  * The forces of a step queued behind another: taken when Step is called (and cleared, as

@@ -276,7 +276,7 @@ export class GpuBroadPhase {
   /** Ends an update with the state words read back; returns its result. */
   finishUpdate(state: Uint32Array, regrows: number, dispatches: number, gpuTime: Record<string, number> | null): BroadPhaseResult {
     this.pairCount = state[STATE.PAIR_COUNT];
-    this.lastState = state;
+    this.lastState = state.slice();
     return {
       pairCount: this.pairCount,
       axis: state[STATE.AXIS],

@@ -27,6 +27,7 @@ import type { b2Contact } from '../src/dynamics/contacts/b2Contact';
 import type { b2ContactImpulse, b2ContactListener } from '../src/dynamics/b2WorldCallbacks';
 import type { b2World } from '../src/dynamics/b2World';
 import type { b2WorldBackendEngine } from '../src/dynamics/b2WorldBackend';
+import { b2ContactFlags, b2WorldFlags } from '../src/common/b2Constants';
 import { GpuArray } from './buffers';
 import type { GpuContext } from './device';
 import { EVENT_BEGIN, MANIFOLD_WORDS, MF } from './layout';
@@ -34,9 +35,8 @@ import type { GpuNarrowPhase, NarrowPhaseResult } from './narrowPhase';
 import type { GpuReadRange } from './stepper';
 import type { GpuWorld } from './world';
 
-/** b2Contact::e_touchingFlag and b2World::e_locked (src/ is imported for types only). */
-const e_touchingFlag = 0x0002;
-const e_locked = 0x0002;
+const { e_touchingFlag } = b2ContactFlags;
+const { e_locked } = b2WorldFlags;
 /** Bytes per event record and per contact (key + manifold). */
 const EVENT_BYTES = 16;
 const KEY_BYTES = 16;
@@ -60,7 +60,18 @@ interface Segment {
   settled: Promise<unknown>;
 }
 
-/** The GPU's contacts of one step: keys and manifold records. */
+/** A range readState() filled, as words (its offset and size are multiples of 4). */
+function u32(range: GpuReadRange): Uint32Array {
+  const d = range.data!;
+  return new Uint32Array(d.buffer, d.byteOffset, d.byteLength / 4);
+}
+
+function f32(range: GpuReadRange): Float32Array {
+  const d = range.data!;
+  return new Float32Array(d.buffer, d.byteOffset, d.byteLength / 4);
+}
+
+/** The GPU's contacts of one step: keys and manifold records (views of the read state: valid until the next read). */
 export interface GpuContactSet {
   count: number;
   /** (proxy a, proxy b, generation a, generation b) per contact, a < b. */
@@ -225,9 +236,9 @@ export class GpuContactEvents {
     if (read === null) return null;
     return {
       count: read.count,
-      keys: new Uint32Array(read.keys.data!),
-      manifoldU32: new Uint32Array(read.manifolds.data!),
-      manifoldF32: new Float32Array(read.manifolds.data!),
+      keys: u32(read.keys),
+      manifoldU32: u32(read.manifolds),
+      manifoldF32: f32(read.manifolds),
     };
   }
 
@@ -336,7 +347,7 @@ export class GpuContactEvents {
 
   /** One step's BeginContact / EndContact; a begun contact gets its manifold from `set` (the step's, else the last step's). */
   private beginEnd(listener: b2ContactListener, mirror: GpuWorld, events: GpuReadRange, set: GpuContactSet | null): void {
-    const w = new Uint32Array(events.data!);
+    const w = u32(events);
     for (let e = 0; 4 * e < w.length; ++e) {
       const c = this.contactFor(mirror, w[4 * e], w[4 * e + 1]);
       if (c === null) continue;

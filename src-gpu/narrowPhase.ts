@@ -33,6 +33,7 @@
  */
 
 import type { b2Contact } from '../src/dynamics/contacts/b2Contact';
+import { b2ContactFlags } from '../src/common/b2Constants';
 import type { GpuContext } from './device';
 import { GpuArray } from './buffers';
 import { Recorder, Uniform } from './kernel';
@@ -180,8 +181,7 @@ export interface GpuContactEvent {
 const NP_STATE_OFFSET = 64;
 const TIMER_OFFSET = 256;
 
-/** The JS engine's b2Contact::e_touchingFlag (src/ is imported for types only). */
-const e_touchingFlag = 0x0002;
+const { e_touchingFlag } = b2ContactFlags;
 
 interface InFlight {
   settled: Promise<NarrowPhaseResult>;

@@ -13,14 +13,19 @@
 import type { GpuContext } from './device';
 import { MAP_READ, USAGE } from './layout';
 
-/** Maps `size` bytes of a MAP_READ buffer, failing with the device's loss or with `message`. */
-export async function mapRead(ctx: GpuContext, buffer: GPUBuffer, size: number, message: string): Promise<ArrayBuffer> {
+/** Waits for `size` bytes of a MAP_READ buffer to be mapped, failing with the device's loss or with `message`. */
+async function mapReadAsync(ctx: GpuContext, buffer: GPUBuffer, size: number, message: string): Promise<void> {
   try {
     await Promise.race([buffer.mapAsync(MAP_READ, 0, size), ctx.lostRejection]);
   } catch {
     ctx.assertAlive();
     throw new Error(message);
   }
+}
+
+/** Maps `size` bytes of a MAP_READ buffer, failing with the device's loss or with `message`. */
+export async function mapRead(ctx: GpuContext, buffer: GPUBuffer, size: number, message: string): Promise<ArrayBuffer> {
+  await mapReadAsync(ctx, buffer, size, message);
   return buffer.getMappedRange(0, size);
 }
 
@@ -29,22 +34,29 @@ export class Readback {
   readonly size: number;
   /** The map in progress, if any. */
   pending: Promise<ArrayBuffer> | null = null;
+  /**
+   * Where read() copies the mapped bytes: allocated once, because allocating an ArrayBuffer while
+   * a large mapped range is young in V8's heap (a readState() of a million bodies) forces a
+   * scavenge first.
+   */
+  private readonly copy: ArrayBuffer;
 
   constructor(ctx: GpuContext, label: string, size: number) {
     this.size = Math.max(16, Math.ceil(size / 16) * 16);
     this.buffer = ctx.createBuffer(label, this.size, USAGE.MAP_READ | USAGE.COPY_DST);
+    this.copy = new ArrayBuffer(this.size);
   }
 
   /**
-   * Maps the first `bytes` bytes (after the submission that filled them) and returns a copy.
-   * Rejects when the device is lost.
+   * Maps the first `bytes` bytes (after the submission that filled them) and resolves with a copy,
+   * which the next read() of this Readback overwrites. Rejects when the device is lost.
    */
   read(ctx: GpuContext, bytes: number): Promise<ArrayBuffer> {
     const size = Math.min(this.size, Math.ceil(bytes / 8) * 8);
     const done = (async () => {
-      const data = (await mapRead(ctx, this.buffer, size, 'reading GPU results back failed')).slice(0);
+      new Uint8Array(this.copy, 0, size).set(new Uint8Array(await mapRead(ctx, this.buffer, size, 'reading GPU results back failed')));
       this.buffer.unmap();
-      return data;
+      return this.copy;
     })();
     this.pending = done;
     done.then(
@@ -92,6 +104,25 @@ export class StagingBuffer {
     return mapRead(this.ctx, this.buffer!, bytes, message);
   }
 
+  /**
+   * map() in two halves: the wait, then (range()) the ArrayBuffer of the mapped bytes, so that the
+   * caller can release another mapped range in between (V8 counts each mapped range as memory it
+   * holds, and starts marking the whole heap when that count grows past what it last saw).
+   */
+  mapAsync(bytes: number, message: string): Promise<void> {
+    return mapReadAsync(this.ctx, this.buffer!, bytes, message);
+  }
+
+  /** `size` mapped bytes from `offset` (a multiple of 8) after mapAsync(). */
+  range(offset: number, size: number): ArrayBuffer {
+    return this.buffer!.getMappedRange(offset, size);
+  }
+
+  /** The buffer get() gave. */
+  get current(): GPUBuffer {
+    return this.buffer!;
+  }
+
   unmap(): void {
     this.buffer!.unmap();
   }
@@ -125,5 +156,74 @@ export class ReadbackRing {
 
   destroy(): void {
     for (const b of this.buffers) b.destroy();
+  }
+}
+
+type FieldArray = Float32Array | Int32Array | Uint32Array;
+
+/** One per-body field of a mapped state: its 32-bit words per body, and the view its chunks get. */
+export interface MappedField {
+  words: number;
+  view: (range: ArrayBuffer) => FieldArray;
+}
+
+/** Bodies per chunk of a MappedState (a power of two). */
+export const STATE_CHUNK = 8192;
+const STATE_CHUNK_SHIFT = Math.log2(STATE_CHUNK);
+
+/**
+ * Per-body fields read back into a mapped staging buffer, taken from the map a chunk of
+ * STATE_CHUNK bodies at a time when a body of the chunk is first read: a synchronisation after
+ * which the application reads a few bodies maps a few chunks, not the whole state. (V8 counts every
+ * mapped range it is handed as memory it holds; a million bodies' whole state, 76 MB at each
+ * synchronisation, kept it marking the heap.) Field f's chunk for `slot` is chunk(f, slot); the
+ * body's words start at (slot % STATE_CHUNK) * words.
+ */
+export class MappedState {
+  private buffer: GPUBuffer | null = null;
+  private count = 0;
+  private offsets: readonly number[] = [];
+  private readonly chunks: FieldArray[][];
+  /** Bytes taken from the map since open(). */
+  bytes = 0;
+
+  constructor(private readonly fields: readonly MappedField[]) {
+    this.chunks = fields.map(() => []);
+  }
+
+  /** Hands out the fields of `count` bodies mapped in `buffer`, field f at byte offsets[f] (a multiple of 8). */
+  open(buffer: GPUBuffer, count: number, offsets: readonly number[]): void {
+    this.close();
+    this.buffer = buffer;
+    this.count = count;
+    this.offsets = offsets;
+  }
+
+  /** Forgets the chunks (before the buffer is unmapped, which detaches them). */
+  close(): void {
+    this.buffer = null;
+    this.count = 0;
+    this.bytes = 0;
+    for (const list of this.chunks) list.length = 0;
+  }
+
+  get slots(): number {
+    return this.count;
+  }
+
+  /** Field f's chunk holding body `slot` (taken from the map on first use). */
+  chunk(f: number, slot: number): FieldArray {
+    const c = slot >>> STATE_CHUNK_SHIFT;
+    const list = this.chunks[f];
+    let a = list[c];
+    if (a === undefined) {
+      const words = this.fields[f].words;
+      const first = c * STATE_CHUNK;
+      const size = 4 * words * Math.min(STATE_CHUNK, this.count - first);
+      a = this.fields[f].view(this.buffer!.getMappedRange(this.offsets[f] + 4 * words * first, size));
+      list[c] = a;
+      this.bytes += size;
+    }
+    return a;
   }
 }

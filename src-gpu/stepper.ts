@@ -7,9 +7,10 @@
  * In:  a b2World built with the normal API; step(dt, velocityIterations, positionIterations).
  * Out: the bodies' motion on the GPU (GpuWorld's bodyXf, bodyCell, bodySweep, bodyVel), contacts
  *      and impulses in the narrow phase's buffers; readState() reads the motion, the awake flag and
- *      the sleep time back with one map and keeps them mapped on the host, writing the joints'
- *      impulses and limit states into the b2Joint objects; pullBody() and pullAll() write the
- *      bodies' into their b2Body objects (readBodies(): both at once).
+ *      the sleep time back with one map and keeps them mapped on the host (taken from the map a
+ *      chunk of bodies at a time as they are read: MappedState), writing the joints' impulses and
+ *      limit states into the b2Joint objects; pullBody() and pullAll() write the bodies' into their
+ *      b2Body objects (readBodies(): both at once).
  * Authority: from the first step the GPU's copy of the body motion is the one that counts
  * (GpuWorld.gpuOwnsMotion): the world's bodies keep their old positions and velocities until
  * they are pulled. Motion set through the API (SetTransform, SetLinearVelocity, impulses) replaces the
@@ -30,6 +31,7 @@
 
 import type { b2Body } from '../src/dynamics/b2Body';
 import type { b2World } from '../src/dynamics/b2World';
+import { b2BodyFlags, b2WorldFlags } from '../src/common/b2Constants';
 import type { GpuContext } from './device';
 import { GpuBroadPhase } from './broadPhase';
 import type { GpuBroadPhaseOptions, PassRecorder } from './broadPhase';
@@ -39,7 +41,8 @@ import { GpuSolver } from './solver';
 import type { SolverStep } from './solver';
 import { GpuWorld } from './world';
 import type { GpuWorldOptions } from './world';
-import { StagingBuffer } from './readback';
+import { MappedState, STATE_CHUNK, StagingBuffer } from './readback';
+import type { MappedField } from './readback';
 
 export interface GpuStepperOptions {
   world?: GpuWorldOptions;
@@ -52,8 +55,8 @@ export interface GpuReadRange {
   buffer: GPUBuffer;
   offset: number;
   size: number;
-  /** Set by readState(): a copy of the range's bytes. */
-  data: ArrayBuffer | null;
+  /** Set by readState(): the range's bytes in the mapped state, readable until the next readState(). */
+  data: Uint8Array | null;
 }
 
 export interface GpuStepOptions {
@@ -61,17 +64,30 @@ export interface GpuStepOptions {
   wait?: boolean;
 }
 
-/** b2World::e_clearForces. */
-const e_clearForces = 0x0004;
-/** b2Body::e_awakeFlag. */
-const e_awakeFlag = 0x0002;
+const { e_clearForces } = b2WorldFlags;
+const { e_awakeFlag } = b2BodyFlags;
 /** Bytes per body slot in readState()'s staging buffer: xf 16, cell 8, sweep 32, velocity 16, awake 4. */
 const BODY_READ_BYTES = 76;
 /** Bytes per joint slot read back with the bodies: jointState, impulses and limit state. */
 const JOINT_STATE_BYTES = 32;
-const EMPTY_F32 = new Float32Array(0);
-const EMPTY_I32 = new Int32Array(0);
-const EMPTY_U32 = new Uint32Array(0);
+/** The per-body fields of readState()'s staging buffer, in its order. */
+const STATE_FIELDS: readonly MappedField[] = [
+  { words: 4, view: (range) => new Float32Array(range) },
+  { words: 2, view: (range) => new Int32Array(range) },
+  { words: 8, view: (range) => new Float32Array(range) },
+  { words: 4, view: (range) => new Float32Array(range) },
+  { words: 1, view: (range) => new Uint32Array(range) },
+];
+const XF = 0;
+const CELL = 1;
+const SWEEP = 2;
+const VEL = 3;
+const AWAKE = 4;
+const STATE_CHUNK_MASK = STATE_CHUNK - 1;
+
+function align8(bytes: number): number {
+  return Math.ceil(bytes / 8) * 8;
+}
 /** Bytes per body slot in readTransforms()'s staging buffer: xf 16, cell 8, awake 4. */
 const TRANSFORM_READ_BYTES = 28;
 
@@ -102,11 +118,12 @@ export class GpuStepper {
   private invDt0: number;
   /** Two staging buffers for readState: the one holding the last state stays mapped while the other is read into. */
   private readonly bodyStaging: [StagingBuffer, StagingBuffer];
-  /** Which of them holds the last read state (mapped), -1 for none; and its slot count. */
+  /** Which of them holds the last read state (mapped), -1 for none. */
   private stagingNow = -1;
-  private stateSlots = 0;
-  /** Views of the last read state (valid while its staging buffer is mapped). */
-  private readonly state = { xf: EMPTY_F32, cell: EMPTY_I32, sweep: EMPTY_F32, vel: EMPTY_F32, awake: EMPTY_U32 };
+  /** The last read state's bodies, fetched from the map a chunk at a time (fields: STATE_FIELDS). */
+  private readonly state = new MappedState(STATE_FIELDS);
+  /** Whether the last read state is the GPU's current one (no step since): readTransforms() reads it instead of mapping again. */
+  private stateFresh = false;
   private readonly transformStaging: StagingBuffer;
   private readonly solverStep: SolverStep = { dt: 0, dtRatio: 0, velocityIterations: 0, positionIterations: 0, warmStarting: true, gravity: { x: 0, y: 0 } };
   private readonly encodeSolver = (pass: PassRecorder, outputs: NarrowPhaseOutputs): void => this.solver.encode(pass, this.mirror, outputs);
@@ -134,6 +151,7 @@ export class GpuStepper {
    */
   async step(dt: number, velocityIterations: number, positionIterations: number, options: GpuStepOptions = {}): Promise<NarrowPhaseResult> {
     const world = this.world;
+    this.stateFresh = false;
     this.mirror.sync();
     this.mirror.gpuOwnsMotion = true;
     // The forces are on the GPU now; b2World::Step clears them after the step.
@@ -162,8 +180,8 @@ export class GpuStepper {
    * Reads the bodies' state back with one map, after every step submitted so far, and keeps it on
    * the host (the staging buffer stays mapped until the next read): pullBody() and pullAll() write
    * it into b2Body objects as they are needed. The joints' impulses and limit states are written
-   * into the b2Joint objects at once, and `extras` (events, contacts: WebGPUBackend) copied from the
-   * same map. Returns the number of body slots read.
+   * into the b2Joint objects at once; `extras` (events, contacts: WebGPUBackend) come in the same
+   * map, as views readable until the next read. Returns the number of body slots read.
    */
   async readState(extras: GpuReadRange[] = []): Promise<number> {
     const ctx = this.ctx;
@@ -171,8 +189,10 @@ export class GpuStepper {
     const mirror = this.mirror;
     const n = mirror.bodySlotCount;
     const joints = mirror.jointSlotCount;
-    let bytes = BODY_READ_BYTES * n + JOINT_STATE_BYTES * joints;
-    for (const r of extras) bytes += r.size;
+    // Ranges taken from a map start at multiples of 8.
+    const jointsAt = align8(BODY_READ_BYTES * n);
+    let bytes = jointsAt + JOINT_STATE_BYTES * joints;
+    for (const r of extras) bytes = align8(bytes) + r.size;
     if (bytes === 0) return 0;
     // The other staging buffer than the one holding the state now, which stays readable until this one is mapped.
     const next = this.stagingNow === 0 ? 1 : 0;
@@ -184,32 +204,27 @@ export class GpuStepper {
     encoder.copyBufferToBuffer(mirror.bodySweep.buffer, 0, staging, 24 * n, 32 * n);
     encoder.copyBufferToBuffer(mirror.bodyVel.buffer, 0, staging, 56 * n, 16 * n);
     encoder.copyBufferToBuffer(mirror.bodyAwake.buffer, 0, staging, 72 * n, 4 * n);
-    if (joints > 0) encoder.copyBufferToBuffer(mirror.jointState.buffer, 0, staging, BODY_READ_BYTES * n, JOINT_STATE_BYTES * joints);
-    let at = BODY_READ_BYTES * n + JOINT_STATE_BYTES * joints;
+    if (joints > 0) encoder.copyBufferToBuffer(mirror.jointState.buffer, 0, staging, jointsAt, JOINT_STATE_BYTES * joints);
+    let at = jointsAt + JOINT_STATE_BYTES * joints;
     for (const r of extras) {
+      at = align8(at);
       if (r.size > 0) encoder.copyBufferToBuffer(r.buffer, r.offset, staging, at, r.size);
       at += r.size;
     }
     ctx.device.queue.submit([encoder.finish()]);
-    const mapped = await target.map(bytes, 'reading the bodies back from the GPU failed');
+    await target.mapAsync(bytes, 'reading the bodies back from the GPU failed');
     const started = performance.now();
+    // The last state stays readable until this one is mapped, and is released before this one's
+    // ranges are taken, so that V8 sees the ranges of one state at a time.
     this.releaseState();
     this.stagingNow = next;
-    this.stateSlots = n;
-    const views = this.state;
-    views.xf = new Float32Array(mapped, 0, 4 * n);
-    views.cell = new Int32Array(mapped, 16 * n, 2 * n);
-    views.sweep = new Float32Array(mapped, 24 * n, 8 * n);
-    views.vel = new Float32Array(mapped, 56 * n, 4 * n);
-    const awake = new Uint32Array(mapped, 72 * n, n);
-    views.awake = awake;
-    // The mirror's shadow of the awake flags now holds what the GPU holds: sync() uploads a flag
-    // again only when JavaScript changes it (GpuWorld's header).
-    mirror.bodyAwake.u32.set(awake);
-    mirror.unpackJointStates(new Float32Array(mapped, BODY_READ_BYTES * n, (JOINT_STATE_BYTES / 4) * joints));
-    at = BODY_READ_BYTES * n + JOINT_STATE_BYTES * joints;
+    this.stateFresh = true;
+    this.state.open(target.current, n, [0, 16 * n, 24 * n, 56 * n, 72 * n]);
+    if (joints > 0) mirror.unpackJointStates(new Float32Array(target.range(jointsAt, JOINT_STATE_BYTES * joints)));
+    at = jointsAt + JOINT_STATE_BYTES * joints;
     for (const r of extras) {
-      r.data = mapped.slice(at, at + r.size);
+      at = align8(at);
+      r.data = r.size > 0 ? new Uint8Array(target.range(at, r.size)) : new Uint8Array(0);
       at += r.size;
     }
     this.readStats.bytes = bytes;
@@ -220,20 +235,31 @@ export class GpuStepper {
   /** The state read last (readState) into `body`, when that read has it (not for a body new since). */
   pullBody(body: b2Body): void {
     const slot = this.mirror.bodySlot(body);
-    if (slot >= 0 && slot < this.stateSlots) this.writeBody(slot, body);
+    if (slot >= 0 && slot < this.state.slots) this.writeBody(slot, body);
   }
 
-  /** Body slot `slot` of the last read state into `body`. */
+  /**
+   * Body slot `slot` of the last read state into `body`; and its awake flag into the mirror's
+   * shadow, which then holds what the GPU holds for it: sync() uploads the flag again only when
+   * JavaScript changes it (GpuWorld's header), and sync() looks at the flag only of bodies that
+   * fetched the last state.
+   */
   private writeBody(slot: number, body: b2Body): void {
-    const { xf, cell, sweep, vel, awake } = this.state;
+    const state = this.state;
+    const xf = state.chunk(XF, slot);
+    const cell = state.chunk(CELL, slot);
+    const sweep = state.chunk(SWEEP, slot);
+    const vel = state.chunk(VEL, slot);
+    const flag = state.chunk(AWAKE, slot)[slot & STATE_CHUNK_MASK];
+    const i = slot & STATE_CHUNK_MASK;
     const S = this.mirror.cellSize;
-    const ox = cell[2 * slot] * S;
-    const oy = cell[2 * slot + 1] * S;
-    body.m_xf.p.x = ox + xf[4 * slot];
-    body.m_xf.p.y = oy + xf[4 * slot + 1];
-    body.m_xf.q.c = xf[4 * slot + 2];
-    body.m_xf.q.s = xf[4 * slot + 3];
-    const s = 8 * slot;
+    const ox = cell[2 * i] * S;
+    const oy = cell[2 * i + 1] * S;
+    body.m_xf.p.x = ox + xf[4 * i];
+    body.m_xf.p.y = oy + xf[4 * i + 1];
+    body.m_xf.q.c = xf[4 * i + 2];
+    body.m_xf.q.s = xf[4 * i + 3];
+    const s = 8 * i;
     body.m_sweep.c0.x = ox + sweep[s];
     body.m_sweep.c0.y = oy + sweep[s + 1];
     body.m_sweep.a0 = sweep[s + 2];
@@ -241,11 +267,12 @@ export class GpuStepper {
     body.m_sweep.c.x = ox + sweep[s + 4];
     body.m_sweep.c.y = oy + sweep[s + 5];
     body.m_sweep.a = sweep[s + 6];
-    body.m_linearVelocity.x = vel[4 * slot];
-    body.m_linearVelocity.y = vel[4 * slot + 1];
-    body.m_angularVelocity = vel[4 * slot + 2];
+    body.m_linearVelocity.x = vel[4 * i];
+    body.m_linearVelocity.y = vel[4 * i + 1];
+    body.m_angularVelocity = vel[4 * i + 2];
     body.m_sleepTime = sweep[s + 7];
-    body.m_flags = awake[slot] !== 0 ? body.m_flags | e_awakeFlag : body.m_flags & ~e_awakeFlag;
+    body.m_flags = flag !== 0 ? body.m_flags | e_awakeFlag : body.m_flags & ~e_awakeFlag;
+    this.mirror.bodyAwake.u32[slot] = flag;
   }
 
   /**
@@ -255,7 +282,7 @@ export class GpuStepper {
   pullAll(epoch?: number): number {
     const mirror = this.mirror;
     let written = 0;
-    for (let slot = 0; slot < this.stateSlots; ++slot) {
+    for (let slot = 0; slot < this.state.slots; ++slot) {
       const b = mirror.bodyAt(slot);
       if (b === null || (epoch !== undefined && b.m_stateEpoch === epoch)) continue;
       this.writeBody(slot, b);
@@ -276,15 +303,17 @@ export class GpuStepper {
 
   /** Unmaps the staging buffer holding the last read state (its views are then gone). */
   private releaseState(): void {
+    this.state.close();
     if (this.stagingNow >= 0) this.bodyStaging[this.stagingNow].unmap();
     this.stagingNow = -1;
-    this.stateSlots = 0;
+    this.stateFresh = false;
   }
 
   /**
    * Bulk read for renderers: copies every body slot's transform into `out` (x, y, cos, sin of the
    * body origin at 4 * slot, in world coordinates) and, when given, its awake flag into
-   * `awake[slot]` (1 awake, 0 asleep), after every step submitted so far, with one map of 28 bytes
+   * `awake[slot]` (1 awake, 0 asleep), after every step submitted so far: from the state readState()
+   * holds when no step came since (a synchronisation just before), else with one map of 28 bytes
    * a body. The world's b2Body objects are not touched. Slots that hold no body (destroyed, not yet
    * reused) are written as NaN and 0. Returns the number of slots (GpuWorld.bodySlotCount).
    */
@@ -300,6 +329,20 @@ export class GpuStepper {
       throw new RangeError(`readTransforms: awake holds ${awake.length} flags; this world needs one per body slot, ${n}`);
     }
     if (n === 0) return 0;
+    if (this.stateFresh && this.state.slots === n) {
+      const started = performance.now();
+      const state = this.state;
+      const taken = state.bytes;
+      for (let first = 0; first < n; first += STATE_CHUNK) {
+        const xf = state.chunk(XF, first) as Float32Array;
+        const cell = state.chunk(CELL, first) as Int32Array;
+        const flags = state.chunk(AWAKE, first) as Uint32Array;
+        this.unpackTransforms(first, Math.min(n, first + STATE_CHUNK), xf, cell, flags, out, awake);
+      }
+      this.readStats.bytes = state.bytes - taken;
+      this.readStats.unpackMs = performance.now() - started;
+      return n;
+    }
     const bytes = TRANSFORM_READ_BYTES * n;
     const staging = this.transformStaging.get(bytes);
     const encoder = ctx.device.createCommandEncoder({ label: 'stepper transform read-back' });
@@ -309,27 +352,42 @@ export class GpuStepper {
     ctx.device.queue.submit([encoder.finish()]);
     const mapped = await this.transformStaging.map(bytes, 'reading the transforms back from the GPU failed');
     const started = performance.now();
-    const xf = new Float32Array(mapped, 0, 4 * n);
-    const cell = new Int32Array(mapped, 16 * n, 2 * n);
-    const flags = new Uint32Array(mapped, 24 * n, n);
+    this.unpackTransforms(0, n, new Float32Array(mapped, 0, 4 * n), new Int32Array(mapped, 16 * n, 2 * n), new Uint32Array(mapped, 24 * n, n), out, awake);
+    this.transformStaging.unmap();
+    this.readStats.bytes = bytes;
+    this.readStats.unpackMs = performance.now() - started;
+    return n;
+  }
+
+  /**
+   * readTransforms' copy of slots [first, end) from field arrays that start at slot `first`: cells
+   * and offsets to world coordinates, empty slots NaN.
+   */
+  private unpackTransforms(
+    first: number,
+    end: number,
+    xf: Float32Array,
+    cell: Int32Array,
+    flags: Uint32Array,
+    out: Float32Array | Float64Array,
+    awake: Uint8Array | undefined,
+  ): void {
+    const mirror = this.mirror;
     const S = mirror.cellSize;
-    for (let slot = 0; slot < n; ++slot) {
+    for (let slot = first; slot < end; ++slot) {
       const at = 4 * slot;
+      const i = slot - first;
       if (mirror.bodyAt(slot) === null) {
         out[at] = out[at + 1] = out[at + 2] = out[at + 3] = NaN;
         if (awake !== undefined) awake[slot] = 0;
         continue;
       }
-      out[at] = cell[2 * slot] * S + xf[at];
-      out[at + 1] = cell[2 * slot + 1] * S + xf[at + 1];
-      out[at + 2] = xf[at + 2];
-      out[at + 3] = xf[at + 3];
-      if (awake !== undefined) awake[slot] = flags[slot] !== 0 ? 1 : 0;
+      out[at] = cell[2 * i] * S + xf[4 * i];
+      out[at + 1] = cell[2 * i + 1] * S + xf[4 * i + 1];
+      out[at + 2] = xf[4 * i + 2];
+      out[at + 3] = xf[4 * i + 3];
+      if (awake !== undefined) awake[slot] = flags[i] !== 0 ? 1 : 0;
     }
-    this.transformStaging.unmap();
-    this.readStats.bytes = bytes;
-    this.readStats.unpackMs = performance.now() - started;
-    return n;
   }
 
   destroy(): void {

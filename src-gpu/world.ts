@@ -3,8 +3,9 @@
  * buffers described in src-gpu/layout.ts.
  *
  * GpuWorld reads the engine only through its public fields (m_bodyList, m_fixtureList,
- * m_jointList, m_xf, m_sweep...) and imports nothing from src/ but types, so the engine knows
- * nothing of it and a bundle of src-gpu carries no second copy of the engine.
+ * m_jointList, m_xf, m_sweep...) and imports from src/ only types and the leaf module of flags
+ * and type numbers (src/common/b2Constants.ts), so the engine knows nothing of it and a bundle of
+ * src-gpu carries no second copy of the engine.
  *
  * sync() walks the world and brings the GPU buffers up to date:
  * - Slots. Each body, fixture, proxy (fixture child) and joint gets a slot, lowest free first, kept
@@ -32,9 +33,10 @@
  * changed records of those tables. Everything else (mass, forces, damping, flags, fixtures, joint
  * parameters) is still mirrored from the world.
  * The awake flag (bodyAwake) is GPU-owned in the same way, with one more rule: the GPU wakes and
- * puts bodies to sleep (islands, part 3) and GpuStepper's pulls (readState) write e_awakeFlag and
- * m_sleepTime back; sync() uploads a body's awake flag when the world's e_awakeFlag differs from
- * the value last uploaded or read back (SetAwake, or ApplyForce / SetLinearVelocity waking a body,
+ * puts bodies to sleep (islands.ts) and GpuStepper's pulls (pullBody, pullAll: a body fetching the
+ * last read-back) write e_awakeFlag and m_sleepTime back, and the flag into bodyAwake's shadow;
+ * sync() looks at the awake flag of the bodies that fetched the last read-back only, and uploads
+ * it when the world's e_awakeFlag differs from the value last uploaded or read back (SetAwake, or ApplyForce / SetLinearVelocity waking a body,
  * after a read-back that showed it asleep), for a body new to the mirror, and for every body when
  * b2World::m_allowSleep was turned off (SetAllowSleeping(false) wakes them all). sleepTime (word 7
  * of bodySweep) is never uploaded after that: the GPU keeps 2.2.1's rule that a sleeping body has
@@ -63,6 +65,7 @@ import type { b2CircleShape } from '../src/collision/shapes/b2CircleShape';
 import type { b2EdgeShape } from '../src/collision/shapes/b2EdgeShape';
 import type { b2PolygonShape } from '../src/collision/shapes/b2PolygonShape';
 import type { b2ChainShape } from '../src/collision/shapes/b2ChainShape';
+import { b2BodyFlags, b2JointType, b2ShapeType } from '../src/common/b2Constants';
 import type { GpuContext } from './device';
 import { MirrorTable } from './buffers';
 import type { UploadStats } from './buffers';
@@ -78,22 +81,21 @@ import {
   SHAPE_SENSOR,
 } from './layout';
 
-const e_circle = 0;
-const e_edge = 1;
-const e_polygon = 2;
-/** b2Body::e_awakeFlag. */
-const e_awakeFlag = 0x0002;
+const { e_circle, e_edge, e_polygon } = b2ShapeType;
+const { e_awakeFlag } = b2BodyFlags;
 /** b2JointType values (parameters in jointParams by type: layout.ts). */
-const e_revoluteJoint = 1;
-const e_prismaticJoint = 2;
-const e_distanceJoint = 3;
-const e_pulleyJoint = 4;
-const e_mouseJoint = 5;
-const e_gearJoint = 6;
-const e_wheelJoint = 7;
-const e_weldJoint = 8;
-const e_frictionJoint = 9;
-const e_ropeJoint = 10;
+const {
+  e_revoluteJoint,
+  e_prismaticJoint,
+  e_distanceJoint,
+  e_pulleyJoint,
+  e_mouseJoint,
+  e_gearJoint,
+  e_wheelJoint,
+  e_weldJoint,
+  e_frictionJoint,
+  e_ropeJoint,
+} = b2JointType;
 
 /** Four words into a scratch record at `at` (no array literal: sync() allocates nothing per joint). */
 function put4(record: Float32Array, at: number, a: number, b: number, c: number, d: number): void {
@@ -116,7 +118,7 @@ function withRoom<T extends Int32Array | Uint32Array>(array: T, index: number, f
 
 /**
  * What the API changed since the last sync: the world's b2ChangeListener while a GpuWorld mirrors
- * it (structurally one: src-gpu imports only types from the engine).
+ * it (structurally one: src-gpu imports no engine class).
  */
 class ChangeLog {
   /** A body, fixture or joint came or went (or this is the first sync): walk everything. */

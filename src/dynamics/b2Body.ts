@@ -6,6 +6,7 @@
  */
 
 import { b2Assert, b2Log } from '../common/b2Settings';
+import { b2BodyFlags, b2BodyType, b2JointType, b2WorldFlags } from '../common/b2Constants';
 import { b2Transform, b2Sweep, b2SweepTime, b2Vec2 } from '../common/b2Math';
 import {
   b2ArgumentError,
@@ -18,22 +19,12 @@ import {
 } from '../common/b2ArgumentError';
 import { b2MassData, b2Shape } from '../collision/shapes/b2Shape';
 import { b2Fixture, b2FixtureDef } from './b2Fixture';
-import { b2World } from './b2World';
+import type { b2World } from './b2World';
 import type { b2ContactEdge } from './contacts/b2Contact';
-import { b2JointType, type b2JointEdge } from './joints/b2Joint';
-import { b2CheckBodyDef, b2CheckBodyType, b2CheckFixtureDef } from './b2DefValidation';
+import type { b2JointEdge } from './joints/b2Joint';
+import { b2CheckBodyDef, b2CheckBodyType, b2CheckFixtureDef } from './b2BodyDefValidation';
 
-/**
- * The body type.
- * static: zero mass, zero velocity, may be manually moved
- * kinematic: zero mass, non-zero velocity set by user, moved by solver
- * dynamic: positive mass, non-zero velocity determined by forces, moved by solver
- */
-export enum b2BodyType {
-  b2_staticBody = 0,
-  b2_kinematicBody = 1,
-  b2_dynamicBody = 2,
-}
+export { b2BodyType };
 
 export const b2_staticBody = b2BodyType.b2_staticBody;
 export const b2_kinematicBody = b2BodyType.b2_kinematicBody;
@@ -129,13 +120,13 @@ function checkBody(body: b2Body, method: string, locked: boolean): void {
 /** A rigid body. These are created via b2World::CreateBody. */
 export class b2Body {
   // m_flags
-  static readonly e_islandFlag = 0x0001;
-  static readonly e_awakeFlag = 0x0002;
-  static readonly e_autoSleepFlag = 0x0004;
-  static readonly e_bulletFlag = 0x0008;
-  static readonly e_fixedRotationFlag = 0x0010;
-  static readonly e_activeFlag = 0x0020;
-  static readonly e_toiFlag = 0x0040;
+  static readonly e_islandFlag = b2BodyFlags.e_islandFlag;
+  static readonly e_awakeFlag = b2BodyFlags.e_awakeFlag;
+  static readonly e_autoSleepFlag = b2BodyFlags.e_autoSleepFlag;
+  static readonly e_bulletFlag = b2BodyFlags.e_bulletFlag;
+  static readonly e_fixedRotationFlag = b2BodyFlags.e_fixedRotationFlag;
+  static readonly e_activeFlag = b2BodyFlags.e_activeFlag;
+  static readonly e_toiFlag = b2BodyFlags.e_toiFlag;
 
   m_type: b2BodyType;
 
@@ -287,7 +278,7 @@ export class b2Body {
 
     // Let the world know we have a new fixture. This will cause new contacts
     // to be created at the beginning of the next time step.
-    this.m_world.m_flags |= b2World.e_newFixture;
+    this.m_world.m_flags |= b2WorldFlags.e_newFixture;
 
     this.m_world.m_changeListener?.StructureChanged();
     return fixture;

@@ -5,10 +5,10 @@
  */
 
 import { b2BroadPhase } from '../collision/b2BroadPhase';
+import { b2BodyFlags, b2BodyType } from '../common/b2Constants';
 import { b2Contact } from './contacts/b2Contact';
 import { b2ContactAllocator } from './contacts/b2ContactAllocator';
 import { b2InitializeContactRegisters } from './contacts/b2ContactRegistry';
-import { b2Body, b2BodyType } from './b2Body';
 import type { b2FixtureProxy } from './b2Fixture';
 import { b2ProxyPairSet } from './b2ProxyPairSet';
 import { b2ContactFilter, b2ContactListener } from './b2WorldCallbacks';
@@ -262,8 +262,8 @@ export class b2ContactManager {
       }
 
       // The flag, not IsAwake(): the engine's own step has no backend state to fetch (b2Body.PullState).
-      const activeA = (bodyA.m_flags & b2Body.e_awakeFlag) !== 0 && bodyA.m_type !== b2BodyType.b2_staticBody;
-      const activeB = (bodyB.m_flags & b2Body.e_awakeFlag) !== 0 && bodyB.m_type !== b2BodyType.b2_staticBody;
+      const activeA = (bodyA.m_flags & b2BodyFlags.e_awakeFlag) !== 0 && bodyA.m_type !== b2BodyType.b2_staticBody;
+      const activeB = (bodyB.m_flags & b2BodyFlags.e_awakeFlag) !== 0 && bodyB.m_type !== b2BodyType.b2_staticBody;
 
       // At least one body must be awake and it must be dynamic or kinematic.
       if (activeA === false && activeB === false) {

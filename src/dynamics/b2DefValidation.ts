@@ -1,7 +1,7 @@
 /*
- * Checks of body, fixture and joint definitions and of the objects a call refers to (no C++
- * counterpart; see common/b2ArgumentError.ts). b2World.CreateBody, b2Body.CreateFixture and
- * b2World.CreateJoint run them before they change anything.
+ * Checks of joint definitions and of the bodies and joints a world call refers to (no C++
+ * counterpart; see common/b2ArgumentError.ts; body and fixture definitions: b2BodyDefValidation.ts).
+ * b2World.CreateJoint, DestroyBody and DestroyJoint run them before they change anything.
  *
  * The joint rules are those of Box2D 2.2.1's asserts and documentation, plus what keeps the solver
  * free of NaN: finite numbers everywhere, non-negative forces, torques, frequencies and damping
@@ -21,15 +21,13 @@ import {
   b2DestroyedError,
 } from '../common/b2ArgumentError';
 import type { b2Vec2 } from '../common/b2Math';
-import { b2CheckShape } from '../collision/shapes/b2ShapeValidation';
-import { b2Body, b2BodyType } from './b2Body';
-import type { b2BodyDef } from './b2Body';
-import type { b2FixtureDef } from './b2Fixture';
+import { b2BodyType, b2JointType } from '../common/b2Constants';
+import { b2Body } from './b2Body';
 import type { b2World } from './b2World';
 import type { b2DistanceJointDef } from './joints/b2DistanceJoint';
 import type { b2FrictionJointDef } from './joints/b2FrictionJoint';
 import type { b2GearJointDef } from './joints/b2GearJoint';
-import { b2Joint, b2JointType } from './joints/b2Joint';
+import { b2Joint } from './joints/b2Joint';
 import type { b2JointDef } from './joints/b2Joint';
 import type { b2MouseJointDef } from './joints/b2MouseJoint';
 import type { b2PrismaticJointDef } from './joints/b2PrismaticJoint';
@@ -38,42 +36,6 @@ import type { b2RevoluteJointDef } from './joints/b2RevoluteJoint';
 import type { b2RopeJointDef } from './joints/b2RopeJoint';
 import type { b2WeldJointDef } from './joints/b2WeldJoint';
 import type { b2WheelJointDef } from './joints/b2WheelJoint';
-
-/** `type` must be one of b2_staticBody, b2_kinematicBody, b2_dynamicBody. */
-export function b2CheckBodyType(method: string, argument: string, type: b2BodyType): void {
-  if (type !== b2BodyType.b2_staticBody && type !== b2BodyType.b2_kinematicBody && type !== b2BodyType.b2_dynamicBody) {
-    throw new b2ArgumentError(
-      method,
-      argument,
-      `must be b2_staticBody (0), b2_kinematicBody (1) or b2_dynamicBody (2), got ${b2DescribeNumber(type)}`,
-    );
-  }
-}
-
-/** A body definition: valid type, finite kinematics, non-negative damping, finite gravity scale. */
-export function b2CheckBodyDef(method: string, def: Readonly<b2BodyDef>): void {
-  b2CheckObject(method, 'def', def);
-  b2CheckBodyType(method, 'def.type', def.type);
-  b2CheckVec2(method, 'def.position', def.position);
-  b2CheckFinite(method, 'def.angle', def.angle);
-  b2CheckVec2(method, 'def.linearVelocity', def.linearVelocity);
-  b2CheckFinite(method, 'def.angularVelocity', def.angularVelocity);
-  b2CheckNonNegative(method, 'def.linearDamping', def.linearDamping);
-  b2CheckNonNegative(method, 'def.angularDamping', def.angularDamping);
-  b2CheckFinite(method, 'def.gravityScale', def.gravityScale);
-}
-
-/** A fixture definition: a valid shape, and non-negative finite friction, restitution and density. */
-export function b2CheckFixtureDef(method: string, def: Readonly<b2FixtureDef>, shapeArgument = 'def.shape'): void {
-  b2CheckObject(method, 'def', def);
-  if (def.shape === null || def.shape === undefined) {
-    throw new b2ArgumentError(method, shapeArgument, 'must be set');
-  }
-  b2CheckNonNegative(method, 'def.friction', def.friction);
-  b2CheckNonNegative(method, 'def.restitution', def.restitution);
-  b2CheckNonNegative(method, 'def.density', def.density);
-  b2CheckShape(method, shapeArgument, def.shape, def.density);
-}
 
 /** `body` must be a live body of `world`. */
 export function b2CheckBodyOf(method: string, argument: string, body: b2Body | null, world: b2World): void {

@@ -20,12 +20,13 @@ import {
   b2_timeToSleep,
 } from '../common/b2Settings';
 import { b2Timer } from '../common/b2Timer';
-import { b2Body, b2BodyType } from './b2Body';
+import { b2BodyFlags, b2BodyType, b2JointType } from '../common/b2Constants';
+import type { b2Body } from './b2Body';
 import { b2SolverData, type b2Profile, type b2TimeStep } from './b2TimeStep';
 import { b2ContactImpulse, b2ContactListener } from './b2WorldCallbacks';
 import type { b2Contact } from './contacts/b2Contact';
 import { b2ContactSolver, b2ContactSolverDef, type b2ContactVelocityConstraint } from './contacts/b2ContactSolver';
-import { b2JointType, type b2Joint } from './joints/b2Joint';
+import type { b2Joint } from './joints/b2Joint';
 import { b2RevoluteSolvePosition, b2RevoluteSolveVelocity, type b2RevoluteJoint } from './joints/b2RevoluteJoint';
 
 /** This is an internal class. */
@@ -271,7 +272,7 @@ export class b2Island {
 
         const v = b.m_linearVelocity;
         if (
-          (b.m_flags & b2Body.e_autoSleepFlag) === 0 ||
+          (b.m_flags & b2BodyFlags.e_autoSleepFlag) === 0 ||
           b.m_angularVelocity * b.m_angularVelocity > angTolSqr ||
           v.x * v.x + v.y * v.y > linTolSqr
         ) {

@@ -20,6 +20,7 @@ import { b2Color, b2Draw } from '../common/b2Draw';
 import { b2MulRV, b2MulXV, b2Sweep, b2SweepTime, b2Transform, b2Vec2 } from '../common/b2Math';
 import { b2Assert, b2Log, b2_epsilon, b2_maxPolygonVertices, b2_maxSubSteps, b2_maxTOIContacts } from '../common/b2Settings';
 import { b2Timer } from '../common/b2Timer';
+import { b2BodyType, b2JointType, b2WorldFlags } from '../common/b2Constants';
 import {
   b2ArgumentError,
   b2CheckInteger,
@@ -29,7 +30,7 @@ import {
   b2LockedError,
 } from '../common/b2ArgumentError';
 import { b2CheckBodyOf, b2CheckJointDef, b2CheckJointOf } from './b2DefValidation';
-import { b2Body, b2BodyType, type b2BodyDef } from './b2Body';
+import { b2Body, type b2BodyDef } from './b2Body';
 import { b2ContactManager } from './b2ContactManager';
 import { b2WorldBackendEngineFunctions, type b2WorldBackend } from './b2WorldBackend';
 import type { b2Fixture, b2FixtureProxy } from './b2Fixture';
@@ -44,7 +45,7 @@ import type {
   b2RayCastCallback,
 } from './b2WorldCallbacks';
 import { b2Contact, b2ContactScalars } from './contacts/b2Contact';
-import { b2JointType, type b2Joint, type b2JointDef } from './joints/b2Joint';
+import type { b2Joint, b2JointDef } from './joints/b2Joint';
 import { b2JointFactory } from './joints/b2JointFactory';
 import type { b2PulleyJoint } from './joints/b2PulleyJoint';
 import type { b2GearJoint } from './joints/b2GearJoint';
@@ -140,11 +141,11 @@ function checkCallback(method: string, callback: { ReportFixture: unknown } | nu
  */
 export class b2World {
   // m_flags
-  static readonly e_newFixture = 0x0001;
-  static readonly e_locked = 0x0002;
-  static readonly e_clearForces = 0x0004;
+  static readonly e_newFixture = b2WorldFlags.e_newFixture;
+  static readonly e_locked = b2WorldFlags.e_locked;
+  static readonly e_clearForces = b2WorldFlags.e_clearForces;
 
-  m_flags = b2World.e_clearForces;
+  m_flags: number = b2World.e_clearForces;
 
   readonly m_contactManager = new b2ContactManager();
 

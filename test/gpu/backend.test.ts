@@ -19,6 +19,7 @@ import { b2AABB } from '../../src/collision/b2Collision';
 import type { b2Manifold } from '../../src/collision/b2Collision';
 import type { b2Fixture } from '../../src/dynamics/b2Fixture';
 import { WebGPUBackend } from '../../src-gpu/backend';
+import { STATE_CHUNK } from '../../src-gpu/readback';
 import { checkWorldInvariants } from '../support/invariants';
 import { loadGoldenScene } from '../support/scene';
 import { describeGpu } from './support';
@@ -432,6 +433,53 @@ describeGpu('WebGPUBackend: the world API on the GPU', (ctx) => {
     await backend.readTransforms(out);
     expect(backend.contactCounts).toEqual({ contacts: 4, touching: 4 });
     await world.SetBackend(null);
+  }, 300_000);
+
+  it('a world of several state chunks: readTransforms after a synchronisation reads its map (no second map, 28 bytes a body), and bodies in every chunk fetch the same bits', async () => {
+    const world = new b2World(new b2Vec2(0, -10));
+    const bd = new b2BodyDef();
+    bd.type = b2_dynamicBody;
+    const box = new b2PolygonShape();
+    box.SetAsBox(0.1, 0.1);
+    const count = 2 * STATE_CHUNK + 100;
+    const bodies: b2Body[] = [];
+    for (let i = 0; i < count; ++i) {
+      // A grid with room between the boxes: no contacts, every body falls and turns.
+      bd.position.Set((i % 128) * 0.5, Math.floor(i / 128) * 0.5);
+      bd.angularVelocity = (i % 7) - 3;
+      const b = world.CreateBody(bd);
+      b.CreateFixture(box, 1);
+      bodies.push(b);
+    }
+    const backend = await WebGPUBackend.create({ context: ctx });
+    await world.SetBackend(backend);
+    for (let i = 0; i < 3; ++i) world.Step(DT, 8, 3);
+    await world.Synchronize();
+    const slots = backend.stepper!.mirror.bodySlotCount;
+    expect(slots).toBe(count);
+    const out = new Float64Array(4 * slots);
+    const maps = await countMaps(ctx, async () => {
+      await backend.readTransforms(out);
+    });
+    expect(maps).toBe(0);
+    expect(backend.readStats!.bytes).toBe(28 * count);
+    // Bodies at the start and end of each chunk, and the last one.
+    for (const i of [0, STATE_CHUNK - 1, STATE_CHUNK, 2 * STATE_CHUNK - 1, 2 * STATE_CHUNK, count - 1]) {
+      const b = bodies[i];
+      const slot = backend.bodySlot(b);
+      const xf = b.GetTransform();
+      expect([xf.p.x, xf.p.y, xf.q.c, xf.q.s]).toEqual([out[4 * slot], out[4 * slot + 1], out[4 * slot + 2], out[4 * slot + 3]]);
+      expect(b.GetAngularVelocity()).toBe(Math.fround((i % 7) - 3));
+      expect(b.GetLinearVelocity().y).toBeLessThan(0);
+    }
+    // After a step the state is old: the bulk read maps the GPU's transforms again.
+    world.Step(DT, 8, 3);
+    const again = await countMaps(ctx, async () => {
+      await backend.readTransforms(out);
+    });
+    expect(again).toBe(2); // the step's own counts, and the transforms
+    await world.SetBackend(null);
+    expect(bodies[count - 1].GetPosition().y).toBeLessThan(Math.floor((count - 1) / 128) * 0.5);
   }, 300_000);
 
   it('the getters show the last synchronisation bit for bit, each body fetched when first read; between synchronisations they keep it; RayCast sees it', async () => {

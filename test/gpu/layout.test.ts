@@ -22,9 +22,8 @@ import {
   b2_velocityThreshold,
   b2_pi,
 } from '../../src/common/b2Settings';
-import { b2JointType, b2LimitState } from '../../src/dynamics/joints/b2Joint';
+import { b2BodyFlags, b2BodyType, b2JointType, b2LimitState } from '../../src/common/b2Constants';
 import { JOINT_PARAMS_VEC4, JOINT_VEC4 } from '../../src-gpu/solveJoints';
-import { b2Body, b2_dynamicBody, b2_staticBody } from '../../src/dynamics/b2Body';
 import * as layout from '../../src-gpu/layout';
 
 const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
@@ -128,9 +127,9 @@ it("declares the solver's state words, indirect offsets, colour cap and 2.2.1's 
   expect(f32(s.get('MAX_TRANSLATION')!)).toBe(f32(b2_maxTranslation));
   expect(f32(s.get('MAX_ROTATION')!)).toBe(f32(b2_maxRotation));
   expect(s.get('BODY_LIVE')).toBe(layout.BODY_LIVE);
-  expect(s.get('BODY_ACTIVE')).toBe(b2Body.e_activeFlag);
-  expect(s.get('DYNAMIC_BODY')).toBe(b2_dynamicBody);
-  expect(s.get('STATIC_BODY')).toBe(b2_staticBody);
+  expect(s.get('BODY_ACTIVE')).toBe(b2BodyFlags.e_activeFlag);
+  expect(s.get('DYNAMIC_BODY')).toBe(b2BodyType.b2_dynamicBody);
+  expect(s.get('STATIC_BODY')).toBe(b2BodyType.b2_staticBody);
   expect(s.get('E_CIRCLES')).toBe(b2Manifold.e_circles);
   expect(s.get('E_FACE_A')).toBe(b2Manifold.e_faceA);
   expect(s.get('E_FACE_B')).toBe(b2Manifold.e_faceB);
@@ -161,6 +160,30 @@ it("declares the joints' record sizes, b2JointType, b2LimitState and 2.2.1's ang
   expect(f32(j.get('ANGULAR_SLOP')!)).toBe(f32(b2_angularSlop));
   expect(f32(j.get('MAX_ANGULAR_CORRECTION')!)).toBe(f32(b2_maxAngularCorrection));
   expect(f32(j.get('PI')!)).toBe(f32(b2_pi));
+});
+
+it("declares the engine's body flags and types as src/common/b2Constants.ts has them, in every stage that tests them", () => {
+  const islands = constants(wgsl('islands'));
+  expect(islands.get('AUTO_SLEEP')).toBe(b2BodyFlags.e_autoSleepFlag);
+  const toi = constants(wgsl('timeOfImpact'));
+  expect(toi.get('BULLET_FLAG')).toBe(b2BodyFlags.e_bulletFlag);
+  expect(toi.get('DYNAMIC_TYPE')).toBe(b2BodyType.b2_dynamicBody);
+  expect(toi.get('STATIC_TYPE')).toBe(b2BodyType.b2_staticBody);
+});
+
+it('gives a constant declared in several WGSL files one value (f32 constants as f32)', () => {
+  const seen = new Map<string, { file: string; value: number }>();
+  const clashes: string[] = [];
+  for (const file of readdirSync(path.join(root, 'shaders')).filter((f) => f.endsWith('.wgsl'))) {
+    const source = readFileSync(path.join(root, 'shaders', file), 'utf8');
+    for (const m of source.matchAll(/^const (\w+): (u32|f32) = (0x[0-9a-fA-F]+|[0-9.]+)u?;/gm)) {
+      const [name, value] = [m[1], m[2] === 'f32' ? Math.fround(Number(m[3])) : Number(m[3])];
+      const first = seen.get(name);
+      if (first === undefined) seen.set(name, { file, value });
+      else if (first.value !== value) clashes.push(`${name}: ${first.value} in ${first.file}, ${value} in ${file}`);
+    }
+  }
+  expect(clashes).toEqual([]);
 });
 
 it('uses the tile sizes the host dispatches with', () => {

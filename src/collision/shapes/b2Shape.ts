@@ -2,6 +2,7 @@
  * The shape base class and mass data (b2Shape.h).
  */
 
+import { b2ShapeType } from '../../common/b2Constants';
 import { b2Vec2 } from '../../common/b2Math';
 import type { b2Transform } from '../../common/b2Math';
 import type { b2AABB, b2RayCastInput, b2RayCastOutput } from '../b2Collision';
@@ -35,11 +36,11 @@ export class b2MassData {
  * is created. Shapes may encapsulate a one or more child shapes.
  */
 export abstract class b2Shape {
-  static readonly e_circle = 0;
-  static readonly e_edge = 1;
-  static readonly e_polygon = 2;
-  static readonly e_chain = 3;
-  static readonly e_typeCount = 4;
+  static readonly e_circle = b2ShapeType.e_circle;
+  static readonly e_edge = b2ShapeType.e_edge;
+  static readonly e_polygon = b2ShapeType.e_polygon;
+  static readonly e_chain = b2ShapeType.e_chain;
+  static readonly e_typeCount = b2ShapeType.e_typeCount;
 
   m_type: number;
   m_radius: number;

@@ -7,6 +7,7 @@
  * them without breaking ES module load order. b2ContactManager's constructor fills it.
  */
 
+import { b2ContactFlags } from '../../common/b2Constants';
 import { b2Manifold, b2TestOverlapShapes } from '../../collision/b2Collision';
 import { b2ManifoldField, b2ManifoldPointField } from '../../collision/b2ManifoldRecord';
 import type { b2WorldManifold } from '../../collision/b2Collision';
@@ -116,18 +117,12 @@ const s_oldManifold = new b2Manifold();
 export class b2Contact {
   // Flags stored in m_flags
 
-  /** Used when crawling contact graph when forming islands. */
-  static readonly e_islandFlag = 0x0001;
-  /** Set when the shapes are touching. */
-  static readonly e_touchingFlag = 0x0002;
-  /** This contact can be disabled (by user) */
-  static readonly e_enabledFlag = 0x0004;
-  /** This contact needs filtering because a fixture filter was changed. */
-  static readonly e_filterFlag = 0x0008;
-  /** This bullet contact had a TOI event */
-  static readonly e_bulletHitFlag = 0x0010;
-  /** This contact has a valid TOI in m_toi */
-  static readonly e_toiFlag = 0x0020;
+  static readonly e_islandFlag = b2ContactFlags.e_islandFlag;
+  static readonly e_touchingFlag = b2ContactFlags.e_touchingFlag;
+  static readonly e_enabledFlag = b2ContactFlags.e_enabledFlag;
+  static readonly e_filterFlag = b2ContactFlags.e_filterFlag;
+  static readonly e_bulletHitFlag = b2ContactFlags.e_bulletHitFlag;
+  static readonly e_toiFlag = b2ContactFlags.e_toiFlag;
 
   static readonly s_registers: b2ContactRegister[][] = b2MakeRegisters();
   static s_initialized = false;

@@ -8,22 +8,11 @@
 import { b2Vec2 } from '../../common/b2Math';
 import { b2Assert, b2Log } from '../../common/b2Settings';
 import { b2DestroyedError } from '../../common/b2ArgumentError';
+import { b2JointType, b2LimitState } from '../../common/b2Constants';
 import type { b2Body } from '../b2Body';
 import type { b2SolverData } from '../b2TimeStep';
 
-export enum b2JointType {
-  e_unknownJoint,
-  e_revoluteJoint,
-  e_prismaticJoint,
-  e_distanceJoint,
-  e_pulleyJoint,
-  e_mouseJoint,
-  e_gearJoint,
-  e_wheelJoint,
-  e_weldJoint,
-  e_frictionJoint,
-  e_ropeJoint,
-}
+export { b2JointType, b2LimitState };
 
 export const e_unknownJoint = b2JointType.e_unknownJoint;
 export const e_revoluteJoint = b2JointType.e_revoluteJoint;
@@ -36,13 +25,6 @@ export const e_wheelJoint = b2JointType.e_wheelJoint;
 export const e_weldJoint = b2JointType.e_weldJoint;
 export const e_frictionJoint = b2JointType.e_frictionJoint;
 export const e_ropeJoint = b2JointType.e_ropeJoint;
-
-export enum b2LimitState {
-  e_inactiveLimit,
-  e_atLowerLimit,
-  e_atUpperLimit,
-  e_equalLimits,
-}
 
 export const e_inactiveLimit = b2LimitState.e_inactiveLimit;
 export const e_atLowerLimit = b2LimitState.e_atLowerLimit;
