@@ -154,7 +154,7 @@ fn workgroup_exclusive_scan(lid: u32, value: u32) -> u32 {
   return wg_scan[lid] + wg_scan_segment[lid / 16u];
 }
 
-// ---- The narrow phase (part 2; src-gpu/layout.ts NP, BIN, NP_ARGS, MF) ----
+// ---- The narrow phase (src-gpu/layout.ts NP, BIN, NP_ARGS, MF) ----
 
 // Word indices of the narrow phase's state buffer (array<u32>, 32 words).
 const NP_COUNT_0: u32 = 0u;            // contacts held by contact set 0 (the sets alternate per step)
@@ -190,7 +190,7 @@ const NP_ARGS_BLOCKS: u32 = 6u;        // scans over the contacts, one workgroup
 const NP_ARGS_PREV: u32 = 9u;          // one invocation per contact of the previous step
 const NP_ARGS_EVENT_SLOTS: u32 = 12u;  // one invocation per event slot (contacts, then previous contacts)
 const NP_ARGS_EVENT_BLOCKS: u32 = 15u; // the event scan, one workgroup per 4096 slots
-const NP_ARGS_SOLVER: u32 = 18u;       // one invocation per solver contact (part 3)
+const NP_ARGS_SOLVER: u32 = 18u;       // one invocation per solver contact
 const NP_ARGS_BINS: u32 = 21u;         // + 3 * bin: one invocation per contact of the bin
 
 // Contact flags in the manifold header word (bits 0-1 b2Manifold::Type, bits 2-3 pointCount).
@@ -206,7 +206,7 @@ const NO_CONTACT: u32 = 0xffffffffu;
 const EVENT_BEGIN: u32 = 1u;
 const EVENT_END: u32 = 2u;
 
-// ---- The solver (part 3; src-gpu/layout.ts SV, SV_ARGS, COLOUR_CAP, CONSTRAINT_VEC4) ----
+// ---- The solver (src-gpu/layout.ts SV, SV_ARGS, COLOUR_CAP, CONSTRAINT_VEC4) ----
 
 // Word indices of the solver's state buffer (array<u32>, SV_STATE_WORDS words).
 const SV_SKIP: u32 = 0u;               // 1 when the collision passes overflowed: this submission solves nothing

@@ -35,8 +35,8 @@ import { digitPasses, RadixSort } from './radixSort';
 import { SweepStage } from './sweep';
 import type { SweepInputs } from './sweep';
 import { PassTimer } from './timing';
-import { Readback } from './readback';
-import { ARGS, INDIRECT_WORDS, KEY_BITS, MAP_READ, OVERFLOW_ENTRIES, OVERFLOW_PAIRS, STATE, STATE_WORDS, USAGE } from './layout';
+import { Readback, readBuffer } from './readback';
+import { ARGS, INDIRECT_WORDS, KEY_BITS, OVERFLOW_ENTRIES, OVERFLOW_PAIRS, STATE, STATE_WORDS, USAGE } from './layout';
 import { GpuWorld } from './world';
 
 /** Opens a (timed) compute pass named `name`, lets `body` record into it, and closes it. */
@@ -355,31 +355,17 @@ export class GpuBroadPhase {
     this.sort.reserve(Math.max(entries, this.pairsA.capacity));
   }
 
-  /** Copies a GPU buffer's first `bytes` bytes to the CPU. */
-  async readBuffer(buffer: GPUBuffer, bytes: number): Promise<ArrayBuffer> {
-    this.ctx.assertAlive();
-    const size = Math.max(4, Math.ceil(bytes / 4) * 4);
-    const staging = this.ctx.createBuffer('broadphase readback', size, USAGE.MAP_READ | USAGE.COPY_DST);
-    const encoder = this.ctx.device.createCommandEncoder({ label: 'readback' });
-    encoder.copyBufferToBuffer(buffer, 0, staging, 0, size);
-    this.ctx.device.queue.submit([encoder.finish()]);
-    await staging.mapAsync(MAP_READ);
-    const data = staging.getMappedRange().slice(0, bytes);
-    staging.unmap();
-    staging.destroy();
-    return data;
-  }
 
   /** The sorted pairs of the last update: 2 words (a, b) per pair. */
   async readPairs(): Promise<Uint32Array> {
     if (this.pairCount === 0) return new Uint32Array(0);
-    return new Uint32Array(await this.readBuffer(this.pairs, 8 * this.pairCount));
+    return new Uint32Array(await readBuffer(this.ctx, this.pairs, 8 * this.pairCount, 'broadphase debug read'));
   }
 
   /** The proxy AABBs of the last update: 4 floats per proxy slot. */
   async readAABBs(): Promise<Float32Array> {
     if (!this.lastInputs) throw new Error('GpuBroadPhase: no update yet');
-    return new Float32Array(await this.readBuffer(this.lastInputs.proxyAABB, 16 * this.lastInputs.slotCount));
+    return new Float32Array(await readBuffer(this.ctx, this.lastInputs.proxyAABB, 16 * this.lastInputs.slotCount, 'broadphase debug read'));
   }
 
   destroy(): void {

@@ -25,7 +25,7 @@
  *   bodyMass   vec4<f32>  invMass, invI, localCenter.x, localCenter.y
  *   bodyParams vec4<f32>  linearDamping, angularDamping, gravityScale, 0
  *   bodyFlags  u32        b2Body::m_flags (bits 0-15) | type << 16 (bits 16-17) | BODY_LIVE
- *   bodyAwake  u32        1 awake, 0 asleep (b2Body::e_awakeFlag; part 3): GPU-owned once it
+ *   bodyAwake  u32        1 awake, 0 asleep (b2Body::e_awakeFlag): GPU-owned once it
  *                         steps, like the motion (the islands stage wakes and puts to sleep;
  *                         bodyFlags' copy of e_awakeFlag is the JavaScript value, unused on the GPU)
  *   jointRange vec2<u32>  (start, count) into jointList: the bodies joined to this one by a joint
@@ -34,7 +34,7 @@
  *   jointList  u32        body slots (see jointRange)
  *   joints     vec4<u32>  (index: joint slot) body A slot, body B slot, b2JointType,
  *                         collideConnected | JOINT_LIVE
- *   jointParams 5 x vec4<f32>  (index: joint slot; part 3) row 0: localAnchorA, localAnchorB
+ *   jointParams 5 x vec4<f32>  (index: joint slot) row 0: localAnchorA, localAnchorB
  *                         (mouse: 0, localAnchorB), rows 1-4 by b2JointType (unused words 0; a
  *                         world point is a cell (i32 bits) and the offset in it, as bodies are):
  *       revolute   referenceAngle, lowerAngle, upperAngle, maxMotorTorque | motorSpeed,
@@ -85,7 +85,7 @@
  *   state       u32 x STATE_WORDS  counts and parameters passed between stages (STATE below)
  *   indirect    u32 x INDIRECT_WORDS  dispatch sizes computed on the GPU (ARGS below)
  *
- * Narrow-phase output (part 2, src-gpu/narrowPhase.ts; index: contact = position in this step's
+ * Narrow-phase output (src-gpu/narrowPhase.ts; index: contact = position in this step's
  * pair list, sorted by (proxy a, proxy b)). Two contact sets alternate: this step's and the
  * previous step's (keys and manifolds), the rest is per step.
  *   contactKey  vec4<u32>  proxy a, proxy b (a < b, the pair), generation of a, generation of b:
@@ -103,7 +103,7 @@
  *                          index | 0x80000000 for a contact gone with its pair), in contact order
  *   npState     u32 x NP_STATE_WORDS  (NP below), npIndirect u32 x NP_INDIRECT_WORDS (NP_ARGS)
  *
- * Solver (part 3, src-gpu/solver.ts; index k: position in this step's solverList). It writes the
+ * Solver (src-gpu/solver.ts; index k: position in this step's solverList). It writes the
  * body motion tables in place (bodySweep, bodyVel, bodyXf, bodyCell) and word 3 of the manifolds.
  *   contactBodies  vec4<u32>  body A, body B, flags (points used, manifold points and type, which
  *                          bodies are dynamic: shaders/solverCommon.wgsl CB_*), contact index

@@ -21,7 +21,7 @@
  * and the passes that overflowed run again (the previous set is untouched until a step succeeds).
  * Same inputs, same outputs, bit for bit, on one device: positions come from scans and stable
  * sorts, never from atomics.
- * Passes of later stages (the solver, part 3) join the same command buffer through the update's
+ * Passes of later stages (the solver) join the same command buffer through the update's
  * `after` option, which receives this recording's output buffers.
  *
  * With { wait: false } an update returns once submitted: its read-back completes in the
@@ -48,7 +48,7 @@ import { OverlapStage } from './overlap';
 import { PersistStage } from './persist';
 import { CompactStage } from './compact';
 import { PassTimer } from './timing';
-import { Readback, ReadbackRing } from './readback';
+import { Readback, ReadbackRing, readBuffer } from './readback';
 import {
   BIN_COUNT,
   BIN_NAMES,
@@ -257,7 +257,7 @@ export class GpuNarrowPhase {
     this.reserve(cap);
   }
 
-  // ---- Outputs (the last update's; part 3 binds these) ----
+  // ---- Outputs (the last update's; the solver binds these) ----
 
   /** Contacts the buffers hold now. */
   get contactCapacity(): number {
@@ -746,23 +746,10 @@ export class GpuNarrowPhase {
 
   // ---- Read-back for tests and tools (not part of a step) ----
 
-  private async readBuffer(buffer: GPUBuffer, bytes: number): Promise<ArrayBuffer> {
-    this.ctx.assertAlive();
-    const size = Math.max(4, Math.ceil(bytes / 4) * 4);
-    const staging = this.ctx.createBuffer('narrowphase debug read', size, USAGE.MAP_READ | USAGE.COPY_DST);
-    const encoder = this.ctx.device.createCommandEncoder({ label: 'narrowphase debug read' });
-    encoder.copyBufferToBuffer(buffer, 0, staging, 0, size);
-    this.ctx.device.queue.submit([encoder.finish()]);
-    await staging.mapAsync(1);
-    const data = staging.getMappedRange().slice(0, bytes);
-    staging.unmap();
-    staging.destroy();
-    return data;
-  }
 
   /** The narrow phase's state words now (layout.ts NP). */
   async readState(): Promise<Uint32Array> {
-    return new Uint32Array(await this.readBuffer(this.state, 4 * NP_STATE_WORDS));
+    return new Uint32Array(await readBuffer(this.ctx, this.state, 4 * NP_STATE_WORDS, 'narrowphase debug read'));
   }
 
   /** The last update's contacts, decoded. */
@@ -770,9 +757,9 @@ export class GpuNarrowPhase {
     const np = await this.readState();
     const n = np[NP.CONTACTS];
     if (n === 0) return [];
-    const keys = new Uint32Array(await this.readBuffer(this.contactKeys, 16 * n));
-    const refs = new Uint32Array(await this.readBuffer(this.contactRef.buffer, 32 * n));
-    const mw = await this.readBuffer(this.manifolds, 4 * MANIFOLD_WORDS * n);
+    const keys = new Uint32Array(await readBuffer(this.ctx, this.contactKeys, 16 * n, 'narrowphase debug read'));
+    const refs = new Uint32Array(await readBuffer(this.ctx, this.contactRef.buffer, 32 * n, 'narrowphase debug read'));
+    const mw = await readBuffer(this.ctx, this.manifolds, 4 * MANIFOLD_WORDS * n, 'narrowphase debug read');
     const mu = new Uint32Array(mw);
     const mf = new Float32Array(mw);
     const out: GpuContactRecord[] = [];
@@ -822,14 +809,14 @@ export class GpuNarrowPhase {
   /** The last update's solver list (contact indices). */
   async readSolverList(): Promise<Uint32Array> {
     const n = (await this.readState())[NP.SOLVER];
-    return n === 0 ? new Uint32Array(0) : new Uint32Array(await this.readBuffer(this.solverList, 4 * n));
+    return n === 0 ? new Uint32Array(0) : new Uint32Array(await readBuffer(this.ctx, this.solverList, 4 * n, 'narrowphase debug read'));
   }
 
   /** The last update's begin/end events. */
   async readEvents(): Promise<GpuContactEvent[]> {
     const n = (await this.readState())[NP.EVENTS];
     if (n === 0) return [];
-    const w = new Uint32Array(await this.readBuffer(this.events, 16 * n));
+    const w = new Uint32Array(await readBuffer(this.ctx, this.events, 16 * n, 'narrowphase debug read'));
     const out: GpuContactEvent[] = [];
     for (let i = 0; i < n; ++i) {
       const index = w[4 * i + 3];
@@ -855,11 +842,11 @@ export class GpuNarrowPhase {
     for (let b = 0; b <= BIN_COUNT; ++b) counts.push(np[NP.BINS + b]);
     const parts = [
       new Uint8Array(Uint32Array.from(counts).buffer),
-      new Uint8Array(await this.readBuffer(this.contactKeys, 16 * n)),
-      new Uint8Array(await this.readBuffer(this.contactRef.buffer, 32 * n)),
-      new Uint8Array(await this.readBuffer(this.manifolds, 4 * MANIFOLD_WORDS * n)),
-      new Uint8Array(await this.readBuffer(this.solverList, 4 * np[NP.SOLVER])),
-      new Uint8Array(await this.readBuffer(this.events, 16 * np[NP.EVENTS])),
+      new Uint8Array(await readBuffer(this.ctx, this.contactKeys, 16 * n, 'narrowphase debug read')),
+      new Uint8Array(await readBuffer(this.ctx, this.contactRef.buffer, 32 * n, 'narrowphase debug read')),
+      new Uint8Array(await readBuffer(this.ctx, this.manifolds, 4 * MANIFOLD_WORDS * n, 'narrowphase debug read')),
+      new Uint8Array(await readBuffer(this.ctx, this.solverList, 4 * np[NP.SOLVER], 'narrowphase debug read')),
+      new Uint8Array(await readBuffer(this.ctx, this.events, 16 * np[NP.EVENTS], 'narrowphase debug read')),
     ];
     const out = new Uint8Array(parts.reduce((s, p) => s + p.length, 0));
     let at = 0;

@@ -29,6 +29,26 @@ export async function mapRead(ctx: GpuContext, buffer: GPUBuffer, size: number, 
   return buffer.getMappedRange(0, size);
 }
 
+/**
+ * Copies the first `bytes` bytes of a GPU buffer to the host through a staging buffer of its own:
+ * a whole GPU round trip, for tests and tools, never inside a step.
+ */
+export async function readBuffer(ctx: GpuContext, buffer: GPUBuffer, bytes: number, label: string): Promise<ArrayBuffer> {
+  ctx.assertAlive();
+  const size = Math.max(4, Math.ceil(bytes / 4) * 4);
+  const staging = ctx.createBuffer(label, size, USAGE.MAP_READ | USAGE.COPY_DST);
+  try {
+    const encoder = ctx.device.createCommandEncoder({ label });
+    encoder.copyBufferToBuffer(buffer, 0, staging, 0, size);
+    ctx.device.queue.submit([encoder.finish()]);
+    const data = (await mapRead(ctx, staging, size, `${label} failed`)).slice(0, bytes);
+    staging.unmap();
+    return data;
+  } finally {
+    staging.destroy();
+  }
+}
+
 export class Readback {
   readonly buffer: GPUBuffer;
   readonly size: number;

@@ -1,5 +1,5 @@
 /*
- * The GPU solver (part 3): b2Island::Solve for the contacts of a step, in float32, as stages
+ * The GPU solver: b2Island::Solve for the contacts of a step, in float32, as stages
  * recorded after the narrow phase in the same command buffer.
  *
  *   begin               solver state: skip when collision overflowed, the contact count  colour.ts
@@ -37,10 +37,11 @@
  * differs from the engine's.
  * Sleeping bodies are not integrated and their contacts are not solved (islands.ts), nor joints
  * with a sleeping dynamic body (solveJoints.ts).
- * Not yet: 2.2.1's TOI island solve and sub-steps (timeOfImpact.ts), PreSolve (PostSolve is
+ * Unlike 2.2.1: no TOI island solve or sub-steps (timeOfImpact.ts), no PreSolve (PostSolve is
  * delivered by WebGPUBackend from the impulses left in the manifolds: events.ts).
  */
 
+import { readBuffer } from './readback';
 import type { GpuContext } from './device';
 import { GpuArray } from './buffers';
 import { Uniform } from './kernel';
@@ -315,23 +316,10 @@ export class GpuSolver {
 
   // ---- Read-back for tests and tools (not part of a step) ----
 
-  private async readBuffer(buffer: GPUBuffer, bytes: number): Promise<ArrayBuffer> {
-    this.ctx.assertAlive();
-    const size = Math.max(4, Math.ceil(bytes / 4) * 4);
-    const staging = this.ctx.createBuffer('solver debug read', size, USAGE.MAP_READ | USAGE.COPY_DST);
-    const encoder = this.ctx.device.createCommandEncoder({ label: 'solver debug read' });
-    encoder.copyBufferToBuffer(buffer, 0, staging, 0, size);
-    this.ctx.device.queue.submit([encoder.finish()]);
-    await staging.mapAsync(1);
-    const data = staging.getMappedRange().slice(0, bytes);
-    staging.unmap();
-    staging.destroy();
-    return data;
-  }
 
   /** The solver state of the last step. */
   async readState(): Promise<SolverState> {
-    const w = new Uint32Array(await this.readBuffer(this.state, 4 * SV_STATE_WORDS));
+    const w = new Uint32Array(await readBuffer(this.ctx, this.state, 4 * SV_STATE_WORDS, 'solver debug read'));
     return {
       skipped: w[SV.SKIP] !== 0,
       contacts: w[SV.COUNT],
@@ -354,7 +342,7 @@ export class GpuSolver {
     const joints = state.joints;
     const n = state.contacts;
     const items = joints + n;
-    const read = async (buffer: GPUBuffer, bytes: number): Promise<Uint32Array> => (bytes === 0 ? new Uint32Array(0) : new Uint32Array(await this.readBuffer(buffer, bytes)));
+    const read = async (buffer: GPUBuffer, bytes: number): Promise<Uint32Array> => (bytes === 0 ? new Uint32Array(0) : new Uint32Array(await readBuffer(this.ctx, buffer, bytes, 'solver debug read')));
     return {
       joints,
       colours: await read(this.colouring.colours.buffer, 4 * items),
@@ -370,7 +358,7 @@ export class GpuSolver {
    * NO_ISLAND for static, inactive and dead bodies.
    */
   async readIslands(bodySlots: number): Promise<Uint32Array> {
-    const words = new Uint32Array(await this.readBuffer(this.islands.labels.buffer, 4 * ISLAND_WORDS * bodySlots));
+    const words = new Uint32Array(await readBuffer(this.ctx, this.islands.labels.buffer, 4 * ISLAND_WORDS * bodySlots, 'solver debug read'));
     return Uint32Array.from({ length: bodySlots }, (_, i) => words[ISLAND_WORDS * i]);
   }
 

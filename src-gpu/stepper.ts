@@ -24,7 +24,7 @@
  * Joints: all ten types of 2.2.1 are solved (solveJoints.ts), coloured with the contacts.
  * Sleeping: islands and sleep timers on the GPU (islands.ts); the awake flag is GPU-owned like the
  * motion, and SetAwake from JavaScript reaches the GPU by GpuWorld's rule (its header).
- * Not yet (docs/GPU.md, "The solver"): 2.2.1's TOI island solve and sub-steps (a body is stopped at
+ * Unlike 2.2.1 (docs/GPU.md, "The solver"): no TOI island solve or sub-steps (a body is stopped at
  * its time of impact and the next step solves the contact). Contact listeners: WebGPUBackend
  * (backend.ts) reads events and contacts in readState()'s map and delivers them after the step.
  */

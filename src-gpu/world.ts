@@ -26,7 +26,7 @@
  * - Precision. Positions are stored as an integer cell and a float32 offset in it (layout.ts), so a
  *   body at x = 5000 m keeps its position to about 1e-6 m.
  *
- * The mirror goes one way, JavaScript to GPU, until the GPU steps the world (part 3's solver):
+ * The mirror goes one way, JavaScript to GPU, until the GPU steps the world (GpuStepper):
  * then `gpuOwnsMotion` is set and the GPU's copy of the body motion (bodyXf, bodyCell, bodySweep,
  * bodyVel) and of the joints' warm-start state (jointState) is the authority: sync() uploads them
  * only for bodies and joints new to the mirror (a reused slot included), and uploads exactly the
