@@ -52,14 +52,14 @@ fn transform_point(xf: vec4<f32>, v: vec2<f32>) -> vec2<f32> {
 
 // b2Shape::ComputeAABB of a proxy's child at the transform xf, without the radius (lower, upper).
 fn child_bounds(shapeType: u32, count: u32, offset: u32, child: u32, xf: vec4<f32>) -> vec4<f32> {
-  if (shapeType == 0u) {
+  if (shapeType == SHAPE_CIRCLE) {
     // b2CircleShape: p = xf.p + R * m_p
     let c = shapePool[offset];
     let q = vec2<f32>(xf.z * c.x - xf.w * c.y, xf.w * c.x + xf.z * c.y);
     let centre = xf.xy + q;
     return vec4<f32>(centre, centre);
   }
-  if (shapeType == 2u) {
+  if (shapeType == SHAPE_POLYGON) {
     // b2PolygonShape: the transformed vertices' bounds
     let v0 = transform_point(xf, shapePool[offset]);
     var lower = v0;
@@ -74,7 +74,7 @@ fn child_bounds(shapeType: u32, count: u32, offset: u32, child: u32, xf: vec4<f3
   // b2EdgeShape (vertex1, vertex2 first in its pool entry) or one edge of a b2ChainShape.
   var i1 = offset;
   var i2 = offset + 1u;
-  if (shapeType == 3u) {
+  if (shapeType == SHAPE_CHAIN) {
     // b2ChainShape::ComputeAABB (2.2.1) wraps i2 to 0.
     i1 = offset + child;
     var j = child + 1u;
@@ -120,7 +120,7 @@ fn main(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: vec
   let shapeType = shape.x & 0xfu;
   let count = shape.x >> 8u;
   // b2ChainShape::ComputeAABB (2.2.1) adds no radius.
-  let r = select(bitcast<f32>(shape.w), 0.0, shapeType == 3u);
+  let r = select(bitcast<f32>(shape.w), 0.0, shapeType == SHAPE_CHAIN);
 
   var box = child_bounds(shapeType, count, shape.y, proxy.y, xf);
   var displacement = vec2<f32>(0.0);

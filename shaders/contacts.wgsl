@@ -80,22 +80,24 @@ fn begin() {
 
 // The contact rank of a shape type in b2Contact::Create's registry: the higher rank is fixture A.
 fn type_rank(shapeType: u32) -> u32 {
-  // circle 0 -> 0, edge 1 -> 2, polygon 2 -> 1, chain 3 -> 2
-  return select(select(2u, 1u, shapeType == 2u), 0u, shapeType == 0u);
+  // circle -> 0, polygon -> 1, edge and chain -> 2
+  return select(select(2u, 1u, shapeType == SHAPE_POLYGON), 0u, shapeType == SHAPE_CIRCLE);
 }
 
 fn bin_of(typeA: u32, typeB: u32) -> u32 {
-  if (typeA == 0u && typeB == 0u) {
+  if (typeA == SHAPE_CIRCLE && typeB == SHAPE_CIRCLE) {
     return BIN_CIRCLES;
   }
-  if (typeA == 2u) {
-    return select(BIN_NONE, select(BIN_POLYGONS, BIN_POLYGON_CIRCLE, typeB == 0u), typeB == 0u || typeB == 2u);
+  let circleB = typeB == SHAPE_CIRCLE;
+  let convexB = circleB || typeB == SHAPE_POLYGON;
+  if (typeA == SHAPE_POLYGON) {
+    return select(BIN_NONE, select(BIN_POLYGONS, BIN_POLYGON_CIRCLE, circleB), convexB);
   }
-  if (typeA == 1u) {
-    return select(BIN_NONE, select(BIN_EDGE_POLYGON, BIN_EDGE_CIRCLE, typeB == 0u), typeB == 0u || typeB == 2u);
+  if (typeA == SHAPE_EDGE) {
+    return select(BIN_NONE, select(BIN_EDGE_POLYGON, BIN_EDGE_CIRCLE, circleB), convexB);
   }
-  if (typeA == 3u) {
-    return select(BIN_NONE, select(BIN_CHAIN_POLYGON, BIN_CHAIN_CIRCLE, typeB == 0u), typeB == 0u || typeB == 2u);
+  if (typeA == SHAPE_CHAIN) {
+    return select(BIN_NONE, select(BIN_CHAIN_POLYGON, BIN_CHAIN_CIRCLE, circleB), convexB);
   }
   return BIN_NONE;
 }

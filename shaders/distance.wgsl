@@ -32,18 +32,18 @@ fn load_proxy(fixture: u32, child: u32) -> Proxy {
   p.radius = bitcast<f32>(shape.w);
   let base = shape.y;
   switch (shape.x & 0xfu) {
-    case 0u: {
+    case SHAPE_CIRCLE: {
       p.v[0] = shapePool[base];
       p.count = 1u;
     }
-    case 2u: {
+    case SHAPE_POLYGON: {
       let count = (shape.x >> 8u) & 0xffu;
       for (var i = 0u; i < count; i = i + 1u) {
         p.v[i] = shapePool[base + i];
       }
       p.count = count;
     }
-    case 1u: {
+    case SHAPE_EDGE: {
       p.v[0] = shapePool[base];
       p.v[1] = shapePool[base + 1u];
       p.count = 2u;

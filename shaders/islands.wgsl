@@ -53,10 +53,6 @@ const NO_ISLAND: u32 = 0xffffffffu;
 const FLT_MAX_BITS: u32 = 0x7f7fffffu;
 
 const JOINT_LIVE: u32 = 0x80000000u;
-const AUTO_SLEEP: u32 = 0x0004u;                            // b2Body::e_autoSleepFlag
-const TIME_TO_SLEEP: f32 = 0.5;                             // b2_timeToSleep
-const LINEAR_SLEEP_TOLERANCE: f32 = 0.01;                   // b2_linearSleepTolerance
-const ANGULAR_SLEEP_TOLERANCE: f32 = 0.034906585039886591;  // b2_angularSleepTolerance = 2 / 180 * b2_pi
 
 fn is_node(i: u32) -> bool {
   let flags = bodyFlags[i];
@@ -227,7 +223,7 @@ fn sleep_time(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nw
   let linTolSqr = LINEAR_SLEEP_TOLERANCE * LINEAR_SLEEP_TOLERANCE;
   let angTolSqr = ANGULAR_SLEEP_TOLERANCE * ANGULAR_SLEEP_TOLERANCE;
   var sleepTime = 0.0;
-  if ((bodyFlags[i] & AUTO_SLEEP) != 0u && vel.z * vel.z <= angTolSqr && vel.x * vel.x + vel.y * vel.y <= linTolSqr) {
+  if ((bodyFlags[i] & BODY_AUTO_SLEEP) != 0u && vel.z * vel.z <= angTolSqr && vel.x * vel.x + vel.y * vel.y <= linTolSqr) {
     sleepTime = s1.w + params.h;
   }
   bodySweep[2u * i + 1u] = vec4<f32>(s1.xyz, sleepTime);

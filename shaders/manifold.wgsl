@@ -36,16 +36,8 @@ struct CollideParams {
 // b2Settings.h, as float32.
 const MAX_FLOAT: f32 = 0x1.fffffep+127f;     // b2_maxFloat (FLT_MAX)
 const EPSILON: f32 = 0x1p-23f;              // b2_epsilon (FLT_EPSILON)
-const ANGULAR_SLOP: f32 = 0.034906585039888889; // b2_angularSlop = 2 / 180 * b2_pi
-const POLYGON_RADIUS: f32 = 0.01;            // b2_polygonRadius
-
-// b2Manifold::Type
-const E_CIRCLES: u32 = 0u;
-const E_FACE_A: u32 = 1u;
-const E_FACE_B: u32 = 2u;
-// b2ContactFeature::Type
-const F_VERTEX: u32 = 0u;
-const F_FACE: u32 = 1u;
+// b2Manifold::Type (E_*), b2ContactFeature::Type (F_*), b2_angularSlop and b2_polygonRadius: the
+// engine's constants (src-gpu/engineWgsl.ts).
 
 // A b2Transform: p, and the rotation (c, s).
 struct Xf {
@@ -251,7 +243,7 @@ fn load_edge(fixture: u32, child: u32) -> Edge {
   let base = shape.y;
   var e: Edge;
   e.radius = bitcast<f32>(shape.w);
-  if ((shape.x & 0xfu) == 1u) {
+  if ((shape.x & 0xfu) == SHAPE_EDGE) {
     e.v1 = shapePool[base];
     e.v2 = shapePool[base + 1u];
     e.v0 = shapePool[base + 2u];

@@ -46,23 +46,6 @@ alias Motion = array<vec4<f32>, 4>;
 const JOINT_VEC4: u32 = 9u;
 const JOINT_PARAMS_VEC4: u32 = 5u;
 const NO_BODY: u32 = 0xffffffffu;
-const REVOLUTE_JOINT: u32 = 1u;                 // b2JointType
-const PRISMATIC_JOINT: u32 = 2u;
-const DISTANCE_JOINT: u32 = 3u;
-const PULLEY_JOINT: u32 = 4u;
-const MOUSE_JOINT: u32 = 5u;
-const GEAR_JOINT: u32 = 6u;
-const WHEEL_JOINT: u32 = 7u;
-const WELD_JOINT: u32 = 8u;
-const FRICTION_JOINT: u32 = 9u;
-const ROPE_JOINT: u32 = 10u;
-const INACTIVE_LIMIT: u32 = 0u;                 // b2LimitState
-const AT_LOWER_LIMIT: u32 = 1u;
-const AT_UPPER_LIMIT: u32 = 2u;
-const EQUAL_LIMITS: u32 = 3u;
-const ANGULAR_SLOP: f32 = 0.034906585039886591;      // b2_angularSlop = 2 / 180 * b2_pi
-const MAX_ANGULAR_CORRECTION: f32 = 0.13962634015954636; // b2_maxAngularCorrection = 8 / 180 * b2_pi
-const PI: f32 = 3.14159265359;                  // b2_pi
 
 // b2Mat33::Solve22 on the upper-left block (a11 = ex.x, a12 = ey.x, a21 = ex.y, a22 = ey.y); also
 // b2Mat22::Solve.

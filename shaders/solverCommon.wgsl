@@ -41,19 +41,11 @@ struct ColourParams {
 
 // b2Settings.h, as float32.
 const S_EPSILON: f32 = 0x1p-23f;               // b2_epsilon
-const LINEAR_SLOP: f32 = 0.005;                // b2_linearSlop
-const BAUMGARTE: f32 = 0.2;                    // b2_baumgarte
-const MAX_LINEAR_CORRECTION: f32 = 0.2;        // b2_maxLinearCorrection
-const VELOCITY_THRESHOLD: f32 = 1.0;           // b2_velocityThreshold
-const MAX_TRANSLATION: f32 = 2.0;              // b2_maxTranslation
-const MAX_ROTATION: f32 = 1.5707963267948966;  // b2_maxRotation = 0.5 * b2_pi
 const MAX_CONDITION_NUMBER: f32 = 1000.0;      // k_maxConditionNumber (b2ContactSolver.cpp)
 
-// b2Body::m_flags and types (bodyFlags: m_flags | type << 16 | BODY_LIVE).
+// bodyFlags: b2Body::m_flags | type << 16 | BODY_LIVE (the flags, the types and 2.2.1's
+// tolerances: the engine's constants, src-gpu/engineWgsl.ts).
 const BODY_LIVE: u32 = 0x80000000u;
-const BODY_ACTIVE: u32 = 0x0020u;              // b2Body::e_activeFlag
-const STATIC_BODY: u32 = 0u;
-const DYNAMIC_BODY: u32 = 2u;
 
 // contactBodies[k].z
 const CB_POINTS: u32 = 0x3u;                   // points the velocity solver uses (1 when the block solver is ill-conditioned)
@@ -61,10 +53,6 @@ const CB_MANIFOLD_POINTS_SHIFT: u32 = 2u;      // bits 2-3: the manifold's point
 const CB_TYPE_SHIFT: u32 = 4u;                 // bits 4-5: b2Manifold::Type
 const CB_DYNAMIC_A: u32 = 0x100u;
 const CB_DYNAMIC_B: u32 = 0x200u;
-
-const E_CIRCLES: u32 = 0u;
-const E_FACE_A: u32 = 1u;
-const E_FACE_B: u32 = 2u;
 
 fn body_type(flags: u32) -> u32 {
   return (flags >> 16u) & 3u;

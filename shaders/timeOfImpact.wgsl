@@ -45,16 +45,11 @@ struct ToiParams {
 @group(0) @binding(19) var<storage, read> bodyAwake: array<u32>;
 
 // b2Settings.h and b2TimeOfImpact.cpp, as float32.
-const LINEAR_SLOP: f32 = 0.005;                // b2_linearSlop
-const MAX_POLYGON_VERTICES: u32 = 8u;          // b2_maxPolygonVertices (push-back iterations)
 const TOI_MAX_ITERATIONS: u32 = 20u;           // k_maxIterations
 const TOI_MAX_ROOT_ITERATIONS: u32 = 50u;      // the root finder's limit
 const TWO_PI: f32 = 6.28318530717958647692;
 
-// bodyFlags: b2Body::m_flags | type << 16 | BODY_LIVE.
-const BULLET_FLAG: u32 = 0x0008u;              // b2Body::e_bulletFlag
-const DYNAMIC_TYPE: u32 = 2u;                  // b2_dynamicBody
-const STATIC_TYPE: u32 = 0u;                   // b2_staticBody
+// bodyFlags: b2Body::m_flags | type << 16 | BODY_LIVE (BODY_BULLET, the types: src-gpu/engineWgsl.ts).
 
 // contactRef[2c].w: bin << 4 | sensor << 1 | swapped.
 const REF_SENSOR: u32 = 0x2u;
@@ -356,11 +351,11 @@ fn candidates(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nw
   let flagsB = bodyFlags[refB.z];
   let typeA = (flagsA >> 16u) & 3u;
   let typeB = (flagsB >> 16u) & 3u;
-  if (typeA == STATIC_TYPE && typeB == STATIC_TYPE) {
+  if (typeA == STATIC_BODY && typeB == STATIC_BODY) {
     return;
   }
-  let collideA = (flagsA & BULLET_FLAG) != 0u || typeA != DYNAMIC_TYPE;
-  let collideB = (flagsB & BULLET_FLAG) != 0u || typeB != DYNAMIC_TYPE;
+  let collideA = (flagsA & BODY_BULLET) != 0u || typeA != DYNAMIC_BODY;
+  let collideB = (flagsB & BODY_BULLET) != 0u || typeB != DYNAMIC_BODY;
   // Two non-bullet dynamic bodies: no continuous collision between them.
   if (!collideA && !collideB) {
     return;
@@ -373,10 +368,10 @@ fn candidates(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nw
     return;
   }
   let key = ONE_BITS - bitcast<u32>(min(out.t, 1.0));
-  if (typeA == DYNAMIC_TYPE) {
+  if (typeA == DYNAMIC_BODY) {
     atomicMax(&toiBody[1u + refA.z], key);
   }
-  if (typeB == DYNAMIC_TYPE) {
+  if (typeB == DYNAMIC_BODY) {
     atomicMax(&toiBody[1u + refB.z], key);
   }
 }

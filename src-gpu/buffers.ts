@@ -122,17 +122,40 @@ export class MirrorTable {
 
   /** Makes room for slots [0, n) (the GPU copy keeps what was uploaded). */
   reserve(n: number): void {
-    if (n <= this.gpu.capacity) return;
-    this.gpu.ensure(n, this.count);
-    const capacity = this.gpu.capacity;
-    const u32 = new Uint32Array(capacity * this.words);
-    u32.set(this.u32);
-    this.u32 = u32;
-    this.f32 = new Float32Array(u32.buffer);
-    this.i32 = new Int32Array(u32.buffer);
-    const dirty = new Uint8Array(capacity);
-    dirty.set(this.dirty);
-    this.dirty = dirty;
+    MirrorTable.reserveAll([this], [n]);
+  }
+
+  /**
+   * reserve(n[i]) for each of `tables`, their new shadows carved from one ArrayBuffer: V8 weighs
+   * every large allocation against the memory it holds outside its heap, and one allocation for a
+   * world's tables starts one collection where one per table started several (each a full mark of
+   * the world's objects, seconds at a million bodies).
+   */
+  static reserveAll(tables: readonly MirrorTable[], n: readonly number[]): void {
+    const grown: MirrorTable[] = [];
+    let bytes = 0;
+    tables.forEach((table, i) => {
+      if (n[i] <= table.gpu.capacity) return;
+      table.gpu.ensure(n[i], table.count);
+      grown.push(table);
+      bytes += 4 * table.gpu.capacity * table.words + Math.ceil(table.gpu.capacity / 4) * 4;
+    });
+    if (grown.length === 0) return;
+    const arena = new ArrayBuffer(bytes);
+    let at = 0;
+    for (const table of grown) {
+      const capacity = table.gpu.capacity;
+      const u32 = new Uint32Array(arena, at, capacity * table.words);
+      u32.set(table.u32);
+      table.u32 = u32;
+      table.f32 = new Float32Array(arena, at, capacity * table.words);
+      table.i32 = new Int32Array(arena, at, capacity * table.words);
+      at += 4 * capacity * table.words;
+      const dirty = new Uint8Array(arena, at, capacity);
+      dirty.set(table.dirty);
+      table.dirty = dirty;
+      at += Math.ceil(capacity / 4) * 4;
+    }
   }
 
   /** Compares the scratch record with element `slot`; copies and marks it dirty when it differs. */
@@ -230,7 +253,7 @@ export class MirrorTable {
     const dirty = this.dirty;
     let elements = 0;
     const write = (from: number, to: number) => {
-      queue.writeBuffer(this.gpu.buffer, from * bytesPerElement, this.u32.buffer, from * bytesPerElement, (to - from) * bytesPerElement);
+      queue.writeBuffer(this.gpu.buffer, from * bytesPerElement, this.u32.buffer, this.u32.byteOffset + from * bytesPerElement, (to - from) * bytesPerElement);
       if (stats) {
         stats.bytes += (to - from) * bytesPerElement;
         stats.writes++;

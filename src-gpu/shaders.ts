@@ -1,14 +1,15 @@
 /*
  * The WGSL of every stage, as text bundled with the code (esbuild's text loader in the builds,
- * a small plugin in vitest.config.ts for the tests). shaders/common.wgsl is prepended to each
- * stage, since WGSL has no include, and shaders/manifold.wgsl (bindings and helpers of the collide
+ * a small plugin in vitest.config.ts for the tests). The engine's constants (engineWgsl.ts) and
+ * shaders/common.wgsl are prepended to each stage, since WGSL has no include, and shaders/manifold.wgsl (bindings and helpers of the collide
  * kernels) to the four narrow-phase collide stages; shaders/solverCommon.wgsl (the solver's
  * parameters, constants and helpers) to the solver stages, and shaders/solveJointsCommon.wgsl (the
  * joints' share of the colour passes) to the stages that solve joints; shaders/distance.wgsl (GJK)
  * to the sensor test and to continuous collision, which also takes manifold.wgsl's shape helpers.
  */
 
-import common from '../shaders/common.wgsl';
+import { ENGINE_WGSL } from './engineWgsl';
+import commonWgsl from '../shaders/common.wgsl';
 import bounds from '../shaders/bounds.wgsl';
 import axis from '../shaders/axis.wgsl';
 import keys from '../shaders/keys.wgsl';
@@ -38,6 +39,8 @@ import solveJoints from '../shaders/solveJoints.wgsl';
 import timeOfImpact from '../shaders/timeOfImpact.wgsl';
 import solveJointsCommon from '../shaders/solveJointsCommon.wgsl';
 import islands from '../shaders/islands.wgsl';
+
+const common = `${ENGINE_WGSL}\n${commonWgsl}`;
 
 export const SHADERS = {
   common,

@@ -83,20 +83,6 @@ import {
 
 const { e_circle, e_edge, e_polygon } = b2ShapeType;
 const { e_awakeFlag } = b2BodyFlags;
-/** b2JointType values (parameters in jointParams by type: layout.ts). */
-const {
-  e_revoluteJoint,
-  e_prismaticJoint,
-  e_distanceJoint,
-  e_pulleyJoint,
-  e_mouseJoint,
-  e_gearJoint,
-  e_wheelJoint,
-  e_weldJoint,
-  e_frictionJoint,
-  e_ropeJoint,
-} = b2JointType;
-
 /** Four words into a scratch record at `at` (no array literal: sync() allocates nothing per joint). */
 function put4(record: Float32Array, at: number, a: number, b: number, c: number, d: number): void {
   record[at] = a;
@@ -602,12 +588,13 @@ export class GpuWorld {
         shapes += shapeSize(f);
       }
     }
-    this.shapePool.reserve(shapes);
-    for (const table of [this.bodyXf, this.bodyCell, this.bodySweep, this.bodyVel, this.bodyForce, this.bodyMass, this.bodyParams, this.bodyFlags, this.bodyAwake, this.jointRange]) {
-      table.reserve(bodies);
-    }
-    for (const table of [this.fixtureShape, this.fixtureMaterial]) table.reserve(fixtures);
-    for (const table of [this.proxyRef, this.proxyFilter, this.proxyKey]) table.reserve(proxies);
+    const perBody = [this.bodyXf, this.bodyCell, this.bodySweep, this.bodyVel, this.bodyForce, this.bodyMass, this.bodyParams, this.bodyFlags, this.bodyAwake, this.jointRange];
+    const perFixture = [this.fixtureShape, this.fixtureMaterial];
+    const perProxy = [this.proxyRef, this.proxyFilter, this.proxyKey];
+    MirrorTable.reserveAll(
+      [this.shapePool, ...perBody, ...perFixture, ...perProxy],
+      [shapes, ...perBody.map(() => bodies), ...perFixture.map(() => fixtures), ...perProxy.map(() => proxies)],
+    );
   }
 
   /** Calls `visit` for every body the API changed since the last sync (the change log: applied forces included). */
@@ -786,7 +773,7 @@ export class GpuWorld {
     const s = this.jointState.scratchF32;
     s.fill(0);
     switch (j.m_type) {
-      case e_revoluteJoint: {
+      case b2JointType.e_revoluteJoint: {
         const r = j as b2RevoluteJoint;
         put4(p, 0, r.m_localAnchorA.x, r.m_localAnchorA.y, r.m_localAnchorB.x, r.m_localAnchorB.y);
         put4(p, 4, r.m_referenceAngle, r.m_lowerAngle, r.m_upperAngle, r.m_maxMotorTorque);
@@ -795,7 +782,7 @@ export class GpuWorld {
         s[4] = r.m_limitState;
         break;
       }
-      case e_prismaticJoint: {
+      case b2JointType.e_prismaticJoint: {
         const r = j as b2PrismaticJoint;
         put4(p, 0, r.m_localAnchorA.x, r.m_localAnchorA.y, r.m_localAnchorB.x, r.m_localAnchorB.y);
         put4(p, 4, r.m_referenceAngle, r.m_lowerTranslation, r.m_upperTranslation, r.m_maxMotorForce);
@@ -805,14 +792,14 @@ export class GpuWorld {
         s[4] = r.m_limitState;
         break;
       }
-      case e_distanceJoint: {
+      case b2JointType.e_distanceJoint: {
         const d = j as b2DistanceJoint;
         put4(p, 0, d.m_localAnchorA.x, d.m_localAnchorA.y, d.m_localAnchorB.x, d.m_localAnchorB.y);
         put4(p, 4, d.m_length, d.m_frequencyHz, d.m_dampingRatio, 0);
         s[0] = d.m_impulse;
         break;
       }
-      case e_pulleyJoint: {
+      case b2JointType.e_pulleyJoint: {
         const q = j as b2PulleyJoint;
         put4(p, 0, q.m_localAnchorA.x, q.m_localAnchorA.y, q.m_localAnchorB.x, q.m_localAnchorB.y);
         put4(p, 4, q.m_lengthA, q.m_lengthB, q.m_ratio, q.m_constant);
@@ -821,7 +808,7 @@ export class GpuWorld {
         s[0] = q.m_impulse;
         break;
       }
-      case e_mouseJoint: {
+      case b2JointType.e_mouseJoint: {
         const m = j as b2MouseJoint;
         put4(p, 0, 0, 0, m.m_localAnchorB.x, m.m_localAnchorB.y);
         put4(p, 4, m.m_frequencyHz, m.m_dampingRatio, m.m_maxForce, m.m_bodyB.m_mass);
@@ -830,7 +817,7 @@ export class GpuWorld {
         s[1] = m.m_impulse.y;
         break;
       }
-      case e_gearJoint: {
+      case b2JointType.e_gearJoint: {
         const g = j as b2GearJoint;
         put4(p, 0, g.m_localAnchorA.x, g.m_localAnchorA.y, g.m_localAnchorB.x, g.m_localAnchorB.y);
         put4(p, 4, g.m_referenceAngleA, g.m_referenceAngleB, g.m_ratio, g.m_constant);
@@ -844,7 +831,7 @@ export class GpuWorld {
         s[0] = g.m_impulse;
         break;
       }
-      case e_wheelJoint: {
+      case b2JointType.e_wheelJoint: {
         const w = j as b2WheelJoint;
         put4(p, 0, w.m_localAnchorA.x, w.m_localAnchorA.y, w.m_localAnchorB.x, w.m_localAnchorB.y);
         put4(p, 4, w.m_frequencyHz, w.m_dampingRatio, 0, w.m_maxMotorTorque);
@@ -853,21 +840,21 @@ export class GpuWorld {
         put4(s, 0, w.m_impulse, w.m_springImpulse, w.m_motorImpulse, 0);
         break;
       }
-      case e_weldJoint: {
+      case b2JointType.e_weldJoint: {
         const w = j as b2WeldJoint;
         put4(p, 0, w.m_localAnchorA.x, w.m_localAnchorA.y, w.m_localAnchorB.x, w.m_localAnchorB.y);
         put4(p, 4, w.m_referenceAngle, w.m_frequencyHz, w.m_dampingRatio, 0);
         put4(s, 0, w.m_impulse.x, w.m_impulse.y, w.m_impulse.z, 0);
         break;
       }
-      case e_frictionJoint: {
+      case b2JointType.e_frictionJoint: {
         const f = j as b2FrictionJoint;
         put4(p, 0, f.m_localAnchorA.x, f.m_localAnchorA.y, f.m_localAnchorB.x, f.m_localAnchorB.y);
         put4(p, 4, f.m_maxForce, f.m_maxTorque, 0, 0);
         put4(s, 0, f.m_linearImpulse.x, f.m_linearImpulse.y, f.m_angularImpulse, 0);
         break;
       }
-      case e_ropeJoint: {
+      case b2JointType.e_ropeJoint: {
         const r = j as b2RopeJoint;
         put4(p, 0, r.m_localAnchorA.x, r.m_localAnchorA.y, r.m_localAnchorB.x, r.m_localAnchorB.y);
         p[4] = r.m_maxLength;
@@ -895,43 +882,43 @@ export class GpuWorld {
       if (j === null) continue;
       const s = 8 * slot;
       switch (j.m_type) {
-        case e_revoluteJoint:
-        case e_prismaticJoint: {
+        case b2JointType.e_revoluteJoint:
+        case b2JointType.e_prismaticJoint: {
           const r = j as b2RevoluteJoint | b2PrismaticJoint;
           r.m_impulse.Set(state[s], state[s + 1], state[s + 2]);
           r.m_motorImpulse = state[s + 3];
           r.m_limitState = state[s + 4];
           break;
         }
-        case e_distanceJoint:
+        case b2JointType.e_distanceJoint:
           (j as b2DistanceJoint).m_impulse = state[s];
           break;
-        case e_pulleyJoint:
+        case b2JointType.e_pulleyJoint:
           (j as b2PulleyJoint).m_impulse = state[s];
           break;
-        case e_mouseJoint:
+        case b2JointType.e_mouseJoint:
           (j as b2MouseJoint).m_impulse.Set(state[s], state[s + 1]);
           break;
-        case e_gearJoint:
+        case b2JointType.e_gearJoint:
           (j as b2GearJoint).m_impulse = state[s];
           break;
-        case e_wheelJoint: {
+        case b2JointType.e_wheelJoint: {
           const w = j as b2WheelJoint;
           w.m_impulse = state[s];
           w.m_springImpulse = state[s + 1];
           w.m_motorImpulse = state[s + 2];
           break;
         }
-        case e_weldJoint:
+        case b2JointType.e_weldJoint:
           (j as b2WeldJoint).m_impulse.Set(state[s], state[s + 1], state[s + 2]);
           break;
-        case e_frictionJoint: {
+        case b2JointType.e_frictionJoint: {
           const f = j as b2FrictionJoint;
           f.m_linearImpulse.Set(state[s], state[s + 1]);
           f.m_angularImpulse = state[s + 2];
           break;
         }
-        case e_ropeJoint: {
+        case b2JointType.e_ropeJoint: {
           const r = j as b2RopeJoint;
           r.m_impulse = state[s];
           r.m_state = state[s + 4];

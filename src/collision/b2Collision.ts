@@ -3,6 +3,7 @@
  * (b2Collision.h, b2Collision.cpp).
  */
 
+import { b2ContactFeatureType, b2ManifoldType } from '../common/b2Constants';
 import { b2MakeArray } from '../common/b2MakeArray';
 import { b2Abs, b2Max, b2Min, b2MulRV, b2MulXV, b2Vec2 } from '../common/b2Math';
 import type { b2Transform } from '../common/b2Math';
@@ -17,8 +18,8 @@ export const b2_nullFeature = 0xff;
 
 /** The features that intersect to form the contact point. This must be 4 bytes or less. */
 export class b2ContactFeature {
-  static readonly e_vertex = 0;
-  static readonly e_face = 1;
+  static readonly e_vertex = b2ContactFeatureType.e_vertex;
+  static readonly e_face = b2ContactFeatureType.e_face;
 
   /** Feature index on shapeA (uint8) */
   indexA = 0;
@@ -228,14 +229,14 @@ b2InspectAsJSON(b2ManifoldPoint);
  * This structure is stored across time steps, so we keep it small.
  */
 export class b2Manifold {
-  static readonly e_circles = 0;
-  static readonly e_faceA = 1;
-  static readonly e_faceB = 2;
+  static readonly e_circles = b2ManifoldType.e_circles;
+  static readonly e_faceA = b2ManifoldType.e_faceA;
+  static readonly e_faceB = b2ManifoldType.e_faceB;
 
   /** The record holding this manifold's doubles, at m_offset (b2ManifoldField). */
   readonly m_record: Float64Array;
   readonly m_offset: number;
-  type = b2Manifold.e_circles;
+  type: number = b2Manifold.e_circles;
   /** the number of manifold points */
   pointCount = 0;
   /**

@@ -63,6 +63,19 @@ export const b2ShapeType = {
   e_typeCount: 4,
 } as const;
 
+/** b2Manifold::Type. */
+export const b2ManifoldType = {
+  e_circles: 0,
+  e_faceA: 1,
+  e_faceB: 2,
+} as const;
+
+/** b2ContactFeature::Type. */
+export const b2ContactFeatureType = {
+  e_vertex: 0,
+  e_face: 1,
+} as const;
+
 export enum b2JointType {
   e_unknownJoint,
   e_revoluteJoint,

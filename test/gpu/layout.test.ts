@@ -11,17 +11,24 @@ import { fileURLToPath } from 'node:url';
 import { expect, it } from 'vitest';
 import { b2ContactFeature, b2Manifold } from '../../src/collision/b2Collision';
 import {
+  b2_angularSleepTolerance,
   b2_angularSlop,
   b2_baumgarte,
+  b2_linearSleepTolerance,
   b2_maxAngularCorrection,
   b2_linearSlop,
   b2_maxLinearCorrection,
+  b2_maxPolygonVertices,
   b2_maxRotation,
   b2_maxTranslation,
   b2_polygonRadius,
+  b2_timeToSleep,
   b2_velocityThreshold,
   b2_pi,
 } from '../../src/common/b2Settings';
+import { b2Shape } from '../../src/collision/shapes/b2Shape';
+import { ENGINE_CONSTANTS, ENGINE_WGSL } from '../../src-gpu/engineWgsl';
+import { SHADERS } from '../../src-gpu/shaders';
 import { b2BodyFlags, b2BodyType, b2JointType, b2LimitState } from '../../src/common/b2Constants';
 import { JOINT_PARAMS_VEC4, JOINT_VEC4 } from '../../src-gpu/solveJoints';
 import * as layout from '../../src-gpu/layout';
@@ -94,14 +101,6 @@ it('declares the narrow phase\'s state words, bins, indirect offsets and contact
   expect(layout.BIN_NAMES.length).toBe(layout.BIN_COUNT);
   expect(layout.NP.BINS + layout.BIN_COUNT).toBeLessThan(layout.NP_STATE_WORDS);
   expect(layout.NP_ARGS.BINS + 3 * layout.BIN_COUNT).toBeLessThanOrEqual(layout.NP_INDIRECT_WORDS);
-  // The manifold kernels use b2Manifold::Type and b2ContactFeature::Type as the engine numbers them.
-  const m = constants(wgsl('manifold'));
-  expect(m.get('E_CIRCLES')).toBe(b2Manifold.e_circles);
-  expect(m.get('E_FACE_A')).toBe(b2Manifold.e_faceA);
-  expect(m.get('E_FACE_B')).toBe(b2Manifold.e_faceB);
-  expect(m.get('F_VERTEX')).toBe(b2ContactFeature.e_vertex);
-  expect(m.get('F_FACE')).toBe(b2ContactFeature.e_face);
-  expect(m.get('POLYGON_RADIUS')).toBe(b2_polygonRadius);
 });
 
 it("declares the solver's state words, indirect offsets, colour cap and 2.2.1's constants as the host and the engine use them", () => {
@@ -118,28 +117,33 @@ it("declares the solver's state words, indirect offsets, colour cap and 2.2.1's 
   expect(layout.SV_ARGS.ROUNDS + 3).toBeLessThanOrEqual(layout.SV_INDIRECT_WORDS);
   // The colour sort's digits (radix passes of 4 bits) hold every colour and the overflow set.
   expect(layout.COLOUR_CAP).toBeLessThan(256);
-  const s = constants(wgsl('solverCommon'));
-  const f32 = (x: number) => Math.fround(x);
-  expect(f32(s.get('LINEAR_SLOP')!)).toBe(f32(b2_linearSlop));
-  expect(f32(s.get('BAUMGARTE')!)).toBe(f32(b2_baumgarte));
-  expect(f32(s.get('MAX_LINEAR_CORRECTION')!)).toBe(f32(b2_maxLinearCorrection));
-  expect(f32(s.get('VELOCITY_THRESHOLD')!)).toBe(f32(b2_velocityThreshold));
-  expect(f32(s.get('MAX_TRANSLATION')!)).toBe(f32(b2_maxTranslation));
-  expect(f32(s.get('MAX_ROTATION')!)).toBe(f32(b2_maxRotation));
-  expect(s.get('BODY_LIVE')).toBe(layout.BODY_LIVE);
-  expect(s.get('BODY_ACTIVE')).toBe(b2BodyFlags.e_activeFlag);
-  expect(s.get('DYNAMIC_BODY')).toBe(b2BodyType.b2_dynamicBody);
-  expect(s.get('STATIC_BODY')).toBe(b2BodyType.b2_staticBody);
-  expect(s.get('E_CIRCLES')).toBe(b2Manifold.e_circles);
-  expect(s.get('E_FACE_A')).toBe(b2Manifold.e_faceA);
-  expect(s.get('E_FACE_B')).toBe(b2Manifold.e_faceB);
+  expect(constants(wgsl('solverCommon')).get('BODY_LIVE')).toBe(layout.BODY_LIVE);
 });
 
-it("declares the joints' record sizes, b2JointType, b2LimitState and 2.2.1's angular constants as the host and the engine use them", () => {
+it("declares the joints' record sizes as the host uses them", () => {
   const j = constants(wgsl('solveJointsCommon'));
   expect(j.get('JOINT_VEC4')).toBe(JOINT_VEC4);
   expect(j.get('JOINT_PARAMS_VEC4')).toBe(JOINT_PARAMS_VEC4);
-  const types: [string, number][] = [
+});
+
+it("gives every stage the engine's flags, types and 2.2.1's tolerances from the engine's own modules, and no WGSL file declares them again", () => {
+  const declared = constants(ENGINE_WGSL);
+  const f32 = (x: number) => Math.fround(x);
+  const expected: [string, number][] = [
+    ['BODY_AUTO_SLEEP', b2BodyFlags.e_autoSleepFlag],
+    ['BODY_BULLET', b2BodyFlags.e_bulletFlag],
+    ['BODY_ACTIVE', b2BodyFlags.e_activeFlag],
+    ['STATIC_BODY', b2BodyType.b2_staticBody],
+    ['DYNAMIC_BODY', b2BodyType.b2_dynamicBody],
+    ['SHAPE_CIRCLE', b2Shape.e_circle],
+    ['SHAPE_EDGE', b2Shape.e_edge],
+    ['SHAPE_POLYGON', b2Shape.e_polygon],
+    ['SHAPE_CHAIN', b2Shape.e_chain],
+    ['E_CIRCLES', b2Manifold.e_circles],
+    ['E_FACE_A', b2Manifold.e_faceA],
+    ['E_FACE_B', b2Manifold.e_faceB],
+    ['F_VERTEX', b2ContactFeature.e_vertex],
+    ['F_FACE', b2ContactFeature.e_face],
     ['REVOLUTE_JOINT', b2JointType.e_revoluteJoint],
     ['PRISMATIC_JOINT', b2JointType.e_prismaticJoint],
     ['DISTANCE_JOINT', b2JointType.e_distanceJoint],
@@ -154,21 +158,35 @@ it("declares the joints' record sizes, b2JointType, b2LimitState and 2.2.1's ang
     ['AT_LOWER_LIMIT', b2LimitState.e_atLowerLimit],
     ['AT_UPPER_LIMIT', b2LimitState.e_atUpperLimit],
     ['EQUAL_LIMITS', b2LimitState.e_equalLimits],
+    ['MAX_POLYGON_VERTICES', b2_maxPolygonVertices],
   ];
-  for (const [name, value] of types) expect(j.get(name), name).toBe(value);
-  const f32 = (x: number) => Math.fround(x);
-  expect(f32(j.get('ANGULAR_SLOP')!)).toBe(f32(b2_angularSlop));
-  expect(f32(j.get('MAX_ANGULAR_CORRECTION')!)).toBe(f32(b2_maxAngularCorrection));
-  expect(f32(j.get('PI')!)).toBe(f32(b2_pi));
-});
-
-it("declares the engine's body flags and types as src/common/b2Constants.ts has them, in every stage that tests them", () => {
-  const islands = constants(wgsl('islands'));
-  expect(islands.get('AUTO_SLEEP')).toBe(b2BodyFlags.e_autoSleepFlag);
-  const toi = constants(wgsl('timeOfImpact'));
-  expect(toi.get('BULLET_FLAG')).toBe(b2BodyFlags.e_bulletFlag);
-  expect(toi.get('DYNAMIC_TYPE')).toBe(b2BodyType.b2_dynamicBody);
-  expect(toi.get('STATIC_TYPE')).toBe(b2BodyType.b2_staticBody);
+  for (const [name, value] of expected) expect(declared.get(name), name).toBe(value);
+  const tolerances: [string, number][] = [
+    ['PI', b2_pi],
+    ['LINEAR_SLOP', b2_linearSlop],
+    ['ANGULAR_SLOP', b2_angularSlop],
+    ['POLYGON_RADIUS', b2_polygonRadius],
+    ['BAUMGARTE', b2_baumgarte],
+    ['MAX_LINEAR_CORRECTION', b2_maxLinearCorrection],
+    ['MAX_ANGULAR_CORRECTION', b2_maxAngularCorrection],
+    ['VELOCITY_THRESHOLD', b2_velocityThreshold],
+    ['MAX_TRANSLATION', b2_maxTranslation],
+    ['MAX_ROTATION', b2_maxRotation],
+    ['TIME_TO_SLEEP', b2_timeToSleep],
+    ['LINEAR_SLEEP_TOLERANCE', b2_linearSleepTolerance],
+    ['ANGULAR_SLEEP_TOLERANCE', b2_angularSleepTolerance],
+  ];
+  for (const [name, value] of tolerances) expect(f32(declared.get(name)!), name).toBe(f32(value));
+  expect(declared.size).toBe(ENGINE_CONSTANTS.length);
+  // Every stage gets them, and the shader files leave them to the generated block.
+  for (const stage of STAGES) expect(SHADERS[stage as keyof typeof SHADERS].startsWith(ENGINE_WGSL), stage).toBe(true);
+  const again: string[] = [];
+  for (const file of readdirSync(path.join(root, 'shaders')).filter((f) => f.endsWith('.wgsl'))) {
+    for (const name of constants(readFileSync(path.join(root, 'shaders', file), 'utf8')).keys()) {
+      if (declared.has(name)) again.push(`${file}: ${name}`);
+    }
+  }
+  expect(again).toEqual([]);
 });
 
 it('gives a constant declared in several WGSL files one value (f32 constants as f32)', () => {

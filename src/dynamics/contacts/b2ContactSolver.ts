@@ -70,7 +70,7 @@ export class b2ContactPositionConstraint {
   readonly localCenterB = new b2Vec2();
   invIA = 0.0;
   invIB = 0.0;
-  type = b2Manifold.e_circles;
+  type: number = b2Manifold.e_circles;
   radiusA = 0.0;
   radiusB = 0.0;
   pointCount = 0;
