@@ -192,7 +192,8 @@ export const STATE_CHUNK = 8192;
 const STATE_CHUNK_SHIFT = Math.log2(STATE_CHUNK);
 
 /**
- * Per-body fields read back into a mapped staging buffer, taken from the map a chunk of
+ * Per-body fields read back into a mapped staging buffer, one after another from its start (field
+ * f at 4 * count * the words of the fields before it), taken from the map a chunk of
  * STATE_CHUNK bodies at a time when a body of the chunk is first read: a synchronisation after
  * which the application reads a few bodies maps a few chunks, not the whole state. (V8 counts every
  * mapped range it is handed as memory it holds; a million bodies' whole state, 76 MB at each
@@ -202,21 +203,30 @@ const STATE_CHUNK_SHIFT = Math.log2(STATE_CHUNK);
 export class MappedState {
   private buffer: GPUBuffer | null = null;
   private count = 0;
-  private offsets: readonly number[] = [];
+  private readonly offsets: number[];
   private readonly chunks: FieldArray[][];
   /** Bytes taken from the map since open(). */
   bytes = 0;
 
   constructor(private readonly fields: readonly MappedField[]) {
     this.chunks = fields.map(() => []);
+    this.offsets = fields.map(() => 0);
   }
 
-  /** Hands out the fields of `count` bodies mapped in `buffer`, field f at byte offsets[f] (a multiple of 8). */
-  open(buffer: GPUBuffer, count: number, offsets: readonly number[]): void {
+  /**
+   * Hands out the fields of `count` bodies mapped in `buffer`. The fields before each field take an
+   * even number of words a body, so that every chunk starts at a multiple of 8 bytes, as
+   * getMappedRange requires.
+   */
+  open(buffer: GPUBuffer, count: number): void {
     this.close();
     this.buffer = buffer;
     this.count = count;
-    this.offsets = offsets;
+    let at = 0;
+    for (let f = 0; f < this.fields.length; ++f) {
+      this.offsets[f] = at;
+      at += 4 * this.fields[f].words * count;
+    }
   }
 
   /** Forgets the chunks (before the buffer is unmapped, which detaches them). */

@@ -219,7 +219,7 @@ export class GpuStepper {
     this.releaseState();
     this.stagingNow = next;
     this.stateFresh = true;
-    this.state.open(target.current, n, [0, 16 * n, 24 * n, 56 * n, 72 * n]);
+    this.state.open(target.current, n);
     if (joints > 0) mirror.unpackJointStates(new Float32Array(target.range(jointsAt, JOINT_STATE_BYTES * joints)));
     at = jointsAt + JOINT_STATE_BYTES * joints;
     for (const r of extras) {
@@ -250,8 +250,8 @@ export class GpuStepper {
     const cell = state.chunk(CELL, slot);
     const sweep = state.chunk(SWEEP, slot);
     const vel = state.chunk(VEL, slot);
-    const flag = state.chunk(AWAKE, slot)[slot & STATE_CHUNK_MASK];
     const i = slot & STATE_CHUNK_MASK;
+    const flag = state.chunk(AWAKE, slot)[i];
     const S = this.mirror.cellSize;
     const ox = cell[2 * i] * S;
     const oy = cell[2 * i + 1] * S;
