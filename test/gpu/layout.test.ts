@@ -236,3 +236,15 @@ it('keeps the engine free of the GPU backend', () => {
   walk(path.join(root, 'src'));
   expect(offenders).toEqual([]);
 });
+
+it("imports from the engine only types and its two constant modules, so the GPU bundle carries no second engine", () => {
+  const allowed = new Set(['../src/common/b2Constants', '../src/common/b2Settings']);
+  const offenders: string[] = [];
+  for (const file of readdirSync(path.join(root, 'src-gpu')).filter((f) => f.endsWith('.ts'))) {
+    const source = readFileSync(path.join(root, 'src-gpu', file), 'utf8');
+    for (const m of source.matchAll(/^import (type )?[^;]*? from '(\.\.\/src\/[^']+)';/gms)) {
+      if (m[1] === undefined && !allowed.has(m[2])) offenders.push(`${file}: ${m[2]}`);
+    }
+  }
+  expect(offenders).toEqual([]);
+});
