@@ -39,6 +39,9 @@ import { Readback, readBuffer } from './readback';
 import { ARGS, INDIRECT_WORDS, KEY_BITS, OVERFLOW_ENTRIES, OVERFLOW_PAIRS, STATE, STATE_WORDS, USAGE } from './layout';
 import { GpuWorld } from './world';
 
+/** The label of the read-backs for tests and tools (readBuffer). */
+const DEBUG_READ = 'broadphase debug read';
+
 /** Opens a (timed) compute pass named `name`, lets `body` record into it, and closes it. */
 export type PassRecorder = (name: string, body: (rec: Recorder) => void) => void;
 
@@ -359,13 +362,13 @@ export class GpuBroadPhase {
   /** The sorted pairs of the last update: 2 words (a, b) per pair. */
   async readPairs(): Promise<Uint32Array> {
     if (this.pairCount === 0) return new Uint32Array(0);
-    return new Uint32Array(await readBuffer(this.ctx, this.pairs, 8 * this.pairCount, 'broadphase debug read'));
+    return new Uint32Array(await readBuffer(this.ctx, this.pairs, 8 * this.pairCount, DEBUG_READ));
   }
 
   /** The proxy AABBs of the last update: 4 floats per proxy slot. */
   async readAABBs(): Promise<Float32Array> {
     if (!this.lastInputs) throw new Error('GpuBroadPhase: no update yet');
-    return new Float32Array(await readBuffer(this.ctx, this.lastInputs.proxyAABB, 16 * this.lastInputs.slotCount, 'broadphase debug read'));
+    return new Float32Array(await readBuffer(this.ctx, this.lastInputs.proxyAABB, 16 * this.lastInputs.slotCount, DEBUG_READ));
   }
 
   destroy(): void {

@@ -67,6 +67,9 @@ import {
 } from './layout';
 import type { GpuWorld } from './world';
 
+/** The label of the read-backs for tests and tools (readBuffer). */
+const DEBUG_READ = 'narrowphase debug read';
+
 export interface GpuNarrowPhaseOptions {
   /** Contacts the buffers hold at first (default 1024); they grow (doubling) to what is needed. */
   initialContactCapacity?: number;
@@ -749,7 +752,7 @@ export class GpuNarrowPhase {
 
   /** The narrow phase's state words now (layout.ts NP). */
   async readState(): Promise<Uint32Array> {
-    return new Uint32Array(await readBuffer(this.ctx, this.state, 4 * NP_STATE_WORDS, 'narrowphase debug read'));
+    return new Uint32Array(await readBuffer(this.ctx, this.state, 4 * NP_STATE_WORDS, DEBUG_READ));
   }
 
   /** The last update's contacts, decoded. */
@@ -757,9 +760,9 @@ export class GpuNarrowPhase {
     const np = await this.readState();
     const n = np[NP.CONTACTS];
     if (n === 0) return [];
-    const keys = new Uint32Array(await readBuffer(this.ctx, this.contactKeys, 16 * n, 'narrowphase debug read'));
-    const refs = new Uint32Array(await readBuffer(this.ctx, this.contactRef.buffer, 32 * n, 'narrowphase debug read'));
-    const mw = await readBuffer(this.ctx, this.manifolds, 4 * MANIFOLD_WORDS * n, 'narrowphase debug read');
+    const keys = new Uint32Array(await readBuffer(this.ctx, this.contactKeys, 16 * n, DEBUG_READ));
+    const refs = new Uint32Array(await readBuffer(this.ctx, this.contactRef.buffer, 32 * n, DEBUG_READ));
+    const mw = await readBuffer(this.ctx, this.manifolds, 4 * MANIFOLD_WORDS * n, DEBUG_READ);
     const mu = new Uint32Array(mw);
     const mf = new Float32Array(mw);
     const out: GpuContactRecord[] = [];
@@ -809,14 +812,14 @@ export class GpuNarrowPhase {
   /** The last update's solver list (contact indices). */
   async readSolverList(): Promise<Uint32Array> {
     const n = (await this.readState())[NP.SOLVER];
-    return n === 0 ? new Uint32Array(0) : new Uint32Array(await readBuffer(this.ctx, this.solverList, 4 * n, 'narrowphase debug read'));
+    return n === 0 ? new Uint32Array(0) : new Uint32Array(await readBuffer(this.ctx, this.solverList, 4 * n, DEBUG_READ));
   }
 
   /** The last update's begin/end events. */
   async readEvents(): Promise<GpuContactEvent[]> {
     const n = (await this.readState())[NP.EVENTS];
     if (n === 0) return [];
-    const w = new Uint32Array(await readBuffer(this.ctx, this.events, 16 * n, 'narrowphase debug read'));
+    const w = new Uint32Array(await readBuffer(this.ctx, this.events, 16 * n, DEBUG_READ));
     const out: GpuContactEvent[] = [];
     for (let i = 0; i < n; ++i) {
       const index = w[4 * i + 3];
@@ -842,11 +845,11 @@ export class GpuNarrowPhase {
     for (let b = 0; b <= BIN_COUNT; ++b) counts.push(np[NP.BINS + b]);
     const parts = [
       new Uint8Array(Uint32Array.from(counts).buffer),
-      new Uint8Array(await readBuffer(this.ctx, this.contactKeys, 16 * n, 'narrowphase debug read')),
-      new Uint8Array(await readBuffer(this.ctx, this.contactRef.buffer, 32 * n, 'narrowphase debug read')),
-      new Uint8Array(await readBuffer(this.ctx, this.manifolds, 4 * MANIFOLD_WORDS * n, 'narrowphase debug read')),
-      new Uint8Array(await readBuffer(this.ctx, this.solverList, 4 * np[NP.SOLVER], 'narrowphase debug read')),
-      new Uint8Array(await readBuffer(this.ctx, this.events, 16 * np[NP.EVENTS], 'narrowphase debug read')),
+      new Uint8Array(await readBuffer(this.ctx, this.contactKeys, 16 * n, DEBUG_READ)),
+      new Uint8Array(await readBuffer(this.ctx, this.contactRef.buffer, 32 * n, DEBUG_READ)),
+      new Uint8Array(await readBuffer(this.ctx, this.manifolds, 4 * MANIFOLD_WORDS * n, DEBUG_READ)),
+      new Uint8Array(await readBuffer(this.ctx, this.solverList, 4 * np[NP.SOLVER], DEBUG_READ)),
+      new Uint8Array(await readBuffer(this.ctx, this.events, 16 * np[NP.EVENTS], DEBUG_READ)),
     ];
     const out = new Uint8Array(parts.reduce((s, p) => s + p.length, 0));
     let at = 0;

@@ -66,6 +66,9 @@ import type { IslandInputs } from './islands';
 import { COLOUR_CAP, CONSTRAINT_VEC4, ISLAND_WORDS, SV, SV_INDIRECT_WORDS, SV_STATE_WORDS, USAGE } from './layout';
 import type { GpuWorld } from './world';
 
+/** The label of the read-backs for tests and tools (readBuffer). */
+const DEBUG_READ = 'solver debug read';
+
 /** The time step, as b2TimeStep carries it. */
 export interface SolverStep {
   dt: number;
@@ -319,7 +322,7 @@ export class GpuSolver {
 
   /** The solver state of the last step. */
   async readState(): Promise<SolverState> {
-    const w = new Uint32Array(await readBuffer(this.ctx, this.state, 4 * SV_STATE_WORDS, 'solver debug read'));
+    const w = new Uint32Array(await readBuffer(this.ctx, this.state, 4 * SV_STATE_WORDS, DEBUG_READ));
     return {
       skipped: w[SV.SKIP] !== 0,
       contacts: w[SV.COUNT],
@@ -342,7 +345,7 @@ export class GpuSolver {
     const joints = state.joints;
     const n = state.contacts;
     const items = joints + n;
-    const read = async (buffer: GPUBuffer, bytes: number): Promise<Uint32Array> => (bytes === 0 ? new Uint32Array(0) : new Uint32Array(await readBuffer(this.ctx, buffer, bytes, 'solver debug read')));
+    const read = async (buffer: GPUBuffer, bytes: number): Promise<Uint32Array> => (bytes === 0 ? new Uint32Array(0) : new Uint32Array(await readBuffer(this.ctx, buffer, bytes, DEBUG_READ)));
     return {
       joints,
       colours: await read(this.colouring.colours.buffer, 4 * items),
@@ -358,7 +361,7 @@ export class GpuSolver {
    * NO_ISLAND for static, inactive and dead bodies.
    */
   async readIslands(bodySlots: number): Promise<Uint32Array> {
-    const words = new Uint32Array(await readBuffer(this.ctx, this.islands.labels.buffer, 4 * ISLAND_WORDS * bodySlots, 'solver debug read'));
+    const words = new Uint32Array(await readBuffer(this.ctx, this.islands.labels.buffer, 4 * ISLAND_WORDS * bodySlots, DEBUG_READ));
     return Uint32Array.from({ length: bodySlots }, (_, i) => words[ISLAND_WORDS * i]);
   }
 
