@@ -28,7 +28,8 @@ import { GpuArray } from './buffers';
 import { AxisStage } from './axis';
 import { AABB_EXTENSION, BoundsStage } from './bounds';
 import { KeysStage } from './keys';
-import { Recorder } from './kernel';
+import { passRecorder, Recorder } from './kernel';
+import type { PassRecorder } from './kernel';
 import { PairsStage } from './pairs';
 import { GpuProxySet } from './proxies';
 import { digitPasses, RadixSort } from './radixSort';
@@ -41,9 +42,6 @@ import { GpuWorld } from './world';
 
 /** The label of the read-backs for tests and tools (readBuffer). */
 const DEBUG_READ = 'broadphase debug read';
-
-/** Opens a (timed) compute pass named `name`, lets `body` record into it, and closes it. */
-export type PassRecorder = (name: string, body: (rec: Recorder) => void) => void;
 
 /** The entry sort: the KEY_BITS-bit keys in 8-bit digits. */
 const ENTRY_SORT_PASSES = digitPasses(KEY_BITS, 0, 8);
@@ -309,15 +307,9 @@ export class GpuBroadPhase {
       await this.ctx.checkErrors();
       const encoder = this.ctx.device.createCommandEncoder({ label: 'broadphase' });
       this.timer.reset();
-      dispatches = 0;
-      const pass: PassRecorder = (name, body) => {
-        const p = this.timer.beginPass(encoder, name);
-        const rec = new Recorder(p, maxDim);
-        body(rec);
-        p.end();
-        dispatches += rec.dispatches;
-      };
-      this.encodePasses(pass, inputs);
+      const recorder = passRecorder(encoder, maxDim, this.timer);
+      this.encodePasses(recorder.pass, inputs);
+      dispatches = recorder.dispatches();
       this.encodeStateCopy(encoder, readback.buffer, 0);
       this.timer.resolveTo(encoder, readback.buffer, TIMER_OFFSET);
       queue.submit([encoder.finish()]);

@@ -95,6 +95,36 @@ export class Recorder {
   }
 }
 
+/** Opens a compute pass named `name`, lets `body` record into it, and closes it. */
+export type PassRecorder = (name: string, body: (rec: Recorder) => void) => void;
+
+/** What opens a timed pass (PassTimer). */
+interface PassOpener {
+  beginPass(encoder: GPUCommandEncoder, name: string): GPUComputePassEncoder;
+}
+
+/**
+ * The PassRecorder of one command encoder: each pass opened by `timer` (timed, when the device
+ * has timestamps) or, without one, labelled with `suffix` after its name; dispatches() counts the
+ * dispatches recorded so far.
+ */
+export function passRecorder(
+  encoder: GPUCommandEncoder,
+  maxPerDimension: number,
+  timer: PassOpener | null,
+  suffix = '',
+): { pass: PassRecorder; dispatches: () => number } {
+  let dispatches = 0;
+  const pass: PassRecorder = (name, body) => {
+    const p = timer !== null ? timer.beginPass(encoder, name) : encoder.beginComputePass({ label: `${name}${suffix}` });
+    const rec = new Recorder(p, maxPerDimension);
+    body(rec);
+    p.end();
+    dispatches += rec.dispatches;
+  };
+  return { pass, dispatches: () => dispatches };
+}
+
 /** A small uniform buffer holding u32/f32/i32 words, written through writeBuffer. */
 export class Uniform {
   readonly buffer: GPUBuffer;

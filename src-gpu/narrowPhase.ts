@@ -36,8 +36,9 @@ import type { b2Contact } from '../src/dynamics/contacts/b2Contact';
 import { b2ContactFlags } from '../src/common/b2Constants';
 import type { GpuContext } from './device';
 import { GpuArray } from './buffers';
-import { Recorder, Uniform } from './kernel';
-import type { BroadPhaseResult, GpuBroadPhase, PassRecorder } from './broadPhase';
+import { passRecorder, Uniform } from './kernel';
+import type { PassRecorder } from './kernel';
+import type { BroadPhaseResult, GpuBroadPhase } from './broadPhase';
 import { ContactsStage } from './contacts';
 import type { ContactsInputs } from './contacts';
 import type { CollideInputs, CollideStage } from './collide';
@@ -401,22 +402,14 @@ export class GpuNarrowPhase {
     this.beginStep(mirror);
     const encoder = this.ctx.device.createCommandEncoder({ label: 'collision step' });
     this.timer.reset();
-    let dispatches = 0;
-    const maxDim = this.ctx.maxWorkgroupsPerDimension;
-    const pass: PassRecorder = (name, body) => {
-      const p = this.timer.beginPass(encoder, name);
-      const rec = new Recorder(p, maxDim);
-      body(rec);
-      p.end();
-      dispatches += rec.dispatches;
-    };
+    const { pass, dispatches } = passRecorder(encoder, this.ctx.maxWorkgroupsPerDimension, this.timer);
     const pairs = bp.encodePasses(pass, inputs);
     this.encodePasses(pass, mirror, pairs, bp.state, this.cur);
     after?.(pass, this.outputs(bp.state, this.cur));
     bp.encodeStateCopy(encoder, rb, 0);
     encoder.copyBufferToBuffer(this.state, 0, rb, NP_STATE_OFFSET, 4 * NP_STATE_WORDS);
     this.timer.resolveTo(encoder, rb, TIMER_OFFSET);
-    return { encoder, dispatches: () => dispatches };
+    return { encoder, dispatches };
   }
 
   private result(
@@ -507,12 +500,7 @@ export class GpuNarrowPhase {
       await this.ctx.checkErrors();
       const encoder = this.ctx.device.createCommandEncoder({ label: 'collision step (regrow)' });
       let pairs = bp.pairs;
-      const pass: PassRecorder = (name, body) => {
-        const p = encoder.beginComputePass({ label: `${name} (regrow)` });
-        const rec = new Recorder(p, maxDim);
-        body(rec);
-        p.end();
-      };
+      const { pass } = passRecorder(encoder, maxDim, null, ' (regrow)');
       if (pairOverflow) pass('pairs', (rec) => (pairs = bp.encodeRegrow(rec, inputs)));
       this.encodePasses(pass, mirror, pairs, bp.state, this.cur);
       after?.(pass, this.outputs(bp.state, this.cur));
@@ -566,14 +554,9 @@ export class GpuNarrowPhase {
       this.beginStep(mirror);
       const encoder = this.ctx.device.createCommandEncoder({ label: 'narrow phase on given pairs' });
       this.timer.reset();
-      const pass: PassRecorder = (name, body) => {
-        const p = this.timer.beginPass(encoder, name);
-        const rec = new Recorder(p, maxDim);
-        body(rec);
-        p.end();
-        dispatches += rec.dispatches;
-      };
-      this.encodePasses(pass, mirror, this.givenPairs.buffer, this.givenState, this.cur);
+      const recorder = passRecorder(encoder, maxDim, this.timer);
+      this.encodePasses(recorder.pass, mirror, this.givenPairs.buffer, this.givenState, this.cur);
+      dispatches = recorder.dispatches();
       encoder.copyBufferToBuffer(this.state, 0, rb.buffer, NP_STATE_OFFSET, 4 * NP_STATE_WORDS);
       this.timer.resolveTo(encoder, rb.buffer, TIMER_OFFSET);
       await this.ctx.checkErrors();
