@@ -15,7 +15,7 @@
  *   mixed    circles, boxes and hexagons, 5% sensors, and below every 6th row static ground,
  *            chains (1 m segments) or loose edges with ghost vertices: every pair type.
  * Every step a small kernel moves and turns the bodies on the GPU (not counted), then one
- * GpuNarrowPhase.update() runs the broad phase and the narrow phase in one submission.
+ * GpuPipeline.step() runs the broad phase and the narrow phase in one submission.
  * Reported per step (medians): GPU device time per pass (timestamp queries): the broad phase's
  * five passes, the narrow phase's contacts (classify, bin sort), collide per bin (each bin its own
  * pass), persist, compact (the scans and the solver and event lists); the device time of as many
@@ -48,6 +48,7 @@ import type { GpuContext } from '../src-gpu/device';
 import { BIN, BIN_NAMES, USAGE } from '../src-gpu/layout';
 import { GpuNarrowPhase } from '../src-gpu/narrowPhase';
 import type { NarrowPhaseResult } from '../src-gpu/narrowPhase';
+import { GpuPipeline } from '../src-gpu/pipeline';
 import { GpuWorld } from '../src-gpu/world';
 import { box, circle, fmt, median, rng, syntheticWorld } from './gpu-support';
 import type { SyntheticBody } from './gpu-support';
@@ -257,6 +258,7 @@ async function runMix(ctx: GpuContext, mix: string, contacts: number, steps: num
   mirror.sync();
   const broad = new GpuBroadPhase(ctx, { initialPairCapacity: 6 * bodies.length + 1024 });
   const narrow = new GpuNarrowPhase(ctx, { initialContactCapacity: 6 * bodies.length + 1024, timeBins: !light });
+  const pipeline = new GpuPipeline(ctx, broad, narrow);
   const device = ctx.device;
 
   const move = device.createComputePipeline({ layout: 'auto', compute: { module: device.createShaderModule({ code: MOVE_WGSL }), entryPoint: 'main' } });
@@ -296,7 +298,7 @@ async function runMix(ctx: GpuContext, mix: string, contacts: number, steps: num
     moveStep();
     await device.queue.onSubmittedWorkDone();
     const w0 = performance.now();
-    last = await narrow.update(mirror, broad);
+    last = await pipeline.step(mirror);
     const wall = performance.now() - w0;
     if (step < 2) continue;
     host.wall.push(wall);
@@ -312,13 +314,13 @@ async function runMix(ctx: GpuContext, mix: string, contacts: number, steps: num
   const checkText = !light && result.contactCount <= checkMax ? await check(ctx, mirror, narrow) : '–';
 
   // Steps without waiting: up to four in flight, the wall time per step over the run.
-  await narrow.settle(broad);
+  await pipeline.settle();
   const d0 = performance.now();
   for (let step = 0; step < steps; ++step) {
     moveStep();
-    await narrow.update(mirror, broad, { wait: false });
+    await pipeline.step(mirror, { wait: false });
   }
-  await narrow.settle(broad);
+  await pipeline.settle();
   const deferredWallMs = (performance.now() - d0) / steps;
 
   // Dispatch overhead: as many empty dispatches as a step records, in one timed pass.
@@ -369,6 +371,7 @@ async function runMix(ctx: GpuContext, mix: string, contacts: number, steps: num
     .filter(([k]) => !BROAD_PASSES.includes(k))
     .reduce((s, [, v]) => s + v, 0);
   const touching = result.solverCount;
+  pipeline.destroy();
   broad.destroy();
   narrow.destroy();
   mirror.destroy();

@@ -211,7 +211,7 @@ async function runGpu(ctx: GpuContext, world: b2World, steps: number): Promise<G
       }
     }
     for (let i = 0; i < STREAM_WARMUP; ++i) await stepper.step(DT, VELOCITY_ITERATIONS, POSITION_ITERATIONS, { wait: false });
-    await stepper.narrowPhase.settle(stepper.broadPhase);
+    await stepper.pipeline.settle();
     const deferredHost = { record: 0, wait: 0 };
     const d0 = performance.now();
     for (let i = 0; i < steps; ++i) {
@@ -219,7 +219,7 @@ async function runGpu(ctx: GpuContext, world: b2World, steps: number): Promise<G
       deferredHost.record += r.hostMs.encode + r.hostMs.submit;
       deferredHost.wait += r.hostMs.wait;
     }
-    await stepper.narrowPhase.settle(stepper.broadPhase);
+    await stepper.pipeline.settle();
     const deferredMs = (performance.now() - d0) / steps;
     return {
       setupMs,
@@ -233,11 +233,11 @@ async function runGpu(ctx: GpuContext, world: b2World, steps: number): Promise<G
       dispatches: last?.dispatches ?? 0,
       contacts: last?.contactCount ?? 0,
       touching: last?.solverCount ?? 0,
-      truncatedSteps: stepper.narrowPhase.truncatedSteps,
+      truncatedSteps: stepper.pipeline.truncatedSteps,
     };
   } finally {
     // After a failure, steps may still be in flight: let their read-backs end before destroying.
-    await stepper.narrowPhase.settle(stepper.broadPhase).catch(() => undefined);
+    await stepper.pipeline.settle().catch(() => undefined);
     stepper.destroy();
   }
 }

@@ -1,8 +1,7 @@
 /*
  * The GPU narrow phase: from the broad phase's pairs to Box2D contacts, persistent across steps.
  *
- * update(mirror, broadPhase) records the broad phase and the narrow phase into one command buffer
- * and reads back 192 bytes of counts (plus timestamps) with one map:
+ * Its stages, recorded by GpuPipeline (pipeline.ts) after the broad phase's:
  *   contacts  oriented contacts (b2Contact::Create's A/B rule), keys, match with the previous
  *             step's contacts (binary search on the sorted keys), bins by pair type (one stable
  *             4-bit radix pass: count, scan, scatter), the bins' indirect sizes   contacts.ts
@@ -14,31 +13,24 @@
  *   persist   touching state, impulses carried by b2ContactID key, began/ended     persist.ts
  *   compact   prefix scans: the solver's list of touching non-sensor contacts, and the
  *             begin/end events (contacts gone with their pair included)  compact.ts
+ * In:  the pairs and the state words of the broad phase (bindStep), the mirror's tables.
+ * Out: contact set `cur` (keys, manifolds), contactRef, the solver list, the events, the counts
+ *      in `state` (layout.ts NP); the solver reads them (outputs()).
  * Contacts are the pairs, in pair order (sorted by proxy slots): contact i of a step is pair i.
  * Two contact sets (keys and manifolds) alternate: each step writes one and reads the other as
- * the previous step's. Everything stays on the GPU; the read-back is what the host needs to size
- * buffers: if the pairs or the contacts did not fit, the buffers grow to the count the GPU kept
- * and the passes that overflowed run again (the previous set is untouched until a step succeeds).
+ * the previous step's (endUpdate() swaps them once a step succeeded). If the pairs or the
+ * contacts did not fit, the counts the GPU kept say how much room is needed (growContacts).
  * Same inputs, same outputs, bit for bit, on one device: positions come from scans and stable
  * sorts, never from atomics.
- * Passes of later stages (the solver) join the same command buffer through the update's
- * `after` option, which receives this recording's output buffers.
- *
- * With { wait: false } an update returns once submitted: its read-back completes in the
- * background and is looked at before the next update records anything (a ring of read-back
- * buffers keeps up to four steps in flight). An overflow found that way grows the buffers for the
- * following steps; the step that overflowed keeps the first `capacity` contacts in key order (or
- * none, for a pair overflow) and says so in its result (`overflowed`). Headroom (capacities of at
- * least 1.5 x the last counts seen) makes that rare.
  */
 
 import type { b2Contact } from '../src/dynamics/contacts/b2Contact';
 import { b2ContactFlags } from '../src/common/b2Constants';
 import type { GpuContext } from './device';
 import { GpuArray } from './buffers';
-import { passRecorder, Uniform } from './kernel';
-import type { PassRecorder } from './kernel';
-import type { BroadPhaseResult, GpuBroadPhase } from './broadPhase';
+import { Uniform } from './kernel';
+import type { Recorder } from './kernel';
+import type { BroadPhaseResult } from './broadPhase';
 import { ContactsStage } from './contacts';
 import type { ContactsInputs } from './contacts';
 import type { CollideInputs, CollideStage } from './collide';
@@ -48,22 +40,18 @@ import { CollideEdgeStage } from './collideEdge';
 import { OverlapStage } from './overlap';
 import { PersistStage } from './persist';
 import { CompactStage } from './compact';
-import { PassTimer } from './timing';
-import { Readback, ReadbackRing, readBuffer } from './readback';
+import { readBuffer } from './readback';
+import type { PersistInputs } from './persist';
+import type { CompactInputs } from './compact';
+import type { SolverInputs } from './solver';
 import {
   BIN_COUNT,
-  BIN_NAMES,
   MANIFOLD_WORDS,
   MF,
   NO_CONTACT,
   NP,
   NP_INDIRECT_WORDS,
   NP_STATE_WORDS,
-  OVERFLOW_CONTACTS,
-  OVERFLOW_ENTRIES,
-  OVERFLOW_PAIRS,
-  STATE,
-  STATE_WORDS,
   USAGE,
 } from './layout';
 import type { GpuWorld } from './world';
@@ -76,35 +64,6 @@ export interface GpuNarrowPhaseOptions {
   initialContactCapacity?: number;
   /** Time each bin's kernel in a pass of its own ('collide <bin>' in gpuTime; for benchmarks). */
   timeBins?: boolean;
-}
-
-export interface NarrowPhaseUpdateOptions {
-  /**
-   * true (default): wait for this step's read-back and redo what overflowed before returning.
-   * false: return once submitted (see the file header).
-   */
-  wait?: boolean;
-  /**
-   * Records more passes after the narrow phase's, into the same command buffer (the solver, part
-   * 3). Called once per recording: again when an overflow makes the host rerun the narrow phase,
-   * so the passes must do nothing when the state buffers show an overflow (the rerun's state
-   * has none).
-   */
-  after?: (pass: PassRecorder, outputs: NarrowPhaseOutputs) => void;
-}
-
-/** The buffers a step's later passes read (the set this recording writes). */
-export interface NarrowPhaseOutputs {
-  /** The broad phase's state (STATE: its overflow word). */
-  broadState: GPUBuffer;
-  /** The narrow phase's state (NP: counts, overflow). */
-  npState: GPUBuffer;
-  solverList: GPUBuffer;
-  contactRefs: GPUBuffer;
-  /** This step's manifolds. */
-  manifolds: GPUBuffer;
-  /** Contacts the buffers hold (a bound on every per-contact list). */
-  contactCapacity: number;
 }
 
 export interface NarrowPhaseResult {
@@ -121,7 +80,7 @@ export interface NarrowPhaseResult {
   /** Contacts per bin (layout.ts BIN order). */
   binCounts: number[];
   contactCapacity: number;
-  /** Times the contact buffers grew during this update. */
+  /** Times the contact buffers grew during this step. */
   contactRegrows: number;
   /** Dispatches recorded by the step's first submission (broad and narrow phase). */
   dispatches: number;
@@ -181,27 +140,19 @@ export interface GpuContactEvent {
   vanished: boolean;
 }
 
-/** Byte layout of the read-back: broad-phase state, narrow-phase state, timestamps. */
-const NP_STATE_OFFSET = 64;
-const TIMER_OFFSET = 256;
-
 const { e_touchingFlag } = b2ContactFlags;
-
-interface InFlight {
-  settled: Promise<NarrowPhaseResult>;
-  result: NarrowPhaseResult | null;
-  /** The broad phase's state words of the step. */
-  state: Uint32Array | null;
-}
 
 export class GpuNarrowPhase {
   readonly ctx: GpuContext;
+  /** Each bin's kernel records in a pass of its own ('collide <bin>' in gpuTime). */
+  readonly timeBins: boolean;
+  /** The bins in order, for passes of one bin each. */
+  readonly bins: readonly number[];
   private readonly contacts: ContactsStage;
-  private readonly collideStages: CollideStage[];
+  /** The collide stage of each bin. */
+  private readonly binStage: CollideStage[] = [];
   private readonly persist: PersistStage;
   private readonly compact: CompactStage;
-  private readonly timer: PassTimer;
-  private readonly timeBins: boolean;
   private readonly collideParams: Uniform;
   private readonly keys: [GpuArray, GpuArray];
   private readonly manifoldSets: [GpuArray, GpuArray];
@@ -216,33 +167,34 @@ export class GpuNarrowPhase {
   readonly state: GPUBuffer;
   /** Indirect dispatch sizes (layout.ts NP_ARGS). */
   readonly indirect: GPUBuffer;
-  private readonly readback: Readback;
-  private readonly ring: ReadbackRing;
-  private readonly inFlight: InFlight[] = [];
   private capacity: number;
-  private givenPairs: GpuArray | null = null;
-  private givenState: GPUBuffer | null = null;
-  /** The contact set the next update writes (the other holds the previous step's contacts). */
+  /** The contact set the next step writes (the other holds the previous step's contacts). */
   private cur = 0;
-  /** The set the last update wrote. */
+  /** The set the last step wrote. */
   private lastSet = 1;
-  private busy = false;
-  /** The result of the last update whose counts are known. */
-  lastResult: NarrowPhaseResult | null = null;
-  /** Steps that overflowed with { wait: false } (their lists were truncated). */
-  truncatedSteps = 0;
-  /** Contact-buffer growths over all updates. */
+  /** Contact-buffer growths over all steps. */
   contactRegrows = 0;
+  // The step being recorded (bindStep): filled in place so that recording allocates nothing.
+  private readonly contactsIo: ContactsInputs;
+  private readonly collideIo: CollideInputs;
+  private readonly setIo: PersistInputs & CompactInputs;
+  private readonly solverIo: SolverInputs;
 
   constructor(ctx: GpuContext, options: GpuNarrowPhaseOptions = {}) {
     this.ctx = ctx;
     this.capacity = Math.max(16, options.initialContactCapacity ?? 1024);
     this.timeBins = options.timeBins === true;
     this.contacts = new ContactsStage(ctx);
-    this.collideStages = [new CollideCircleStage(ctx), new CollidePolygonStage(ctx), new CollideEdgeStage(ctx), new OverlapStage(ctx)];
+    const bins: number[] = [];
+    for (const stage of [new CollideCircleStage(ctx), new CollidePolygonStage(ctx), new CollideEdgeStage(ctx), new OverlapStage(ctx)]) {
+      for (const bin of stage.kernels.keys()) {
+        this.binStage[bin] = stage;
+        bins.push(bin);
+      }
+    }
+    this.bins = bins.sort((x, y) => x - y);
     this.persist = new PersistStage(ctx);
     this.compact = new CompactStage(ctx);
-    this.timer = new PassTimer(ctx, 32);
     this.collideParams = new Uniform(ctx, 'collide params', 4);
     const cap = this.capacity;
     this.keys = [new GpuArray(ctx, 'contact keys 0', 16, cap), new GpuArray(ctx, 'contact keys 1', 16, cap)];
@@ -256,12 +208,57 @@ export class GpuNarrowPhase {
     this.eventArray = new GpuArray(ctx, 'contact events', 16, 2 * cap);
     this.state = ctx.createBuffer('narrowphase state', 4 * NP_STATE_WORDS, USAGE.STORAGE | USAGE.COPY_DST | USAGE.COPY_SRC);
     this.indirect = ctx.createBuffer('narrowphase indirect', 4 * NP_INDIRECT_WORDS, USAGE.STORAGE | USAGE.INDIRECT | USAGE.COPY_DST);
-    this.readback = new Readback(ctx, 'narrowphase read-back', TIMER_OFFSET + this.timer.bytes);
-    this.ring = new ReadbackRing(ctx, 'narrowphase deferred read-back', TIMER_OFFSET + this.timer.bytes, 4);
     this.reserve(cap);
+    const placeholder = this.state;
+    this.contactsIo = {
+      broadState: placeholder,
+      pairs: placeholder,
+      proxyRef: placeholder,
+      proxyKey: placeholder,
+      npState: this.state,
+      npIndirect: this.indirect,
+      curKey: placeholder,
+      prevKey: placeholder,
+      contactRef: placeholder,
+      items: placeholder,
+      itemsTmp: placeholder,
+    };
+    this.collideIo = {
+      params: this.collideParams.buffer,
+      npState: this.state,
+      npIndirect: this.indirect,
+      binned: placeholder,
+      contactRef: placeholder,
+      fixtureShape: placeholder,
+      shapePool: placeholder,
+      bodyXf: placeholder,
+      bodyCell: placeholder,
+      manifolds: placeholder,
+    };
+    this.setIo = {
+      npState: this.state,
+      npIndirect: this.indirect,
+      contactRef: placeholder,
+      manifolds: placeholder,
+      prevManifolds: placeholder,
+      solverFlags: placeholder,
+      eventFlags: placeholder,
+      curKey: placeholder,
+      prevKey: placeholder,
+      solverList: placeholder,
+      events: placeholder,
+    };
+    this.solverIo = {
+      broadState: placeholder,
+      npState: this.state,
+      solverList: placeholder,
+      contactRefs: placeholder,
+      manifolds: placeholder,
+      contactCapacity: 0,
+    };
   }
 
-  // ---- Outputs (the last update's; the solver binds these) ----
+  // ---- Outputs (the last step's) ----
 
   /** Contacts the buffers hold now. */
   get contactCapacity(): number {
@@ -303,7 +300,8 @@ export class GpuNarrowPhase {
     this.capacity = Math.max(this.capacity, capacity);
   }
 
-  private growContacts(needed: number): void {
+  /** Grows the contact buffers (doubling) to hold `needed` contacts; both sets keep their contents. */
+  growContacts(needed: number): void {
     if (needed <= this.capacity) return;
     let capacity = this.capacity;
     while (capacity < needed) capacity *= 2;
@@ -311,358 +309,104 @@ export class GpuNarrowPhase {
     this.contactRegrows++;
   }
 
-  /** Queues the host-written state words of a (re)run: the capacity, no overflow. */
-  private beginStep(mirror: GpuWorld): void {
+  /** Queues the host-written state words of a step or its rerun: the capacity, no overflow. */
+  beginUpdate(mirror: GpuWorld): void {
     this.reserve(this.capacity);
     this.ctx.device.queue.writeBuffer(this.state, 4 * NP.CAPACITY, new Uint32Array([this.capacity, 0]));
     this.collideParams.f32[0] = mirror.cellSize;
     this.collideParams.upload();
   }
 
-  /** Records the narrow phase's passes for contact set `set`. */
-  private encodePasses(pass: PassRecorder, mirror: GpuWorld, pairs: GPUBuffer, broadState: GPUBuffer, set: number): void {
-    const curKey = this.keys[set].buffer;
-    const prevKey = this.keys[1 - set].buffer;
-    const manifolds = this.manifoldSets[set].buffer;
-    const prevManifolds = this.manifoldSets[1 - set].buffer;
-    const contactsIo: ContactsInputs = {
-      broadState,
-      pairs,
-      proxyRef: mirror.proxyRef.buffer,
-      proxyKey: mirror.proxyKey.buffer,
-      npState: this.state,
-      npIndirect: this.indirect,
-      curKey,
-      prevKey,
-      contactRef: this.contactRef.buffer,
-      items: this.items.buffer,
-      itemsTmp: this.itemsTmp.buffer,
-    };
-    let binned: GPUBuffer = this.items.buffer;
-    pass('contacts', (rec) => {
-      binned = this.contacts.encode(rec, contactsIo, set);
-    });
-    const collideIo: CollideInputs = {
-      params: this.collideParams.buffer,
-      npState: this.state,
-      npIndirect: this.indirect,
-      binned,
-      contactRef: this.contactRef.buffer,
-      fixtureShape: mirror.fixtureShape.buffer,
-      shapePool: mirror.shapePool.buffer,
-      bodyXf: mirror.bodyXf.buffer,
-      bodyCell: mirror.bodyCell.buffer,
-      manifolds,
-    };
-    const bins: [CollideStage, number][] = [];
-    for (const stage of this.collideStages) for (const bin of stage.kernels.keys()) bins.push([stage, bin]);
-    bins.sort((x, y) => x[1] - y[1]);
-    if (this.timeBins) {
-      for (const [stage, bin] of bins) pass(`collide ${BIN_NAMES[bin]}`, (rec) => stage.encodeBin(rec, bin, collideIo));
-    } else {
-      pass('collide', (rec) => {
-        for (const [stage, bin] of bins) stage.encodeBin(rec, bin, collideIo);
-      });
-    }
-    const io = {
-      npState: this.state,
-      npIndirect: this.indirect,
-      contactRef: this.contactRef.buffer,
-      manifolds,
-      prevManifolds,
-      solverFlags: this.solverFlags.buffer,
-      eventFlags: this.eventFlags.buffer,
-      curKey,
-      prevKey,
-      solverList: this.solverListArray.buffer,
-      events: this.eventArray.buffer,
-    };
-    pass('persist', (rec) => this.persist.encode(rec, io));
-    pass('compact', (rec) => this.compact.encode(rec, io));
-  }
-
   /**
-   * One step of collision detection: the broad phase's update of `mirror` (after its sync()) and
-   * the narrow phase on its pairs, in one submission. Rejects with GpuDeviceLostError once the
-   * device is lost, GpuOutOfMemoryError when a buffer could not be allocated.
+   * Names the buffers the stages recorded next read and write: the broad phase's sorted `pairs`
+   * and its state words (`broadState`: pair count, overflow), the mirror's tables, and contact set
+   * `cur` (the other set as the previous step's). After beginUpdate(), before encodeContacts().
    */
-  async update(mirror: GpuWorld, broadPhase: GpuBroadPhase, options: NarrowPhaseUpdateOptions = {}): Promise<NarrowPhaseResult> {
-    if (this.busy) throw new Error('GpuNarrowPhase.update: the previous update has not finished');
-    this.busy = true;
-    try {
-      return options.wait === false ? await this.runDeferred(mirror, broadPhase, options.after) : await this.runWaiting(mirror, broadPhase, options.after);
-    } finally {
-      this.busy = false;
-    }
+  bindStep(mirror: GpuWorld, pairs: GPUBuffer, broadState: GPUBuffer): void {
+    const curKey = this.keys[this.cur].buffer;
+    const prevKey = this.keys[1 - this.cur].buffer;
+    const manifolds = this.manifoldSets[this.cur].buffer;
+    const c = this.contactsIo;
+    c.broadState = broadState;
+    c.pairs = pairs;
+    c.proxyRef = mirror.proxyRef.buffer;
+    c.proxyKey = mirror.proxyKey.buffer;
+    c.curKey = curKey;
+    c.prevKey = prevKey;
+    c.contactRef = this.contactRef.buffer;
+    c.items = this.items.buffer;
+    c.itemsTmp = this.itemsTmp.buffer;
+    const k = this.collideIo;
+    k.binned = this.items.buffer;
+    k.contactRef = this.contactRef.buffer;
+    k.fixtureShape = mirror.fixtureShape.buffer;
+    k.shapePool = mirror.shapePool.buffer;
+    k.bodyXf = mirror.bodyXf.buffer;
+    k.bodyCell = mirror.bodyCell.buffer;
+    k.manifolds = manifolds;
+    const s = this.setIo;
+    s.contactRef = this.contactRef.buffer;
+    s.manifolds = manifolds;
+    s.prevManifolds = this.manifoldSets[1 - this.cur].buffer;
+    s.solverFlags = this.solverFlags.buffer;
+    s.eventFlags = this.eventFlags.buffer;
+    s.curKey = curKey;
+    s.prevKey = prevKey;
+    s.solverList = this.solverListArray.buffer;
+    s.events = this.eventArray.buffer;
   }
 
-  /** Records the whole step (broad + narrow phase) and the copies for its read-back into `rb`. */
-  private recordStep(mirror: GpuWorld, bp: GpuBroadPhase, rb: GPUBuffer, after: NarrowPhaseUpdateOptions['after']): { encoder: GPUCommandEncoder; dispatches: () => number } {
-    const inputs = bp.beginUpdate(mirror);
-    this.beginStep(mirror);
-    const encoder = this.ctx.device.createCommandEncoder({ label: 'collision step' });
-    this.timer.reset();
-    const { pass, dispatches } = passRecorder(encoder, this.ctx.maxWorkgroupsPerDimension, this.timer);
-    const pairs = bp.encodePasses(pass, inputs);
-    this.encodePasses(pass, mirror, pairs, bp.state, this.cur);
-    after?.(pass, this.outputs(bp.state, this.cur));
-    bp.encodeStateCopy(encoder, rb, 0);
-    encoder.copyBufferToBuffer(this.state, 0, rb, NP_STATE_OFFSET, 4 * NP_STATE_WORDS);
-    this.timer.resolveTo(encoder, rb, TIMER_OFFSET);
-    return { encoder, dispatches };
+  /** GpuStage.Contacts: contacts from the pairs, matched and binned by pair type. */
+  readonly encodeContacts = (rec: Recorder): void => {
+    this.collideIo.binned = this.contacts.encode(rec, this.contactsIo, this.cur);
+  };
+
+  /** GpuStage.Collide: every bin's kernel. */
+  readonly encodeCollide = (rec: Recorder): void => {
+    for (const bin of this.bins) this.binStage[bin].encodeBin(rec, bin, this.collideIo);
+  };
+
+  /** GpuStage.Collide, one bin (timeBins). */
+  encodeCollideBin(rec: Recorder, bin: number): void {
+    this.binStage[bin].encodeBin(rec, bin, this.collideIo);
   }
 
-  private result(
-    broad: BroadPhaseResult,
-    np: Uint32Array,
-    regrows: number,
-    dispatches: number,
-    gpuTime: Record<string, number> | null,
-    hostMs: NarrowPhaseResult['hostMs'],
-    pending: boolean,
-  ): NarrowPhaseResult {
-    const binCounts: number[] = [];
-    for (let b = 0; b < BIN_COUNT; ++b) binCounts.push(np[NP.BINS + b + 1] - np[NP.BINS + b]);
-    return {
-      broad,
-      contactCount: np[NP.CONTACTS],
-      previousCount: np[NP.PREV],
-      solverCount: np[NP.SOLVER],
-      eventCount: np[NP.EVENTS],
-      binCounts,
-      contactCapacity: this.capacity,
-      contactRegrows: regrows,
-      dispatches,
-      gpuTime,
-      hostMs,
-      overflowed: (np[NP.OVERFLOW] & OVERFLOW_CONTACTS) !== 0 || (broad.pairCount > 0 && np[NP.PAIRS] === 0),
-      pending,
-    };
+  /** GpuStage.Persist. */
+  readonly encodePersist = (rec: Recorder): void => this.persist.encode(rec, this.setIo);
+
+  /** GpuStage.Compact. */
+  readonly encodeCompact = (rec: Recorder): void => this.compact.encode(rec, this.setIo);
+
+  /** What the solver reads of the step being recorded (the set bindStep named). */
+  outputs(broadState: GPUBuffer): SolverInputs {
+    const o = this.solverIo;
+    o.broadState = broadState;
+    o.solverList = this.solverListArray.buffer;
+    o.contactRefs = this.contactRef.buffer;
+    o.manifolds = this.manifoldSets[this.cur].buffer;
+    o.contactCapacity = this.capacity;
+    return o;
   }
 
-  /** The outputs of contact set `set` for passes recorded after the narrow phase. */
-  private outputs(broadState: GPUBuffer, set: number): NarrowPhaseOutputs {
-    return {
-      broadState,
-      npState: this.state,
-      solverList: this.solverListArray.buffer,
-      contactRefs: this.contactRef.buffer,
-      manifolds: this.manifoldSets[set].buffer,
-      contactCapacity: this.capacity,
-    };
+  /** Records the state words' copy to `dst` at byte `offset`. */
+  encodeStateCopy(encoder: GPUCommandEncoder, dst: GPUBuffer, offset: number): void {
+    encoder.copyBufferToBuffer(this.state, 0, dst, offset, 4 * NP_STATE_WORDS);
   }
 
-  private async runWaiting(mirror: GpuWorld, bp: GpuBroadPhase, after: NarrowPhaseUpdateOptions['after']): Promise<NarrowPhaseResult> {
-    await this.ctx.checkErrors();
-    const queue = this.ctx.device.queue;
-    const rb = this.readback;
-    const maxDim = this.ctx.maxWorkgroupsPerDimension;
-    let bpRegrows = 0;
-    let npRegrows = 0;
-    let dispatches = 0;
-    let gpuTime: Record<string, number> | null = null;
-    let state: Uint32Array;
-    let np: Uint32Array;
-    const hostMs = { encode: 0, submit: 0, wait: 0 };
-    let inputs;
-    for (;;) {
-      const t0 = performance.now();
-      const step = this.recordStep(mirror, bp, rb.buffer, after);
-      inputs = bp.lastUpdateInputs;
-      await this.ctx.checkErrors();
-      const t1 = performance.now();
-      queue.submit([step.encoder.finish()]);
-      const t2 = performance.now();
-      const bytes = await rb.read(this.ctx, TIMER_OFFSET + this.timer.bytes);
-      const t3 = performance.now();
-      hostMs.encode += t1 - t0;
-      hostMs.submit += t2 - t1;
-      hostMs.wait += t3 - t2;
-      dispatches = step.dispatches();
-      state = new Uint32Array(bytes, 0, STATE_WORDS);
-      np = new Uint32Array(bytes, NP_STATE_OFFSET, NP_STATE_WORDS);
-      gpuTime = this.timer.parse(bytes, TIMER_OFFSET);
-      if ((state[STATE.OVERFLOW] & OVERFLOW_ENTRIES) === 0) break;
-      bpRegrows++;
-      bp.growEntries(state[STATE.ENTRY_TOTAL]);
-    }
-    const before = this.contactRegrows;
-    while ((state[STATE.OVERFLOW] & OVERFLOW_PAIRS) !== 0 || (np[NP.OVERFLOW] & OVERFLOW_CONTACTS) !== 0) {
-      const pairOverflow = (state[STATE.OVERFLOW] & OVERFLOW_PAIRS) !== 0;
-      if (pairOverflow) {
-        bpRegrows++;
-        bp.growPairs(state[STATE.PAIR_COUNT]);
-        this.growContacts(state[STATE.PAIR_COUNT]);
-      } else {
-        this.growContacts(np[NP.PAIRS]);
-      }
-      this.beginStep(mirror);
-      await this.ctx.checkErrors();
-      const encoder = this.ctx.device.createCommandEncoder({ label: 'collision step (regrow)' });
-      let pairs = bp.pairs;
-      const { pass } = passRecorder(encoder, maxDim, null, ' (regrow)');
-      if (pairOverflow) pass('pairs', (rec) => (pairs = bp.encodeRegrow(rec, inputs)));
-      this.encodePasses(pass, mirror, pairs, bp.state, this.cur);
-      after?.(pass, this.outputs(bp.state, this.cur));
-      bp.encodeStateCopy(encoder, rb.buffer, 0);
-      encoder.copyBufferToBuffer(this.state, 0, rb.buffer, NP_STATE_OFFSET, 4 * NP_STATE_WORDS);
-      queue.submit([encoder.finish()]);
-      const bytes = await rb.read(this.ctx, NP_STATE_OFFSET + 4 * NP_STATE_WORDS);
-      state = new Uint32Array(bytes, 0, STATE_WORDS);
-      np = new Uint32Array(bytes, NP_STATE_OFFSET, NP_STATE_WORDS);
-    }
-    await this.ctx.checkErrors();
-    const broad = bp.finishUpdate(state, bpRegrows, dispatches, gpuTime);
+  /** Ends a step that succeeded (or was submitted, { wait: false }): its set becomes the previous step's. */
+  endUpdate(): void {
     this.lastSet = this.cur;
     this.cur = 1 - this.cur;
-    const result = this.result(broad, np, this.contactRegrows - before + npRegrows, dispatches, gpuTime, hostMs, false);
-    this.lastResult = result;
-    return result;
   }
 
-  /**
-   * The narrow phase alone on a given pair list (proxy slots of `mirror`, a < b, sorted by (a, b),
-   * two words per pair), as if the broad phase had found exactly these pairs: for tests of the
-   * collide kernels on chosen shape pairs, and for tools. The contact sets persist as in update().
-   */
-  async updateWithPairs(mirror: GpuWorld, pairs: Uint32Array): Promise<NarrowPhaseResult> {
-    if (this.busy) throw new Error('GpuNarrowPhase.updateWithPairs: the previous update has not finished');
-    this.busy = true;
-    try {
-      await this.ctx.checkErrors();
-      const n = pairs.length / 2;
-      for (let i = 1; i < n; ++i) {
-        const a0 = pairs[2 * i - 2];
-        const b0 = pairs[2 * i - 1];
-        if (pairs[2 * i] < a0 || (pairs[2 * i] === a0 && pairs[2 * i + 1] <= b0)) throw new RangeError('updateWithPairs: pairs must be sorted by (a, b) without duplicates');
-      }
-      this.givenPairs ??= new GpuArray(this.ctx, 'given pairs', 8, 64);
-      this.givenState ??= this.ctx.createBuffer('given pair state', 4 * STATE_WORDS, USAGE.STORAGE | USAGE.COPY_DST);
-      this.givenPairs.ensure(Math.max(1, n));
-      const queue = this.ctx.device.queue;
-      if (n > 0) queue.writeBuffer(this.givenPairs.buffer, 0, pairs.buffer, pairs.byteOffset, 8 * n);
-      const words = new Uint32Array(STATE_WORDS);
-      words[STATE.PAIR_COUNT] = n;
-      words[STATE.PAIR_SORT_COUNT] = n;
-      queue.writeBuffer(this.givenState, 0, words);
-      this.growContacts(n);
-      const maxDim = this.ctx.maxWorkgroupsPerDimension;
-      const rb = this.readback;
-      let np: Uint32Array;
-      let dispatches = 0;
-      let gpuTime: Record<string, number> | null = null;
-      this.beginStep(mirror);
-      const encoder = this.ctx.device.createCommandEncoder({ label: 'narrow phase on given pairs' });
-      this.timer.reset();
-      const recorder = passRecorder(encoder, maxDim, this.timer);
-      this.encodePasses(recorder.pass, mirror, this.givenPairs.buffer, this.givenState, this.cur);
-      dispatches = recorder.dispatches();
-      encoder.copyBufferToBuffer(this.state, 0, rb.buffer, NP_STATE_OFFSET, 4 * NP_STATE_WORDS);
-      this.timer.resolveTo(encoder, rb.buffer, TIMER_OFFSET);
-      await this.ctx.checkErrors();
-      queue.submit([encoder.finish()]);
-      const bytes = await rb.read(this.ctx, TIMER_OFFSET + this.timer.bytes);
-      np = new Uint32Array(bytes, NP_STATE_OFFSET, NP_STATE_WORDS);
-      gpuTime = this.timer.parse(bytes, TIMER_OFFSET);
-      await this.ctx.checkErrors();
-      this.lastSet = this.cur;
-      this.cur = 1 - this.cur;
-      const broad: BroadPhaseResult = { pairCount: n, axis: 0, strips: 0, entries: 0, workItems: 0, regrows: 0, pairCapacity: n, dispatches: 0, gpuTime: null };
-      const result = this.result(broad, np, 0, dispatches, gpuTime, { encode: 0, submit: 0, wait: 0 }, false);
-      this.lastResult = result;
-      return result;
-    } finally {
-      this.busy = false;
-    }
-  }
-
-  /** Looks at the read-backs that are in, oldest first: counts, and growth after an overflow. */
-  private absorbSettled(bp: GpuBroadPhase): void {
-    while (this.inFlight.length > 0 && this.inFlight[0].result !== null) {
-      const entry = this.inFlight.shift()!;
-      const r = entry.result!;
-      const state = entry.state!;
-      this.lastResult = r;
-      const pairsFound = state[STATE.PAIR_COUNT];
-      if ((state[STATE.OVERFLOW] & OVERFLOW_ENTRIES) !== 0) bp.growEntries(state[STATE.ENTRY_TOTAL]);
-      // Headroom: keep 1.5 x the last counts.
-      const want = Math.ceil(1.5 * pairsFound);
-      if (want > bp.pairCapacity) bp.growPairs(want);
-      if (want > this.capacity) this.growContacts(want);
-      if (r.overflowed) this.truncatedSteps++;
-    }
-  }
-
-  private async runDeferred(mirror: GpuWorld, bp: GpuBroadPhase, after: NarrowPhaseUpdateOptions['after']): Promise<NarrowPhaseResult> {
-    await this.ctx.checkErrors();
-    this.absorbSettled(bp);
-    const tr = performance.now();
-    const rb = await this.ring.next();
-    this.absorbSettled(bp);
-    const t0 = performance.now();
-    const step = this.recordStep(mirror, bp, rb.buffer, after);
-    await this.ctx.checkErrors();
-    const t1 = performance.now();
-    this.ctx.device.queue.submit([step.encoder.finish()]);
-    const t2 = performance.now();
-    const dispatches = step.dispatches();
-    const names = this.timer;
-    const entry: InFlight = { settled: null as unknown as Promise<NarrowPhaseResult>, result: null, state: null };
-    const capacity = this.capacity;
-    entry.settled = rb.read(this.ctx, TIMER_OFFSET + names.bytes).then((bytes) => {
-      const state = new Uint32Array(bytes, 0, STATE_WORDS).slice();
-      const np = new Uint32Array(bytes, NP_STATE_OFFSET, NP_STATE_WORDS);
-      const broad: BroadPhaseResult = {
-        pairCount: state[STATE.PAIR_COUNT],
-        axis: state[STATE.AXIS],
-        strips: state[STATE.STRIPS],
-        entries: state[STATE.ENTRIES],
-        workItems: state[STATE.WORK_TOTAL],
-        regrows: 0,
-        pairCapacity: bp.pairCapacity,
-        dispatches,
-        gpuTime: null,
-      };
-      const r = this.result(broad, np, 0, dispatches, null, { encode: t1 - t0, submit: t2 - t1, wait: performance.now() - t2 }, false);
-      r.contactCapacity = capacity;
-      r.overflowed = r.overflowed || (state[STATE.OVERFLOW] & (OVERFLOW_PAIRS | OVERFLOW_ENTRIES)) !== 0;
-      entry.state = state;
-      entry.result = r;
-      return r;
-    });
-    this.inFlight.push(entry);
-    this.lastSet = this.cur;
-    this.cur = 1 - this.cur;
-    const last = this.lastResult;
-    const base: NarrowPhaseResult = last
-      ? { ...last, hostMs: { encode: t1 - t0, submit: t2 - t1, wait: t0 - tr }, dispatches }
-      : this.result(
-          { pairCount: 0, axis: 0, strips: 0, entries: 0, workItems: 0, regrows: 0, pairCapacity: bp.pairCapacity, dispatches, gpuTime: null },
-          new Uint32Array(NP_STATE_WORDS),
-          0,
-          dispatches,
-          null,
-          { encode: t1 - t0, submit: t2 - t1, wait: t0 - tr },
-          true,
-        );
-    return { ...base, pending: true, settled: entry.settled };
-  }
-
-  /** Waits for every update in flight ({ wait: false }) and takes in their counts. */
-  async settle(broadPhase: GpuBroadPhase): Promise<NarrowPhaseResult | null> {
-    await Promise.all(this.inFlight.map((e) => e.settled.catch(() => undefined)));
-    this.absorbSettled(broadPhase);
-    return this.lastResult;
-  }
-
-  /** Forgets the previous step's contacts: the next update starts cold (no warm start, all begin). */
+  /** Forgets the previous step's contacts: the next step starts cold (no warm start, all begin). */
   reset(): void {
     this.ctx.device.queue.writeBuffer(this.state, 4 * NP.COUNT_0, new Uint32Array([0, 0]));
   }
 
   /**
    * Takes the JavaScript world's contacts as the previous step's (keys, manifolds, impulses,
-   * touching state), so that the next update warm-starts from the engine's state: for handing a
+   * touching state), so that the next step warm-starts from the engine's state: for handing a
    * running world to the GPU (and for tests). `mirror` must be synced. Contacts of proxies the
    * mirror does not have are skipped. Returns how many contacts were taken.
    */
@@ -738,7 +482,7 @@ export class GpuNarrowPhase {
     return new Uint32Array(await readBuffer(this.ctx, this.state, 4 * NP_STATE_WORDS, DEBUG_READ));
   }
 
-  /** The last update's contacts, decoded. */
+  /** The last step's contacts, decoded. */
   async readContacts(): Promise<GpuContactRecord[]> {
     const np = await this.readState();
     const n = np[NP.CONTACTS];
@@ -792,13 +536,13 @@ export class GpuNarrowPhase {
     return out;
   }
 
-  /** The last update's solver list (contact indices). */
+  /** The last step's solver list (contact indices). */
   async readSolverList(): Promise<Uint32Array> {
     const n = (await this.readState())[NP.SOLVER];
     return n === 0 ? new Uint32Array(0) : new Uint32Array(await readBuffer(this.ctx, this.solverList, 4 * n, DEBUG_READ));
   }
 
-  /** The last update's begin/end events. */
+  /** The last step's begin/end events. */
   async readEvents(): Promise<GpuContactEvent[]> {
     const n = (await this.readState())[NP.EVENTS];
     if (n === 0) return [];
@@ -818,7 +562,7 @@ export class GpuNarrowPhase {
   }
 
   /**
-   * Every output of the last update as bytes (counts, keys, contactRef, manifolds, solver list,
+   * Every output of the last step as bytes (counts, keys, contactRef, manifolds, solver list,
    * events; not the capacities): for determinism checks.
    */
   async readAll(): Promise<Uint8Array> {
@@ -858,11 +602,6 @@ export class GpuNarrowPhase {
       a.destroy();
     this.state.destroy();
     this.indirect.destroy();
-    this.readback.destroy();
-    this.ring.destroy();
-    this.timer.destroy();
     this.collideParams.destroy();
-    this.givenPairs?.destroy();
-    this.givenState?.destroy();
   }
 }

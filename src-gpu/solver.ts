@@ -1,6 +1,6 @@
 /*
- * The GPU solver: b2Island::Solve for the contacts of a step, in float32, as stages
- * recorded after the narrow phase in the same command buffer.
+ * The GPU solver: b2Island::Solve for the contacts of a step, in float32, as stages that
+ * GpuPipeline (pipeline.ts) records after the narrow phase's, in the same command buffer.
  *
  *   begin               solver state: skip when collision overflowed, the contact count  colour.ts
  *   islands             wake (new contacts, touch changes), connected components through
@@ -45,7 +45,7 @@ import { readBuffer } from './readback';
 import type { GpuContext } from './device';
 import { GpuArray } from './buffers';
 import { Uniform } from './kernel';
-import type { PassRecorder, Recorder } from './kernel';
+import type { Recorder } from './kernel';
 import { ColourStage } from './colour';
 import type { ColourInputs } from './colour';
 import { IntegrateVelocitiesStage } from './integrateVelocities';
@@ -127,7 +127,7 @@ export class GpuSolver {
   readonly islands: IslandsStage;
   readonly timeOfImpact: TimeOfImpactStage;
   private readonly step: SolverStep = { dt: 0, dtRatio: 0, velocityIterations: 8, positionIterations: 3, warmStarting: true, gravity: { x: 0, y: 0 } };
-  // The step being recorded: filled in place by encode() so that recording allocates nothing.
+  // The step being recorded (bindStep): filled in place so that recording allocates nothing.
   private mirror: GpuWorld | null = null;
   private readonly colourIo: ColourInputs;
   private readonly passIo: ColourPassInputs;
@@ -233,8 +233,11 @@ export class GpuSolver {
     this.islands.configure(step.dt, mirror);
   }
 
-  /** Records the solver's passes for the collision step whose outputs are `io`. */
-  encode(pass: PassRecorder, mirror: GpuWorld, io: SolverInputs): void {
+  /**
+   * Names the buffers the stages recorded next read: the collision step's outputs (`io`) and the
+   * mirror's tables; makes room for its contacts and joints. Before encodeIslands().
+   */
+  bindStep(mirror: GpuWorld, io: SolverInputs): void {
     const contacts = Math.max(1, io.contactCapacity);
     this.contactBodiesArray.ensure(contacts);
     this.constraintArray.ensure(contacts);
@@ -265,42 +268,38 @@ export class GpuSolver {
     s.manifolds = io.manifolds;
     s.solverList = io.solverList;
     s.contactCapacity = io.contactCapacity;
-    pass('solve: islands', this.encodeIslands);
-    pass('solve: integrate velocities', this.encodeIntegrateVelocities);
-    pass('solve: prepare', this.encodePrepare);
-    pass('solve: colour', this.encodeColour);
-    pass('solve: velocity', this.encodeVelocity);
-    pass('solve: position', this.encodePosition);
-    pass('solve: sleep', this.encodeSleep);
-    if (mirror.world.m_continuousPhysics) {
-      this.toiIo.npState = io.npState;
-      this.toiIo.contactRefs = io.contactRefs;
-      pass('solve: time of impact', this.encodeTimeOfImpact);
-    }
-    this.mirror = null;
+    this.toiIo.npState = io.npState;
+    this.toiIo.contactRefs = io.contactRefs;
   }
 
-  private readonly encodeIslands = (rec: Recorder): void => {
+  /** GpuStage.Islands: the solver state (skipped when collision overflowed), wake-ups, islands. */
+  readonly encodeIslands = (rec: Recorder): void => {
     this.colouring.encodeBegin(rec, this.colourIo);
     this.islands.encodeFind(rec, this.islandIo, this.mirror!);
   };
 
-  private readonly encodeSleep = (rec: Recorder): void => this.islands.encodeSleep(rec, this.state, this.mirror!);
+  /** GpuStage.Sleep. */
+  readonly encodeSleep = (rec: Recorder): void => this.islands.encodeSleep(rec, this.state, this.mirror!);
 
-  private readonly encodeTimeOfImpact = (rec: Recorder): void => this.timeOfImpact.encode(rec, this.toiIo, this.mirror!);
+  /** GpuStage.TimeOfImpact. */
+  readonly encodeTimeOfImpact = (rec: Recorder): void => this.timeOfImpact.encode(rec, this.toiIo, this.mirror!);
 
-  private readonly encodeIntegrateVelocities = (rec: Recorder): void => {
+  /** GpuStage.IntegrateVelocities. */
+  readonly encodeIntegrateVelocities = (rec: Recorder): void => {
     this.integrateVelocities.encode(rec, this.params.buffer, this.state, this.mirror!);
   };
 
-  private readonly encodePrepare = (rec: Recorder): void => {
+  /** GpuStage.Prepare: contacts, then joints. */
+  readonly encodePrepare = (rec: Recorder): void => {
     this.prepare.encode(rec, this.prepareIo, this.mirror!);
     this.joints.encodePrepare(rec, this.params.buffer, this.mirror!);
   };
 
-  private readonly encodeColour = (rec: Recorder): void => this.colouring.encode(rec, this.colourIo);
+  /** GpuStage.Colour. */
+  readonly encodeColour = (rec: Recorder): void => this.colouring.encode(rec, this.colourIo);
 
-  private readonly encodeVelocity = (rec: Recorder): void => {
+  /** GpuStage.Velocity: warm start, velocity iterations, impulses stored, positions integrated. */
+  readonly encodeVelocity = (rec: Recorder): void => {
     const mirror = this.mirror!;
     // Joints need the pass without warm starting too: the mouse joint damps its body there.
     if (this.step.warmStarting || mirror.jointSlotCount > 0) this.warmStart.encode(rec, this.passIo, mirror.bodyVel.buffer);
@@ -310,7 +309,8 @@ export class GpuSolver {
     this.integratePositions.encodeIntegrate(rec, this.params.buffer, this.state, mirror);
   };
 
-  private readonly encodePosition = (rec: Recorder): void => {
+  /** GpuStage.Position: position iterations, then the transforms from the sweeps. */
+  readonly encodePosition = (rec: Recorder): void => {
     const mirror = this.mirror!;
     this.solvePosition.encode(rec, this.passIo, mirror.bodySweep.buffer, this.step.positionIterations);
     this.integratePositions.encodeSynchronize(rec, this.params.buffer, this.state, mirror);

@@ -1,8 +1,9 @@
 /*
  * Stepping a b2World on the GPU: the broad phase, the narrow phase and the solver of a step in
  * one command buffer and one submission (two when collision overflows and the host reruns it,
- * the solver with it), as b2World::Step orders them (Collide, Solve, then SolveTOI when the world's
- * continuous physics is on: timeOfImpact.ts, one parallel pass without 2.2.1's TOI sub-steps).
+ * the solver with it), recorded by GpuPipeline (pipeline.ts) in b2World::Step's order (Collide,
+ * Solve, then SolveTOI when the world's continuous physics is on: timeOfImpact.ts, one parallel
+ * pass without 2.2.1's TOI sub-steps).
  *
  * In:  a b2World built with the normal API; step(dt, velocityIterations, positionIterations).
  * Out: the bodies' motion on the GPU (GpuWorld's bodyXf, bodyCell, bodySweep, bodyVel), contacts
@@ -35,9 +36,9 @@ import { b2BodyFlags, b2WorldFlags } from '../src/common/b2Constants';
 import type { GpuContext } from './device';
 import { GpuBroadPhase } from './broadPhase';
 import type { GpuBroadPhaseOptions } from './broadPhase';
-import type { PassRecorder } from './kernel';
 import { GpuNarrowPhase } from './narrowPhase';
-import type { GpuNarrowPhaseOptions, NarrowPhaseOutputs, NarrowPhaseResult } from './narrowPhase';
+import type { GpuNarrowPhaseOptions, NarrowPhaseResult } from './narrowPhase';
+import { GpuPipeline } from './pipeline';
 import { GpuSolver } from './solver';
 import type { SolverStep } from './solver';
 import { GpuWorld } from './world';
@@ -61,7 +62,7 @@ export interface GpuReadRange {
 }
 
 export interface GpuStepOptions {
-  /** false: return once submitted (the narrow phase's { wait: false }); default true. */
+  /** false: return once submitted (GpuPipeline's { wait: false }); default true. */
   wait?: boolean;
 }
 
@@ -112,6 +113,8 @@ export class GpuStepper {
   readonly broadPhase: GpuBroadPhase;
   readonly narrowPhase: GpuNarrowPhase;
   readonly solver: GpuSolver;
+  /** Records and submits the steps; its settle() waits for the steps in flight ({ wait: false }). */
+  readonly pipeline: GpuPipeline;
   /** Steps taken on the GPU. */
   steps = 0;
   /** What the last readState() or readTransforms() cost (unpacking: joints and extras; bodies are pulled later). */
@@ -127,7 +130,6 @@ export class GpuStepper {
   private stateFresh = false;
   private readonly transformStaging: StagingBuffer;
   private readonly solverStep: SolverStep = { dt: 0, dtRatio: 0, velocityIterations: 0, positionIterations: 0, warmStarting: true, gravity: { x: 0, y: 0 } };
-  private readonly encodeSolver = (pass: PassRecorder, outputs: NarrowPhaseOutputs): void => this.solver.encode(pass, this.mirror, outputs);
 
   constructor(ctx: GpuContext, world: b2World, options: GpuStepperOptions = {}) {
     this.ctx = ctx;
@@ -136,6 +138,7 @@ export class GpuStepper {
     this.broadPhase = new GpuBroadPhase(ctx, options.broadPhase);
     this.narrowPhase = new GpuNarrowPhase(ctx, options.narrowPhase);
     this.solver = new GpuSolver(ctx);
+    this.pipeline = new GpuPipeline(ctx, this.broadPhase, this.narrowPhase, this.solver);
     this.bodyStaging = [
       new StagingBuffer(ctx, 'stepper body read-back 0', 64 * BODY_READ_BYTES),
       new StagingBuffer(ctx, 'stepper body read-back 1', 64 * BODY_READ_BYTES),
@@ -148,7 +151,7 @@ export class GpuStepper {
 
   /**
    * One b2World::Step on the GPU. dt = 0 runs collision only (as the engine does). Resolves with the
-   * collision step's counts; with { wait: false } once submitted.
+   * collision step's counts; with { wait: false } once submitted (pipeline.settle() waits).
    */
   async step(dt: number, velocityIterations: number, positionIterations: number, options: GpuStepOptions = {}): Promise<NarrowPhaseResult> {
     const world = this.world;
@@ -168,7 +171,7 @@ export class GpuStepper {
       s.gravity = world.m_gravity;
       this.solver.configure(s, this.mirror);
     }
-    const result = await this.narrowPhase.update(this.mirror, this.broadPhase, { wait: options.wait, after: solve ? this.encodeSolver : undefined });
+    const result = await this.pipeline.step(this.mirror, { wait: options.wait, solve });
     if (solve) {
       this.invDt0 = 1 / dt;
       world.m_inv_dt0 = this.invDt0;
@@ -395,6 +398,7 @@ export class GpuStepper {
     this.releaseState();
     for (const staging of this.bodyStaging) staging.destroy();
     this.transformStaging.destroy();
+    this.pipeline.destroy();
     this.solver.destroy();
     this.narrowPhase.destroy();
     this.broadPhase.destroy();

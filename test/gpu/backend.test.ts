@@ -168,7 +168,7 @@ describeGpu('WebGPUBackend: the world API on the GPU', (ctx) => {
     world.Step(DT, 8, 3);
     world.Step(DT, 8, 3);
     await backend.submitted();
-    await backend.stepper!.narrowPhase.settle(backend.stepper!.broadPhase);
+    await backend.stepper!.pipeline.settle();
     // Two steps ran on the GPU; the world still shows the state before them.
     expect(backend.stepper!.steps).toBe(2);
     expect(boxes[4].GetPosition().y).toBe(y0);
@@ -222,7 +222,7 @@ describeGpu('WebGPUBackend: the world API on the GPU', (ctx) => {
     const stepsOnly = await countMaps(ctx, async () => {
       for (let i = 0; i < 3; ++i) world.Step(DT, 8, 3);
       await backend.submitted();
-      await backend.stepper!.narrowPhase.settle(backend.stepper!.broadPhase);
+      await backend.stepper!.pipeline.settle();
     });
     expect(stepsOnly).toBe(3);
     expect(backend.readbacks).toBe(0);

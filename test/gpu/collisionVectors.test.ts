@@ -5,7 +5,7 @@
  *
  * Each case becomes two bodies of a b2World (shape A created first, so it gets the lower engine
  * proxy id and is fixture A, as for the reference), mirrored with GpuWorld, and the pair goes
- * through GpuNarrowPhase.updateWithPairs: classify, bin, collide kernel, persist.
+ * through GpuPipeline.collideGivenPairs: classify, bin, collide kernel, persist.
  *
  * Agreement: the same manifold type, point count and contact-feature ids (b2ContactID::key), and
  * normals and points within tolerance: |GPU - reference| <= 1e-5 for the local normal (a unit
@@ -33,7 +33,9 @@ import type { b2CircleShape } from '../../src/collision/shapes/b2CircleShape';
 import { b2Vec2 } from '../../src/common/b2Math';
 import { b2BodyDef, b2_dynamicBody } from '../../src/dynamics/b2Body';
 import { b2World } from '../../src/dynamics/b2World';
+import { GpuBroadPhase } from '../../src-gpu/broadPhase';
 import { GpuNarrowPhase } from '../../src-gpu/narrowPhase';
+import { GpuPipeline } from '../../src-gpu/pipeline';
 import type { GpuContactRecord } from '../../src-gpu/narrowPhase';
 import type { GpuContext } from '../../src-gpu/device';
 import { GpuWorld } from '../../src-gpu/world';
@@ -60,12 +62,12 @@ function discreteGpu(c: GpuContactRecord): string {
 
 /**
  * The cases as pairs of bodies of one b2World (shape A's fixture created first, so it has the
- * lower engine proxy id and is fixture A), through GpuNarrowPhase.updateWithPairs; the contacts
+ * lower engine proxy id and is fixture A), through GpuPipeline.collideGivenPairs; the contacts
  * come back in case order.
  */
 async function collideOnGpu(
   ctx: GpuContext,
-  narrow: GpuNarrowPhase,
+  pipeline: GpuPipeline,
   cases: CollideCase<ShapeJson, ShapeJson>[],
 ): Promise<{ contacts: GpuContactRecord[]; order: number[]; close: () => void }> {
   const world = new b2World(new b2Vec2(0, 0));
@@ -102,8 +104,9 @@ async function collideOnGpu(
     sorted[2 * k] = pairs[2 * caseIndex];
     sorted[2 * k + 1] = pairs[2 * caseIndex + 1];
   });
+  const narrow = pipeline.narrowPhase;
   narrow.reset();
-  const result = await narrow.updateWithPairs(mirror, sorted);
+  const result = await pipeline.collideGivenPairs(mirror, sorted);
   expect(result.contactCount).toBe(cases.length);
   const sortedContacts = await narrow.readContacts();
   const contacts: GpuContactRecord[] = new Array(cases.length);
@@ -127,13 +130,13 @@ interface FamilyReport {
 }
 
 describeGpu('GPU narrow-phase kernels on the C++ collision vectors', (ctx) => {
-  const narrow = new GpuNarrowPhase(ctx, { initialContactCapacity: 512 });
+  const pipeline = new GpuPipeline(ctx, new GpuBroadPhase(ctx), new GpuNarrowPhase(ctx, { initialContactCapacity: 512 }));
   const reports: Record<string, FamilyReport> = {};
 
   for (const family of FAMILIES) {
     it(`${family}: every case, same type, points and ids as the reference (threshold cases explained)`, async () => {
       const cases = collisionVectors[family] as CollideCase<ShapeJson, ShapeJson>[];
-      const { contacts, order, close } = await collideOnGpu(ctx, narrow, cases);
+      const { contacts, order, close } = await collideOnGpu(ctx, pipeline, cases);
       const report: FamilyReport = { cases: cases.length, exact: 0, threshold: [], failures: [], maxNormalError: 0, maxPointError: 0 };
       contacts.forEach((c, k) => {
         const i = order[k];
@@ -183,7 +186,7 @@ describeGpu('GPU narrow-phase kernels on the C++ collision vectors', (ctx) => {
     const reference = new b2Manifold();
     b2CollideCircles(reference, makeShape(tc.shapeA) as b2CircleShape, makeTransform(tc.xfA), makeShape(tc.shapeB) as b2CircleShape, makeTransform(tc.xfB));
     expect(reference.pointCount).toBe(0);
-    const { contacts, close } = await collideOnGpu(ctx, narrow, [tc]);
+    const { contacts, close } = await collideOnGpu(ctx, pipeline, [tc]);
     close();
     expect(discreteGpu(contacts[0])).toBe('0/1/0');
     const verdict = classifyThreshold('collideCircles', tc, '0/1/0');

@@ -21,6 +21,7 @@ import { b2ContactListener } from '../../src/dynamics/b2WorldCallbacks';
 import { GpuBroadPhase } from '../../src-gpu/broadPhase';
 import { BIN, EVENT_BEGIN, EVENT_END } from '../../src-gpu/layout';
 import { GpuNarrowPhase } from '../../src-gpu/narrowPhase';
+import { GpuPipeline } from '../../src-gpu/pipeline';
 import { GpuWorld } from '../../src-gpu/world';
 import { goldenSceneNames, loadGoldenScene } from '../support/scene';
 import { describeGpu, rng } from './support';
@@ -80,6 +81,7 @@ describeGpu('GpuNarrowPhase: events, determinism, capacity, bins', (ctx) => {
     const mirror = new GpuWorld(ctx, world);
     const broadPhase = new GpuBroadPhase(ctx);
     const narrow = new GpuNarrowPhase(ctx);
+    const pipeline = new GpuPipeline(ctx, broadPhase, narrow);
     let window: EventKey[] = [];
     const listener = new b2ContactListener();
     const record = (kind: number) => (c: b2Contact) => {
@@ -116,7 +118,7 @@ describeGpu('GpuNarrowPhase: events, determinism, capacity, bins', (ctx) => {
         ball = null;
       }
       mirror.sync();
-      const result = await narrow.update(mirror, broadPhase);
+      const result = await pipeline.step(mirror);
       const events = await narrow.readEvents();
       expect(events.length).toBe(result.eventCount);
       world.Step(1 / 60, 8, 3);
@@ -140,6 +142,7 @@ describeGpu('GpuNarrowPhase: events, determinism, capacity, bins', (ctx) => {
     expect(solidEnds).toBeGreaterThanOrEqual(2);
     expect(vanished).toBe(1);
     expect(box.GetLinearVelocity().x).toBeLessThan(0);
+    pipeline.destroy();
     narrow.destroy();
     broadPhase.destroy();
     mirror.destroy();
@@ -154,19 +157,21 @@ describeGpu('GpuNarrowPhase: events, determinism, capacity, bins', (ctx) => {
       const np1 = new GpuNarrowPhase(ctx);
       const bp2 = new GpuBroadPhase(ctx);
       const np2 = new GpuNarrowPhase(ctx, { initialContactCapacity: 64 });
+      const p1 = new GpuPipeline(ctx, bp1, np1);
+      const p2 = new GpuPipeline(ctx, bp2, np2);
       const snapshots: Uint8Array[] = [];
       for (let k = 0; k < 60; ++k) {
         scene.step();
         if (k % 15 !== 14) continue;
         mirror.sync();
-        await np1.update(mirror, bp1);
-        await np2.update(mirror, bp2);
+        await p1.step(mirror);
+        await p2.step(mirror);
         const a = await np1.readAll();
         const b = await np2.readAll();
         expect(Buffer.from(a).equals(Buffer.from(b)), `step ${k}`).toBe(true);
         snapshots.push(a);
       }
-      for (const x of [np1, np2, bp1, bp2, mirror]) x.destroy();
+      for (const x of [p1, p2, np1, np2, bp1, bp2, mirror]) x.destroy();
       return snapshots;
     };
     const first = await run();
@@ -204,8 +209,10 @@ describeGpu('GpuNarrowPhase: events, determinism, capacity, bins', (ctx) => {
     const smallBp = new GpuBroadPhase(ctx);
     const big = new GpuNarrowPhase(ctx, { initialContactCapacity: 1 << 15 });
     const bigBp = new GpuBroadPhase(ctx, { initialPairCapacity: 1 << 15 });
-    const a = await small.update(mirror, smallBp);
-    const b = await big.update(mirror, bigBp);
+    const smallPipeline = new GpuPipeline(ctx, smallBp, small);
+    const bigPipeline = new GpuPipeline(ctx, bigBp, big);
+    const a = await smallPipeline.step(mirror);
+    const b = await bigPipeline.step(mirror);
     expect(b.contactRegrows).toBe(0);
     expect(b.broad.regrows).toBe(0);
     expect(a.broad.regrows).toBeGreaterThan(0);
@@ -231,10 +238,10 @@ describeGpu('GpuNarrowPhase: events, determinism, capacity, bins', (ctx) => {
     // A second step warm-starts every contact.
     world.Step(1 / 60, 8, 3);
     mirror.sync();
-    const a2 = await small.update(mirror, smallBp);
+    const a2 = await smallPipeline.step(mirror);
     expect(a2.contactRegrows).toBe(0);
     expect(a2.previousCount).toBe(a.contactCount);
-    for (const x of [small, smallBp, big, bigBp, mirror]) x.destroy();
+    for (const x of [smallPipeline, bigPipeline, small, smallBp, big, bigBp, mirror]) x.destroy();
   });
 
   it('runs steps without waiting ({ wait: false }) and settles to the same contacts as waiting', async () => {
@@ -244,22 +251,24 @@ describeGpu('GpuNarrowPhase: events, determinism, capacity, bins', (ctx) => {
     const waiting = new GpuNarrowPhase(ctx);
     const deferredBp = new GpuBroadPhase(ctx);
     const deferred = new GpuNarrowPhase(ctx, { initialContactCapacity: 16 });
+    const waitingPipeline = new GpuPipeline(ctx, waitingBp, waiting);
+    const deferredPipeline = new GpuPipeline(ctx, deferredBp, deferred);
     let settled: Promise<unknown> | undefined;
     for (let k = 0; k < 8; ++k) {
       scene.step();
       mirror.sync();
-      await waiting.update(mirror, waitingBp);
-      const r = await deferred.update(mirror, deferredBp, { wait: false });
+      await waitingPipeline.step(mirror);
+      const r = await deferredPipeline.step(mirror, { wait: false });
       expect(r.pending).toBe(true);
       settled = r.settled;
     }
-    const last = await deferred.settle(deferredBp);
+    const last = await deferredPipeline.settle();
     await settled;
     // The first deferred step ran out of room (16 contacts) and said so; the buffers grew.
-    expect(deferred.truncatedSteps).toBeGreaterThanOrEqual(1);
+    expect(deferredPipeline.truncatedSteps).toBeGreaterThanOrEqual(1);
     expect(last!.overflowed).toBe(false);
-    expect(last!.contactCount).toBe(waiting.lastResult!.contactCount);
+    expect(last!.contactCount).toBe(waitingPipeline.lastResult!.contactCount);
     expect(Buffer.from(await deferred.readAll()).equals(Buffer.from(await waiting.readAll()))).toBe(true);
-    for (const x of [waiting, waitingBp, deferred, deferredBp, mirror]) x.destroy();
+    for (const x of [waitingPipeline, deferredPipeline, waiting, waitingBp, deferred, deferredBp, mirror]) x.destroy();
   });
 });

@@ -34,6 +34,7 @@ import type { b2Fixture } from '../../src/dynamics/b2Fixture';
 import { GpuBroadPhase } from '../../src-gpu/broadPhase';
 import { BIN } from '../../src-gpu/layout';
 import { GpuNarrowPhase } from '../../src-gpu/narrowPhase';
+import { GpuPipeline } from '../../src-gpu/pipeline';
 import type { GpuContactRecord } from '../../src-gpu/narrowPhase';
 import { GpuWorld } from '../../src-gpu/world';
 import { goldenSceneNames, loadGoldenScene } from '../support/scene';
@@ -96,6 +97,7 @@ interface Totals {
 describeGpu('GPU narrow phase against the engine on the golden scenes', (ctx) => {
   const broadPhase = new GpuBroadPhase(ctx);
   const narrow = new GpuNarrowPhase(ctx);
+  const pipeline = new GpuPipeline(ctx, broadPhase, narrow);
   const totals: Totals = {
     contacts: 0,
     touching: 0,
@@ -122,7 +124,7 @@ describeGpu('GPU narrow phase against the engine on the golden scenes', (ctx) =>
         }
         mirror.sync();
         narrow.seedFromWorld(mirror);
-        const result = await narrow.update(mirror, broadPhase);
+        const result = await pipeline.step(mirror);
         const contacts = await narrow.readContacts();
         expect(contacts.length).toBe(result.contactCount);
 

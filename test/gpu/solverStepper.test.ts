@@ -76,7 +76,7 @@ describeGpu('GPU stepper', (ctx) => {
       await a.step(DT, 8, 3);
       await b.step(DT, 8, 3, { wait: false });
     }
-    await b.narrowPhase.settle(b.broadPhase);
+    await b.pipeline.settle();
     await a.readBodies();
     await b.readBodies();
     expect(motion(queued)).toEqual(motion(waited));
