@@ -36,12 +36,12 @@ import { b2CircleShape } from '../src/collision/shapes/b2CircleShape';
 import { b2PolygonShape } from '../src/collision/shapes/b2PolygonShape';
 import type { b2Shape } from '../src/collision/shapes/b2Shape';
 import { b2Transform, b2Vec2 } from '../src/common/b2Math';
-import { GpuBroadPhase } from '../src-gpu/broadPhase';
-import type { BroadPhaseResult } from '../src-gpu/broadPhase';
-import { requestGpu } from '../src-gpu/device';
-import type { GpuContext } from '../src-gpu/device';
-import { USAGE } from '../src-gpu/layout';
-import { GpuWorld } from '../src-gpu/world';
+import { GpuBroadPhase } from '../src-gpu/broadphase/broadPhase';
+import type { BroadPhaseResult } from '../src-gpu/broadphase/broadPhase';
+import { requestGpu } from '../src-gpu/device/device';
+import type { GpuContext } from '../src-gpu/device/device';
+import { USAGE } from '../src-gpu/device/layout';
+import { GpuWorld } from '../src-gpu/world/world';
 import { fmt, logLogChart, median, rng, syntheticWorld } from './gpu-support';
 import type { SyntheticBody } from './gpu-support';
 

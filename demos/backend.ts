@@ -14,9 +14,9 @@
  * backend logs and reads back only what a listener asks for.
  */
 
-import { WebGPUBackend } from '../src-gpu/backend';
-import { requestGpu } from '../src-gpu/device';
-import type { GpuContext } from '../src-gpu/device';
+import { WebGPUBackend } from '../src-gpu/backend/backend';
+import { requestGpu } from '../src-gpu/device/device';
+import type { GpuContext } from '../src-gpu/device/device';
 import type { GpuReadStats } from '../src-gpu/stepper';
 import { adapterName, StepTimes } from './framework/demo';
 import type { Settings } from './framework/settings';

@@ -16,11 +16,13 @@ const from = path.join(tmp, 'src-gpu');
 const to = 'dist/types/gpu';
 rmSync(to, { recursive: true, force: true });
 mkdirSync(to, { recursive: true });
-for (const file of readdirSync(from)) {
+for (const file of readdirSync(from, { recursive: true })) {
   if (!file.endsWith('.d.ts')) continue;
-  let text = readFileSync(path.join(from, file), 'utf8').replaceAll("'../src/", "'../");
+  // src-gpu/<folder>/x.ts imports '../../src/common/...'; dist/types/gpu/<folder>/x.d.ts reaches dist/types/common as '../../common/...'.
+  let text = readFileSync(path.join(from, file), 'utf8').replace(/'((?:\.\.\/)+)src\//g, "'$1");
   // GPUDevice, GPUBuffer...: the WebGPU types (@webgpu/types, which the webgpu package brings).
   if (file === 'index.d.ts') text = `/// <reference types="@webgpu/types" />\n${text}`;
+  mkdirSync(path.dirname(path.join(to, file)), { recursive: true });
   writeFileSync(path.join(to, file), text);
 }
 rmSync(tmp, { recursive: true, force: true });

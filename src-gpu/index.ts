@@ -33,25 +33,25 @@ export {
   GpuOutOfMemoryError,
   GpuCapacityError,
   GpuError,
-} from './device';
-export type { GpuContextOptions, GpuAdapterSummary, GpuLossInfo } from './device';
-export { findSwiftShaderIcd, SWIFTSHADER_ICD_PATHS } from './node';
-export type { DawnModule, IcdSearchEnv } from './node';
-export { GpuWorld } from './world';
-export type { GpuWorldOptions, SyncStats } from './world';
-export { GpuBroadPhase } from './broadPhase';
-export type { GpuBroadPhaseOptions, BroadPhaseResult } from './broadPhase';
-export { GpuProxySet } from './proxies';
-export type { RawProxies } from './proxies';
-export { AABB_EXTENSION } from './bounds';
-export * as layout from './layout';
-export { GpuNarrowPhase } from './narrowPhase';
-export type { GpuNarrowPhaseOptions, NarrowPhaseResult, GpuContactRecord, GpuContactEvent } from './narrowPhase';
-export { GpuSolver } from './solver';
-export type { SolverStep, SolverInputs, SolverState } from './solver';
+} from './device/device';
+export type { GpuContextOptions, GpuAdapterSummary, GpuLossInfo } from './device/device';
+export { findSwiftShaderIcd, SWIFTSHADER_ICD_PATHS } from './device/node';
+export type { DawnModule, IcdSearchEnv } from './device/node';
+export { GpuWorld } from './world/world';
+export type { GpuWorldOptions, SyncStats } from './world/world';
+export { GpuBroadPhase } from './broadphase/broadPhase';
+export type { GpuBroadPhaseOptions, BroadPhaseResult } from './broadphase/broadPhase';
+export { GpuProxySet } from './broadphase/proxies';
+export type { RawProxies } from './broadphase/proxies';
+export { AABB_EXTENSION } from './broadphase/bounds';
+export * as layout from './device/layout';
+export { GpuNarrowPhase } from './narrowphase/narrowPhase';
+export type { GpuNarrowPhaseOptions, NarrowPhaseResult, GpuContactRecord, GpuContactEvent } from './narrowphase/narrowPhase';
+export { GpuSolver } from './solver/solver';
+export type { SolverStep, SolverInputs, SolverState } from './solver/solver';
 export { GpuPipeline, GpuStage, STAGE_PASS } from './pipeline';
 export type { GpuPipelineStepOptions } from './pipeline';
 export { GpuStepper } from './stepper';
 export type { GpuStepperOptions, GpuStepOptions, GpuReadRange, GpuReadStats } from './stepper';
-export { WebGPUBackend } from './backend';
-export type { WebGPUBackendOptions } from './backend';
+export { WebGPUBackend } from './backend/backend';
+export type { WebGPUBackendOptions } from './backend/backend';

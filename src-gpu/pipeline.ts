@@ -24,17 +24,17 @@
  * 1.5 x the last counts seen) makes that rare.
  */
 
-import type { GpuContext } from './device';
-import { GpuArray } from './buffers';
-import { passRecorder } from './kernel';
-import type { PassRecorder } from './kernel';
-import type { BroadPhaseResult, GpuBroadPhase } from './broadPhase';
-import type { GpuNarrowPhase, NarrowPhaseResult } from './narrowPhase';
-import type { GpuSolver } from './solver';
-import { PassTimer } from './timing';
-import { Readback, ReadbackRing } from './readback';
-import { BIN_COUNT, BIN_NAMES, NP, NP_STATE_WORDS, OVERFLOW_CONTACTS, OVERFLOW_ENTRIES, OVERFLOW_PAIRS, STATE, STATE_WORDS, USAGE } from './layout';
-import type { GpuWorld } from './world';
+import type { GpuContext } from './device/device';
+import { GpuArray } from './device/buffers';
+import { passRecorder } from './device/kernel';
+import type { PassRecorder } from './device/kernel';
+import type { BroadPhaseResult, GpuBroadPhase } from './broadphase/broadPhase';
+import type { GpuNarrowPhase, NarrowPhaseResult } from './narrowphase/narrowPhase';
+import type { GpuSolver } from './solver/solver';
+import { PassTimer } from './device/timing';
+import { Readback, ReadbackRing } from './device/readback';
+import { BIN_COUNT, BIN_NAMES, NP, NP_STATE_WORDS, OVERFLOW_CONTACTS, OVERFLOW_ENTRIES, OVERFLOW_PAIRS, STATE, STATE_WORDS, USAGE } from './device/layout';
+import type { GpuWorld } from './world/world';
 
 /** The stages of a GPU step, in the order they are recorded. */
 export enum GpuStage {

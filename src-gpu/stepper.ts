@@ -33,18 +33,18 @@
 import type { b2Body } from '../src/dynamics/b2Body';
 import type { b2World } from '../src/dynamics/b2World';
 import { b2BodyFlags, b2WorldFlags } from '../src/common/b2Constants';
-import type { GpuContext } from './device';
-import { GpuBroadPhase } from './broadPhase';
-import type { GpuBroadPhaseOptions } from './broadPhase';
-import { GpuNarrowPhase } from './narrowPhase';
-import type { GpuNarrowPhaseOptions, NarrowPhaseResult } from './narrowPhase';
+import type { GpuContext } from './device/device';
+import { GpuBroadPhase } from './broadphase/broadPhase';
+import type { GpuBroadPhaseOptions } from './broadphase/broadPhase';
+import { GpuNarrowPhase } from './narrowphase/narrowPhase';
+import type { GpuNarrowPhaseOptions, NarrowPhaseResult } from './narrowphase/narrowPhase';
 import { GpuPipeline } from './pipeline';
-import { GpuSolver } from './solver';
-import type { SolverStep } from './solver';
-import { GpuWorld } from './world';
-import type { GpuWorldOptions } from './world';
-import { MappedState, STATE_CHUNK, StagingBuffer } from './readback';
-import type { MappedField } from './readback';
+import { GpuSolver } from './solver/solver';
+import type { SolverStep } from './solver/solver';
+import { GpuWorld } from './world/world';
+import type { GpuWorldOptions } from './world/world';
+import { MappedState, STATE_CHUNK, StagingBuffer } from './device/readback';
+import type { MappedField } from './device/readback';
 
 export interface GpuStepperOptions {
   world?: GpuWorldOptions;

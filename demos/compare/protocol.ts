@@ -5,7 +5,7 @@
  * so that they travel between the threads without copies.
  */
 
-import type { GpuAdapterSummary } from '../../src-gpu/device';
+import type { GpuAdapterSummary } from '../../src-gpu/device/device';
 import type { PaneStats, SceneConfig, SceneGeometry } from './config';
 
 export type PaneBackend = 'js' | 'webgpu';

@@ -4,7 +4,7 @@
  * adapter named for people.
  */
 
-import type { GpuAdapterSummary } from '../../src-gpu/device';
+import type { GpuAdapterSummary } from '../../src-gpu/device/device';
 
 export interface DemoPane {
   backend: 'js' | 'webgpu';

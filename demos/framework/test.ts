@@ -29,7 +29,7 @@ import {
   b2_maxManifoldPoints,
 } from '../../src/index';
 import type { b2Contact, b2ContactImpulse, b2Fixture, b2Joint, b2Manifold } from '../../src/index';
-import { WebGPUBackend } from '../../src-gpu/backend';
+import { WebGPUBackend } from '../../src-gpu/backend/backend';
 import { RandomFloat } from './random';
 import { g_debugDraw, TestbedDraw } from './render';
 import type { Settings, StepSettings } from './settings';

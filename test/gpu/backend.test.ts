@@ -1,5 +1,5 @@
 /*
- * The WebGPU backend behind the world API (src-gpu/backend.ts, docs/GPU.md "The world API on the
+ * The WebGPU backend behind the world API (src-gpu/backend/backend.ts, docs/GPU.md "The world API on the
  * GPU"): the same application code on both backends, a golden scene against the engine, the
  * getters and queries between synchronisations, one map per synchronisation, the bound on queued
  * steps, the refusals (PreSolve, custom contact filter), and switching JS -> GPU -> JS -> GPU
@@ -18,8 +18,8 @@ import type { b2Contact } from '../../src/dynamics/contacts/b2Contact';
 import { b2AABB } from '../../src/collision/b2Collision';
 import type { b2Manifold } from '../../src/collision/b2Collision';
 import type { b2Fixture } from '../../src/dynamics/b2Fixture';
-import { WebGPUBackend } from '../../src-gpu/backend';
-import { STATE_CHUNK } from '../../src-gpu/readback';
+import { WebGPUBackend } from '../../src-gpu/backend/backend';
+import { STATE_CHUNK } from '../../src-gpu/device/readback';
 import { checkWorldInvariants } from '../support/invariants';
 import { loadGoldenScene } from '../support/scene';
 import { describeGpu } from './support';

@@ -1,5 +1,5 @@
 /*
- * Contact events of the WebGPU backend (src-gpu/events.ts): BeginContact / EndContact / PostSolve
+ * Contact events of the WebGPU backend (src-gpu/backend/events.ts): BeginContact / EndContact / PostSolve
  * delivered after the step, against the JavaScript engine's, on a scene where float32 cannot change
  * when shapes touch: two boxes and a circle dropped onto the ground from heights where no step
  * ends within 1e-6 m of touching, and a box thrown up by a force and landing again (its contact
@@ -18,9 +18,9 @@ import { b2World } from '../../src/dynamics/b2World';
 import type { b2WorldBackend } from '../../src/dynamics/b2WorldBackend';
 import { b2ContactImpulse, b2ContactListener } from '../../src/dynamics/b2WorldCallbacks';
 import type { b2Contact } from '../../src/dynamics/contacts/b2Contact';
-import { WebGPUBackend } from '../../src-gpu/backend';
+import { WebGPUBackend } from '../../src-gpu/backend/backend';
 import type { GpuReadRange } from '../../src-gpu/stepper';
-import type { GpuContext } from '../../src-gpu/device';
+import type { GpuContext } from '../../src-gpu/device/device';
 import { describeGpu } from './support';
 
 const DT = 1 / 60;

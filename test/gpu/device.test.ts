@@ -9,7 +9,7 @@ import { b2PolygonShape } from '../../src/collision/shapes/b2PolygonShape';
 import { b2Vec2 } from '../../src/common/b2Math';
 import { b2BodyDef, b2_dynamicBody } from '../../src/dynamics/b2Body';
 import { b2World } from '../../src/dynamics/b2World';
-import { GpuBroadPhase } from '../../src-gpu/broadPhase';
+import { GpuBroadPhase } from '../../src-gpu/broadphase/broadPhase';
 import {
   GpuCapacityError,
   GpuDeviceLostError,
@@ -17,12 +17,12 @@ import {
   GpuOutOfMemoryError,
   GpuUnavailableError,
   requestGpu,
-} from '../../src-gpu/device';
-import type { GpuLossInfo } from '../../src-gpu/device';
-import { USAGE } from '../../src-gpu/layout';
-import { findSwiftShaderIcd, loadDawn, mayHaveHardwareAdapter, SWIFTSHADER_ICD_PATHS, withToggle } from '../../src-gpu/node';
-import type { DawnModule, IcdSearchEnv } from '../../src-gpu/node';
-import { GpuWorld } from '../../src-gpu/world';
+} from '../../src-gpu/device/device';
+import type { GpuLossInfo } from '../../src-gpu/device/device';
+import { USAGE } from '../../src-gpu/device/layout';
+import { findSwiftShaderIcd, loadDawn, mayHaveHardwareAdapter, SWIFTSHADER_ICD_PATHS, withToggle } from '../../src-gpu/device/node';
+import type { DawnModule, IcdSearchEnv } from '../../src-gpu/device/node';
+import { GpuWorld } from '../../src-gpu/world/world';
 import { describeGpu } from './support';
 
 function fakeSearch(files: string[], env: Record<string, string | undefined> = {}, dirs: Record<string, string[]> = {}): IcdSearchEnv {

@@ -1,6 +1,6 @@
 /*
  * The host and the shaders agree on the shared layout: the state words, indirect argument
- * offsets, flag bits and tile sizes of src-gpu/layout.ts are the constants the WGSL declares; and
+ * offsets, flag bits and tile sizes of src-gpu/device/layout.ts are the constants the WGSL declares; and
  * every stage has its WGSL file and host module, each opening with a comment on its inputs,
  * outputs and invariants. (No GPU needed.)
  */
@@ -27,14 +27,33 @@ import {
   b2_pi,
 } from '../../src/common/b2Settings';
 import { b2Shape } from '../../src/collision/shapes/b2Shape';
-import { ENGINE_CONSTANTS, ENGINE_WGSL } from '../../src-gpu/engineWgsl';
-import { SHADERS } from '../../src-gpu/shaders';
+import { ENGINE_CONSTANTS, ENGINE_WGSL } from '../../src-gpu/device/engineWgsl';
+import { SHADERS } from '../../src-gpu/device/shaders';
 import { b2BodyFlags, b2BodyType, b2JointType, b2LimitState } from '../../src/common/b2Constants';
-import { JOINT_PARAMS_VEC4, JOINT_VEC4 } from '../../src-gpu/solveJoints';
-import * as layout from '../../src-gpu/layout';
+import { JOINT_PARAMS_VEC4, JOINT_VEC4 } from '../../src-gpu/solver/solveJoints';
+import * as layout from '../../src-gpu/device/layout';
 
 const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
-const wgsl = (name: string) => readFileSync(path.join(root, 'shaders', `${name}.wgsl`), 'utf8');
+
+/** The files under `dir` (a path from the root) whose names end with `ext`, as paths from the root. */
+function filesUnder(dir: string, ext: string): string[] {
+  const out: string[] = [];
+  for (const entry of readdirSync(path.join(root, dir), { withFileTypes: true })) {
+    const rel = path.join(dir, entry.name);
+    if (entry.isDirectory()) out.push(...filesUnder(rel, ext));
+    else if (entry.name.endsWith(ext)) out.push(rel);
+  }
+  return out;
+}
+
+/** The one file under `dir` named `name`. */
+function fileNamed(dir: string, name: string): string {
+  const found = filesUnder(dir, name).filter((f) => path.basename(f) === name);
+  expect(found, name).toHaveLength(1);
+  return readFileSync(path.join(root, found[0]), 'utf8');
+}
+
+const wgsl = (name: string) => fileNamed('shaders', `${name}.wgsl`);
 
 function constants(source: string): Map<string, number> {
   const out = new Map<string, number>();
@@ -181,8 +200,8 @@ it("gives every stage the engine's flags, types and 2.2.1's tolerances from the 
   // Every stage gets them, and the shader files leave them to the generated block.
   for (const stage of STAGES) expect(SHADERS[stage as keyof typeof SHADERS].startsWith(ENGINE_WGSL), stage).toBe(true);
   const again: string[] = [];
-  for (const file of readdirSync(path.join(root, 'shaders')).filter((f) => f.endsWith('.wgsl'))) {
-    for (const name of constants(readFileSync(path.join(root, 'shaders', file), 'utf8')).keys()) {
+  for (const file of filesUnder('shaders', '.wgsl')) {
+    for (const name of constants(readFileSync(path.join(root, file), 'utf8')).keys()) {
       if (declared.has(name)) again.push(`${file}: ${name}`);
     }
   }
@@ -192,8 +211,8 @@ it("gives every stage the engine's flags, types and 2.2.1's tolerances from the 
 it('gives a constant declared in several WGSL files one value (f32 constants as f32)', () => {
   const seen = new Map<string, { file: string; value: number }>();
   const clashes: string[] = [];
-  for (const file of readdirSync(path.join(root, 'shaders')).filter((f) => f.endsWith('.wgsl'))) {
-    const source = readFileSync(path.join(root, 'shaders', file), 'utf8');
+  for (const file of filesUnder('shaders', '.wgsl')) {
+    const source = readFileSync(path.join(root, file), 'utf8');
     for (const m of source.matchAll(/^const (\w+): (u32|f32) = (0x[0-9a-fA-F]+|[0-9.]+)u?;/gm)) {
       const [name, value] = [m[1], m[2] === 'f32' ? Math.fround(Number(m[3])) : Number(m[3])];
       const first = seen.get(name);
@@ -218,7 +237,7 @@ it('has one WGSL file and one host module per stage, each opening with what it r
     const shader = wgsl(stage);
     expect(shader.startsWith(`// ${stage}.wgsl: `), stage).toBe(true);
     expect(shader).toMatch(/\/\/ (In|Out):/);
-    const host = readFileSync(path.join(root, 'src-gpu', `${stage}.ts`), 'utf8');
+    const host = fileNamed('src-gpu', `${stage}.ts`);
     expect(host.startsWith('/*'), stage).toBe(true);
     expect(host.slice(0, 1500)).toMatch(/In:/);
   }
@@ -238,12 +257,13 @@ it('keeps the engine free of the GPU backend', () => {
 });
 
 it("imports from the engine only types and its two constant modules, so the GPU bundle carries no second engine", () => {
-  const allowed = new Set(['../src/common/b2Constants', '../src/common/b2Settings']);
+  const allowed = new Set(['src/common/b2Constants', 'src/common/b2Settings']);
   const offenders: string[] = [];
-  for (const file of readdirSync(path.join(root, 'src-gpu')).filter((f) => f.endsWith('.ts'))) {
-    const source = readFileSync(path.join(root, 'src-gpu', file), 'utf8');
-    for (const m of source.matchAll(/^import (type )?[^;]*? from '(\.\.\/src\/[^']+)';/gms)) {
-      if (m[1] === undefined && !allowed.has(m[2])) offenders.push(`${file}: ${m[2]}`);
+  for (const file of filesUnder('src-gpu', '.ts')) {
+    const source = readFileSync(path.join(root, file), 'utf8');
+    for (const m of source.matchAll(/^import (type )?[^;]*? from '(\.[^']+)';/gms)) {
+      const target = path.relative(root, path.resolve(root, path.dirname(file), m[2]));
+      if (target.startsWith('src/') && m[1] === undefined && !allowed.has(target)) offenders.push(`${file}: ${m[2]}`);
     }
   }
   expect(offenders).toEqual([]);

@@ -18,11 +18,11 @@ import { b2FixtureDef } from '../../src/dynamics/b2Fixture';
 import type { b2Contact } from '../../src/dynamics/contacts/b2Contact';
 import { b2World } from '../../src/dynamics/b2World';
 import { b2ContactListener } from '../../src/dynamics/b2WorldCallbacks';
-import { GpuBroadPhase } from '../../src-gpu/broadPhase';
-import { BIN, EVENT_BEGIN, EVENT_END } from '../../src-gpu/layout';
-import { GpuNarrowPhase } from '../../src-gpu/narrowPhase';
+import { GpuBroadPhase } from '../../src-gpu/broadphase/broadPhase';
+import { BIN, EVENT_BEGIN, EVENT_END } from '../../src-gpu/device/layout';
+import { GpuNarrowPhase } from '../../src-gpu/narrowphase/narrowPhase';
 import { GpuPipeline } from '../../src-gpu/pipeline';
-import { GpuWorld } from '../../src-gpu/world';
+import { GpuWorld } from '../../src-gpu/world/world';
 import { goldenSceneNames, loadGoldenScene } from '../support/scene';
 import { describeGpu, rng } from './support';
 

@@ -1,12 +1,12 @@
 import { expect, it } from 'vitest';
-import { GpuArray } from '../../src-gpu/buffers';
-import { Recorder } from '../../src-gpu/kernel';
-import { digitPasses, RadixSort } from '../../src-gpu/radixSort';
-import type { SortPass } from '../../src-gpu/radixSort';
-import { pairSortPasses } from '../../src-gpu/pairs';
-import { PrefixScan } from '../../src-gpu/scan';
-import { KEY_BITS, MAP_READ, SORT_TILE, STATE_WORDS, USAGE } from '../../src-gpu/layout';
-import type { GpuContext } from '../../src-gpu/device';
+import { GpuArray } from '../../src-gpu/device/buffers';
+import { Recorder } from '../../src-gpu/device/kernel';
+import { digitPasses, RadixSort } from '../../src-gpu/primitives/radixSort';
+import type { SortPass } from '../../src-gpu/primitives/radixSort';
+import { pairSortPasses } from '../../src-gpu/broadphase/pairs';
+import { PrefixScan } from '../../src-gpu/primitives/scan';
+import { KEY_BITS, MAP_READ, SORT_TILE, STATE_WORDS, USAGE } from '../../src-gpu/device/layout';
+import type { GpuContext } from '../../src-gpu/device/device';
 import { describeGpu, rng } from './support';
 
 async function read(ctx: GpuContext, buffer: GPUBuffer, bytes: number): Promise<Uint32Array> {

@@ -1,5 +1,5 @@
 /*
- * The GPU graph colouring (src-gpu/colour.ts) of joints and contacts together, on a pyramid of
+ * The GPU graph colouring (src-gpu/solver/colour.ts) of joints and contacts together, on a pyramid of
  * boxes, on a plate carrying more circles than there are colours, on a 10 x 10 joint grid with
  * contacts, on gear joints (four bodies) and on a hub holding more joints than there are colours:
  * every item (joint slot or solver contact) gets exactly one colour or the overflow set, no two
@@ -25,7 +25,7 @@ import type { b2DistanceJoint } from '../../src/dynamics/joints/b2DistanceJoint'
 import { b2GearJointDef } from '../../src/dynamics/joints/b2GearJoint';
 import { b2RevoluteJointDef } from '../../src/dynamics/joints/b2RevoluteJoint';
 import { b2World } from '../../src/dynamics/b2World';
-import { COLOUR_CAP } from '../../src-gpu/layout';
+import { COLOUR_CAP } from '../../src-gpu/device/layout';
 import { GpuStepper } from '../../src-gpu/stepper';
 import { describeGpu } from './support';
 

@@ -1,5 +1,5 @@
 /*
- * Islands and sleeping on the GPU (src-gpu/islands.ts, shaders/islands.wgsl) against the engine:
+ * Islands and sleeping on the GPU (src-gpu/solver/islands.ts, shaders/solver/islands.wgsl) against the engine:
  *   - the islands: for golden scenes at several steps, the GPU's connected components (labels per
  *     body slot) are the islands b2World::Solve's DFS builds from the same world (the engine's
  *     positions, its contacts updated by b2ContactManager::Collide as its next step would), as a
@@ -25,11 +25,11 @@ import { b2World } from '../../src/dynamics/b2World';
 import { b2RevoluteJointDef } from '../../src/dynamics/joints/b2RevoluteJoint';
 import type { b2Contact } from '../../src/dynamics/contacts/b2Contact';
 import type { b2Joint } from '../../src/dynamics/joints/b2Joint';
-import type { GpuContext } from '../../src-gpu/device';
-import { ISLAND_WORDS, MAP_READ, NO_ISLAND, USAGE } from '../../src-gpu/layout';
-import { SHADERS } from '../../src-gpu/shaders';
+import type { GpuContext } from '../../src-gpu/device/device';
+import { ISLAND_WORDS, MAP_READ, NO_ISLAND, USAGE } from '../../src-gpu/device/layout';
+import { SHADERS } from '../../src-gpu/device/shaders';
 import { GpuStepper } from '../../src-gpu/stepper';
-import type { GpuWorld } from '../../src-gpu/world';
+import type { GpuWorld } from '../../src-gpu/world/world';
 import { loadGoldenScene } from '../support/scene';
 import { describeGpu } from './support';
 

@@ -1,5 +1,5 @@
 /*
- * Revolute and distance joints on the GPU (src-gpu/solveJoints.ts) against the JavaScript engine:
+ * Revolute and distance joints on the GPU (src-gpu/solver/solveJoints.ts) against the JavaScript engine:
  * the same world built twice, one stepped by the engine, one by GpuStepper.
  *
  * Thresholds (float32 on the GPU, float64 in the engine; the GPU solves joints colour by colour,

@@ -51,8 +51,8 @@ import type { b2WeldJoint } from '../../src/dynamics/joints/b2WeldJoint';
 import { b2WheelJointDef } from '../../src/dynamics/joints/b2WheelJoint';
 import type { b2WheelJoint } from '../../src/dynamics/joints/b2WheelJoint';
 import type { b2DistanceJoint } from '../../src/dynamics/joints/b2DistanceJoint';
-import type { GpuContext } from '../../src-gpu/device';
-import { USAGE } from '../../src-gpu/layout';
+import type { GpuContext } from '../../src-gpu/device/device';
+import { USAGE } from '../../src-gpu/device/layout';
 import { GpuStepper } from '../../src-gpu/stepper';
 import { describeGpu } from './support';
 

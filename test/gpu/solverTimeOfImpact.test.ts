@@ -1,6 +1,6 @@
 /*
- * Continuous collision on the GPU (src-gpu/timeOfImpact.ts, swept and predicted AABBs in
- * src-gpu/bounds.ts): fast bodies stop at thin static walls where the engine without continuous
+ * Continuous collision on the GPU (src-gpu/solver/timeOfImpact.ts, swept and predicted AABBs in
+ * src-gpu/broadphase/bounds.ts): fast bodies stop at thin static walls where the engine without continuous
  * physics lets them through; the GPU's b2TimeOfImpact gives the engine's answer on hand-built
  * sweeps; the stage records nothing when continuous physics is off; runs repeat bit for bit.
  */
@@ -19,8 +19,8 @@ import type { b2Body } from '../../src/dynamics/b2Body';
 import type { b2Fixture } from '../../src/dynamics/b2Fixture';
 import { b2World } from '../../src/dynamics/b2World';
 import { GpuStepper } from '../../src-gpu/stepper';
-import { TimeOfImpactStage } from '../../src-gpu/timeOfImpact';
-import { GpuWorld } from '../../src-gpu/world';
+import { TimeOfImpactStage } from '../../src-gpu/solver/timeOfImpact';
+import { GpuWorld } from '../../src-gpu/world/world';
 import { describeGpu } from './support';
 
 const DT = 1 / 60;

@@ -5,8 +5,8 @@
  */
 
 import { describe } from 'vitest';
-import { GpuUnavailableError, requestGpu } from '../../src-gpu/device';
-import type { GpuContext } from '../../src-gpu/device';
+import { GpuUnavailableError, requestGpu } from '../../src-gpu/device/device';
+import type { GpuContext } from '../../src-gpu/device/device';
 
 let context: GpuContext | null = null;
 let reason = '';

@@ -5,11 +5,11 @@
  */
 
 import { expect, it } from 'vitest';
-import { GpuBroadPhase } from '../../src-gpu/broadPhase';
-import { requestGpu } from '../../src-gpu/device';
-import { MAX_STRIPS } from '../../src-gpu/layout';
-import { GpuProxySet } from '../../src-gpu/proxies';
-import type { RawProxies } from '../../src-gpu/proxies';
+import { GpuBroadPhase } from '../../src-gpu/broadphase/broadPhase';
+import { requestGpu } from '../../src-gpu/device/device';
+import { MAX_STRIPS } from '../../src-gpu/device/layout';
+import { GpuProxySet } from '../../src-gpu/broadphase/proxies';
+import type { RawProxies } from '../../src-gpu/broadphase/proxies';
 import { bruteForcePairs, expectSamePairs, sweepPairs } from './reference';
 import { describeGpu, rng } from './support';
 

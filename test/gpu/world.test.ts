@@ -18,10 +18,10 @@ import { b2Filter, b2FixtureDef } from '../../src/dynamics/b2Fixture';
 import { b2World } from '../../src/dynamics/b2World';
 import { b2ContactFilter } from '../../src/dynamics/b2WorldCallbacks';
 import { b2RevoluteJointDef } from '../../src/dynamics/joints/b2RevoluteJoint';
-import { GpuBroadPhase } from '../../src-gpu/broadPhase';
-import type { GpuContext } from '../../src-gpu/device';
-import { BODY_LIVE, MAP_READ, PROXY_JOINTED, PROXY_LIVE, USAGE } from '../../src-gpu/layout';
-import { GpuWorld } from '../../src-gpu/world';
+import { GpuBroadPhase } from '../../src-gpu/broadphase/broadPhase';
+import type { GpuContext } from '../../src-gpu/device/device';
+import { BODY_LIVE, MAP_READ, PROXY_JOINTED, PROXY_LIVE, USAGE } from '../../src-gpu/device/layout';
+import { GpuWorld } from '../../src-gpu/world/world';
 import { describeGpu } from './support';
 
 async function readBack(ctx: GpuContext, buffer: GPUBuffer, bytes: number): Promise<ArrayBuffer> {

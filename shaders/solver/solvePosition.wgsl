@@ -1,0 +1,193 @@
+// solvePosition.wgsl: GpuStage.Position, one position iteration over one colour: its contacts'
+// b2ContactSolver::SolvePositionConstraints (b2PositionSolverManifold, Baumgarte with
+// b2_linearSlop and b2_maxLinearCorrection), then its joints' b2*Joint::SolvePositionConstraints
+// (solveJointsCommon.wgsl); and 2.2.1's early exit as GPU work (`check`).
+//
+// In:  colour (the pass's colour, serial for the overflow set), solverState (SV_COLOUR_START,
+//      SV_JOINTS, SV_MIN_SEPARATION), colourKeys (items: joint slots below SV_JOINTS, then solver
+//      contacts), contactBodies, constraints (masses, radii, local geometry and centres, B's cell
+//      relative to A's), jointBodies, jointParams, jointConstraints, bodySweep (c, a after
+//      integratePositions.wgsl).
+// Out: `main`: bodySweep c, a of the dynamic bodies of the colour's items; the minimum
+//      separation of the iteration (atomicMin of sortable keys: order-independent);
+//      SV_JOINT_ERROR when a joint is not within b2_linearSlop / b2_angularSlop.
+//      `check` (one invocation, after each iteration's colours): unless SV_POSITION_DONE, counts
+//      the iteration in SV_POSITION_ITERATIONS; when the minimum separation is >= -3
+//      b2_linearSlop (2.2.1's contactsOkay) and no joint set SV_JOINT_ERROR (jointsOkay), sets
+//      SV_POSITION_DONE and zeroes the indirect sizes of every colour's position pass, so the
+//      remaining iterations dispatch no workgroups; resets the minimum to 0 (b2ContactSolver
+//      starts each iteration at 0) and SV_JOINT_ERROR. colour.wgsl's `offsets` restores the
+//      sizes each step.
+// Invariants: one writer per dynamic body per pass (the colouring); no read-back. 2.2.1 solves
+//      all of an island's contacts, then all its joints, per iteration; here each colour's
+//      contacts, then its joints (the same within a colour, whose items share no dynamic body;
+//      the overflow set runs its contacts, then its joints, in one invocation). The exit is
+//      global (all contacts and joints of the world), where 2.2.1 exits per island: at least as
+//      many iterations as 2.2.1 for every island.
+
+@group(0) @binding(0) var<uniform> colour: ColourParams;
+@group(0) @binding(1) var<storage, read_write> solverState: array<atomic<u32>>;
+@group(0) @binding(2) var<storage, read> colourKeys: array<vec2<u32>>;
+@group(0) @binding(3) var<storage, read> contactBodies: array<vec4<u32>>;
+@group(0) @binding(4) var<storage, read> constraints: array<vec4<f32>>;
+@group(0) @binding(5) var<storage, read_write> bodySweep: array<vec4<f32>>;
+@group(0) @binding(6) var<storage, read_write> solverIndirect: array<u32>;
+
+fn solve(k: u32) -> f32 {
+  let cb = contactBodies[k];
+  let base = CONSTRAINT_VEC4 * k;
+  let masses = constraints[base + 1u];
+  let mA = masses.x;
+  let iA = masses.y;
+  let mB = masses.z;
+  let iB = masses.w;
+  let radii = constraints[base + 6u].zw;
+  let lm = constraints[base + 9u];
+  let localPoints = constraints[base + 10u];
+  let centres = constraints[base + 11u];
+  let cellDelta = constraints[base + 12u].xy;
+  let count = (cb.z >> CB_MANIFOLD_POINTS_SHIFT) & 3u;
+  let kind = (cb.z >> CB_TYPE_SHIFT) & 3u;
+  let sweepA = bodySweep[2u * cb.x + 1u];
+  let sweepB = bodySweep[2u * cb.y + 1u];
+  var cA = sweepA.xy;
+  var aA = sweepA.z;
+  var cB = sweepB.xy + cellDelta;
+  var aB = sweepB.z;
+  var minSeparation = 0.0;
+  for (var j = 0u; j < count; j = j + 1u) {
+    let qA = rot(aA);
+    let qB = rot(aB);
+    let pA = cA - rotate(qA, centres.xy);
+    let pB = cB - rotate(qB, centres.zw);
+    // b2PositionSolverManifold::Initialize.
+    var normal: vec2<f32>;
+    var point: vec2<f32>;
+    var separation: f32;
+    if (kind == E_CIRCLES) {
+      let pointA = pA + rotate(qA, lm.zw);
+      let pointB = pB + rotate(qB, localPoints.xy);
+      normal = normalize2(pointB - pointA);
+      point = 0.5 * (pointA + pointB);
+      separation = dot(pointB - pointA, normal) - radii.x - radii.y;
+    } else if (kind == E_FACE_A) {
+      normal = rotate(qA, lm.xy);
+      let planePoint = pA + rotate(qA, lm.zw);
+      let clipPoint = pB + rotate(qB, select(localPoints.zw, localPoints.xy, j == 0u));
+      separation = dot(clipPoint - planePoint, normal) - radii.x - radii.y;
+      point = clipPoint;
+    } else {
+      normal = rotate(qB, lm.xy);
+      let planePoint = pB + rotate(qB, lm.zw);
+      let clipPoint = pA + rotate(qA, select(localPoints.zw, localPoints.xy, j == 0u));
+      separation = dot(clipPoint - planePoint, normal) - radii.x - radii.y;
+      point = clipPoint;
+      normal = -normal;
+    }
+    let rA = point - cA;
+    let rB = point - cB;
+    minSeparation = min(minSeparation, separation);
+    let C = clamp(BAUMGARTE * (separation + LINEAR_SLOP), -MAX_LINEAR_CORRECTION, 0.0);
+    let rnA = cross2(rA, normal);
+    let rnB = cross2(rB, normal);
+    let K = mA + mB + iA * rnA * rnA + iB * rnB * rnB;
+    let impulse = select(0.0, -C / K, K > 0.0);
+    let P = impulse * normal;
+    cA = cA - mA * P;
+    aA = aA - iA * cross2(rA, P);
+    cB = cB + mB * P;
+    aB = aB + iB * cross2(rB, P);
+  }
+  if ((cb.z & CB_DYNAMIC_A) != 0u) {
+    bodySweep[2u * cb.x + 1u] = vec4<f32>(cA, aA, sweepA.w);
+  }
+  if ((cb.z & CB_DYNAMIC_B) != 0u) {
+    bodySweep[2u * cb.y + 1u] = vec4<f32>(cB - cellDelta, aB, sweepB.w);
+  }
+  return minSeparation;
+}
+
+// One joint's position iteration; false when it is not within its slop.
+fn solve_joint(j: u32) -> bool {
+  let list = jointBodies[2u * j];
+  let info = jointBodies[2u * j + 1u];
+  if (info.z == 0u) {
+    return true;
+  }
+  var motion = Motion();
+  for (var i = 0u; i < 4u; i = i + 1u) {
+    if (list[i] != NO_BODY) {
+      motion[i] = bodySweep[2u * list[i] + 1u];
+    }
+  }
+  let okay = joint_position(j, info.x, info.w, &motion);
+  for (var i = 0u; i < 4u; i = i + 1u) {
+    if ((info.y & (1u << i)) != 0u) {
+      bodySweep[2u * list[i] + 1u] = motion[i];
+    }
+  }
+  return okay;
+}
+
+@compute @workgroup_size(256)
+fn main(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: vec3<u32>,
+        @builtin(local_invocation_index) lid: u32) {
+  let start = atomicLoad(&solverState[SV_COLOUR_START + colour.colour]);
+  let end = atomicLoad(&solverState[SV_COLOUR_START + colour.colour + 1u]);
+  let joints = atomicLoad(&solverState[SV_JOINTS]);
+  let t = group_index(wid, nwg) * WORKGROUP_SIZE + lid;
+  var minSeparation = 0.0;
+  var jointsOkay = true;
+  if (colour.serial != 0u) {
+    if (t != 0u) {
+      return;
+    }
+    // Joints sort first (lower items): the contacts' entries, then the joints'.
+    var firstContact = start;
+    while (firstContact < end && colourKeys[firstContact].y < joints) {
+      firstContact = firstContact + 1u;
+    }
+    for (var e = firstContact; e < end; e = e + 1u) {
+      minSeparation = min(minSeparation, solve(colourKeys[e].y - joints));
+    }
+    for (var e = start; e < firstContact; e = e + 1u) {
+      jointsOkay = solve_joint(colourKeys[e].y) && jointsOkay;
+    }
+  } else {
+    if (start + t >= end) {
+      return;
+    }
+    let item = colourKeys[start + t].y;
+    if (item < joints) {
+      jointsOkay = solve_joint(item);
+    } else {
+      minSeparation = solve(item - joints);
+    }
+  }
+  if (minSeparation < 0.0) {
+    atomicMin(&solverState[SV_MIN_SEPARATION], sortable_key(minSeparation));
+  }
+  if (!jointsOkay) {
+    atomicStore(&solverState[SV_JOINT_ERROR], 1u);
+  }
+}
+
+@compute @workgroup_size(1)
+fn check() {
+  if (atomicLoad(&solverState[SV_POSITION_DONE]) != 0u) {
+    return;
+  }
+  atomicAdd(&solverState[SV_POSITION_ITERATIONS], 1u);
+  let minSeparation = atomicLoad(&solverState[SV_MIN_SEPARATION]);
+  let jointsOkay = atomicLoad(&solverState[SV_JOINT_ERROR]) == 0u;
+  atomicStore(&solverState[SV_MIN_SEPARATION], sortable_key(0.0));
+  atomicStore(&solverState[SV_JOINT_ERROR], 0u);
+  if (minSeparation >= sortable_key(-3.0 * LINEAR_SLOP) && jointsOkay) {
+    atomicStore(&solverState[SV_POSITION_DONE], 1u);
+    for (var c = 0u; c <= COLOUR_CAP; c = c + 1u) {
+      solverIndirect[SV_ARGS_POSITION + 3u * c] = 0u;
+      solverIndirect[SV_ARGS_POSITION + 3u * c + 1u] = 1u;
+      solverIndirect[SV_ARGS_POSITION + 3u * c + 2u] = 1u;
+    }
+  }
+}

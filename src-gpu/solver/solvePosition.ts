@@ -1,0 +1,56 @@
+/*
+ * GpuStage.Position, the position iterations (shaders/solver/solvePosition.wgsl): per iteration one pass per
+ * colour (the overflow set last, in one invocation), each solving its contacts
+ * (b2ContactSolver::SolvePositionConstraints) and its joints (b2*Joint::SolvePositionConstraints)
+ * in parallel (the overflow set: its contacts, then its joints, as 2.2.1 orders an island's), then
+ * `check`: 2.2.1's early exit (minimum separation >= -3 b2_linearSlop and every joint within its
+ * slop) zeroes the position passes' indirect sizes, so later iterations dispatch no workgroups.
+ * No read-back.
+ *
+ * In:  the colour lists (colour.ts; SV_ARGS.POSITION sizes), contactBodies, constraints,
+ *      jointBodies, jointParams, jointConstraints, bodySweep (after integratePositions.ts).
+ * Out: bodySweep c, a of the dynamic bodies; SV.POSITION_ITERATIONS (iterations that ran),
+ *      SV.POSITION_DONE.
+ */
+
+import type { GpuContext } from '../device/device';
+import { Kernel } from '../device/kernel';
+import type { Recorder } from '../device/kernel';
+import { COLOUR_CAP, SV_ARGS } from '../device/layout';
+import type { ColourPassInputs } from './warmStart';
+
+export class SolvePositionStage {
+  private readonly kernel: Kernel;
+  /** Per colour (and the overflow set): this step's bind group. */
+  private readonly groups: GPUBindGroup[] = [];
+  private readonly check: Kernel;
+
+  constructor(ctx: GpuContext) {
+    this.kernel = new Kernel(ctx, 'solvePosition', 'main');
+    this.check = new Kernel(ctx, 'solvePosition', 'check');
+  }
+
+  encode(rec: Recorder, io: ColourPassInputs, bodySweep: GPUBuffer, iterations: number): void {
+    const check = this.check.bind({ 1: io.solverState, 6: io.solverIndirect });
+    // The colours' bind groups once, for every iteration.
+    for (let c = 0; c <= COLOUR_CAP; ++c) {
+      this.groups[c] = this.kernel.bind({
+        0: io.colours[c].buffer,
+        1: io.solverState,
+        2: io.colourKeys,
+        3: io.contactBodies,
+        4: io.constraints,
+        5: bodySweep,
+        10: io.jointBodies,
+        11: io.jointParams,
+        12: io.jointConstraints,
+      });
+    }
+    for (let it = 0; it < iterations; ++it) {
+      for (let c = 0; c <= COLOUR_CAP; ++c) {
+        rec.dispatchIndirect(this.kernel, this.groups[c], io.solverIndirect, (SV_ARGS.POSITION + 3 * c) * 4);
+      }
+      rec.dispatch(this.check, check, 1);
+    }
+  }
+}

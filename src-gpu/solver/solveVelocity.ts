@@ -1,0 +1,51 @@
+/*
+ * GpuStage.Velocity, the velocity iterations (shaders/solver/solveVelocity.wgsl): per iteration one pass per
+ * colour (the overflow set last, in one invocation), each solving its joints
+ * (b2*Joint::SolveVelocityConstraints) and its contacts (b2ContactSolver::
+ * SolveVelocityConstraints: friction, then the normal impulses, the two-point block solver
+ * included) in parallel; the overflow set solves its joints, then its contacts.
+ *
+ * In:  the colour lists (colour.ts), contactBodies, constraints, jointBodies, jointParams,
+ *      jointConstraints, bodyVel.
+ * Out: bodyVel of the dynamic bodies; the accumulated impulses in constraints and
+ *      jointConstraints.
+ */
+
+import type { GpuContext } from '../device/device';
+import { Kernel } from '../device/kernel';
+import type { Recorder } from '../device/kernel';
+import { COLOUR_CAP, SV_ARGS } from '../device/layout';
+import type { ColourPassInputs } from './warmStart';
+
+export class SolveVelocityStage {
+  private readonly kernel: Kernel;
+  /** Per colour (and the overflow set): this step's bind group. */
+  private readonly groups: GPUBindGroup[] = [];
+
+  constructor(ctx: GpuContext) {
+    this.kernel = new Kernel(ctx, 'solveVelocity', 'main');
+  }
+
+  encode(rec: Recorder, io: ColourPassInputs, bodyVel: GPUBuffer, iterations: number): void {
+    // The colours' bind groups once, for every iteration.
+    for (let c = 0; c <= COLOUR_CAP; ++c) {
+      this.groups[c] = this.kernel.bind({
+        0: io.colours[c].buffer,
+        1: io.solverState,
+        2: io.colourKeys,
+        3: io.contactBodies,
+        4: io.constraints,
+        5: bodyVel,
+        9: io.params,
+        10: io.jointBodies,
+        11: io.jointParams,
+        12: io.jointConstraints,
+      });
+    }
+    for (let it = 0; it < iterations; ++it) {
+      for (let c = 0; c <= COLOUR_CAP; ++c) {
+        rec.dispatchIndirect(this.kernel, this.groups[c], io.solverIndirect, (SV_ARGS.COLOURS + 3 * c) * 4);
+      }
+    }
+  }
+}

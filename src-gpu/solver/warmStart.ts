@@ -1,0 +1,56 @@
+/*
+ * Warm start (in GpuStage.Velocity) (shaders/solver/warmStart.wgsl): b2ContactSolver::WarmStart and the joints'
+ * warm start (b2*Joint::InitVelocityConstraints), one pass per colour over its joints and
+ * contacts (the overflow set last, in one invocation).
+ *
+ * In:  the colour lists (colour.ts: colourKeys, SV.COLOUR_START, SV_ARGS.COLOURS), contactBodies,
+ *      constraints (impulses already scaled by dtRatio), jointBodies, jointConstraints
+ *      (solveJoints.ts), bodyVel.
+ * Out: bodyVel of the dynamic bodies.
+ */
+
+import type { GpuContext } from '../device/device';
+import { Kernel } from '../device/kernel';
+import type { Recorder, Uniform } from '../device/kernel';
+import { COLOUR_CAP, SV_ARGS } from '../device/layout';
+
+export interface ColourPassInputs {
+  solverState: GPUBuffer;
+  solverIndirect: GPUBuffer;
+  colourKeys: GPUBuffer;
+  contactBodies: GPUBuffer;
+  constraints: GPUBuffer;
+  /** The solver's parameters (SolverParams). */
+  params: GPUBuffer;
+  /** solveJoints.ts: per joint slot, bodies and flags, and the solver records. */
+  jointBodies: GPUBuffer;
+  jointConstraints: GPUBuffer;
+  /** The mirror's jointParams (motor speeds, limits, forces as set this step). */
+  jointParams: GPUBuffer;
+  /** One uniform per colour (ColourParams), COLOUR_CAP + 1 of them. */
+  colours: Uniform[];
+}
+
+export class WarmStartStage {
+  private readonly kernel: Kernel;
+
+  constructor(ctx: GpuContext) {
+    this.kernel = new Kernel(ctx, 'warmStart', 'main');
+  }
+
+  encode(rec: Recorder, io: ColourPassInputs, bodyVel: GPUBuffer): void {
+    for (let c = 0; c <= COLOUR_CAP; ++c) {
+      const group = this.kernel.bind({
+        0: io.colours[c].buffer,
+        1: io.solverState,
+        2: io.colourKeys,
+        3: io.contactBodies,
+        4: io.constraints,
+        5: bodyVel,
+        10: io.jointBodies,
+        12: io.jointConstraints,
+      });
+      rec.dispatchIndirect(this.kernel, group, io.solverIndirect, (SV_ARGS.COLOURS + 3 * c) * 4);
+    }
+  }
+}

@@ -1,0 +1,1111 @@
+/*
+ * The world on the GPU: a b2World built with the normal API, mirrored into the structure-of-arrays
+ * buffers described in src-gpu/device/layout.ts.
+ *
+ * GpuWorld reads the engine only through its public fields (m_bodyList, m_fixtureList,
+ * m_jointList, m_xf, m_sweep...) and imports from src/ only types and the leaf module of flags
+ * and type numbers (src/common/b2Constants.ts), so the engine knows nothing of it and a bundle of
+ * src-gpu carries no second copy of the engine.
+ *
+ * sync() walks the world and brings the GPU buffers up to date:
+ * - Slots. Each body, fixture, proxy (fixture child) and joint gets a slot, lowest free first, kept
+ *   for as long as the object lives; a destroyed object's slot is marked dead and is handed to
+ *   the next new object. bodySlot()/bodyAt(), fixtureSlot()/fixtureAt(), proxySlot()/proxyAt()
+ *   and jointSlot()/jointAt() are the mapping both ways. A body made inactive keeps its body and
+ *   fixture slots and loses its proxy slots, as b2Body::SetActive destroys its proxies.
+ * - Incremental uploads. Every record is packed and compared with a CPU shadow copy of the GPU
+ *   buffer (MirrorTable, src-gpu/device/buffers.ts); only records that changed are uploaded, merged into
+ *   contiguous ranges. The comparison costs one pass over the packed data; it needs no hooks in the
+ *   engine and cannot miss a change (a filter or friction set directly, a force). One exception:
+ *   a shape's vertices are packed when its fixture is new and not compared afterwards (reading
+ *   every shape each step was half of a sync's time, and Box2D itself does not expect a fixture's
+ *   shape to change): after editing a shape in place, call invalidateShape(fixture).
+ * - Growth. Tables double their capacity when slots run out; the shape pool (variable-length
+ *   shape data) reuses freed ranges of the same size and is compacted when more than half of it is
+ *   holes.
+ * - Precision. Positions are stored as an integer cell and a float32 offset in it (layout.ts), so a
+ *   body at x = 5000 m keeps its position to about 1e-6 m.
+ *
+ * The mirror goes one way, JavaScript to GPU, until the GPU steps the world (GpuStepper):
+ * then `gpuOwnsMotion` is set and the GPU's copy of the body motion (bodyXf, bodyCell, bodySweep,
+ * bodyVel) and of the joints' warm-start state (jointState) is the authority: sync() uploads them
+ * only for bodies and joints new to the mirror (a reused slot included), and uploads exactly the
+ * changed records of those tables. Everything else (mass, forces, damping, flags, fixtures, joint
+ * parameters) is still mirrored from the world.
+ * The awake flag (bodyAwake) is GPU-owned in the same way, with one more rule: the GPU wakes and
+ * puts bodies to sleep (islands.ts) and GpuStepper's pulls (pullBody, pullAll: a body fetching the
+ * last read-back) write e_awakeFlag and m_sleepTime back, and the flag into bodyAwake's shadow;
+ * sync() looks at the awake flag of the bodies that fetched the last read-back only, and uploads
+ * it when the world's e_awakeFlag differs from the value last uploaded or read back (SetAwake, or ApplyForce / SetLinearVelocity waking a body,
+ * after a read-back that showed it asleep), for a body new to the mirror, and for every body when
+ * b2World::m_allowSleep was turned off (SetAllowSleeping(false) wakes them all). sleepTime (word 7
+ * of bodySweep) is never uploaded after that: the GPU keeps 2.2.1's rule that a sleeping body has
+ * zero velocity and sleep time, so a body put to sleep or woken from JavaScript gets them there.
+ * A flag that only changed on the GPU since the last read-back is not seen: read back first.
+ * Custom contact filters (b2ContactFilter subclasses) cannot run on the GPU:
+ * `usesCustomContactFilter` says when the world has one, and the GPU pair set then follows the
+ * default filter rules.
+ */
+
+import type { b2Body } from '../../src/dynamics/b2Body';
+import type { b2Fixture } from '../../src/dynamics/b2Fixture';
+import type { b2World } from '../../src/dynamics/b2World';
+import type { b2Joint } from '../../src/dynamics/joints/b2Joint';
+import type { b2RevoluteJoint } from '../../src/dynamics/joints/b2RevoluteJoint';
+import type { b2DistanceJoint } from '../../src/dynamics/joints/b2DistanceJoint';
+import type { b2PrismaticJoint } from '../../src/dynamics/joints/b2PrismaticJoint';
+import type { b2PulleyJoint } from '../../src/dynamics/joints/b2PulleyJoint';
+import type { b2MouseJoint } from '../../src/dynamics/joints/b2MouseJoint';
+import type { b2GearJoint } from '../../src/dynamics/joints/b2GearJoint';
+import type { b2WheelJoint } from '../../src/dynamics/joints/b2WheelJoint';
+import type { b2WeldJoint } from '../../src/dynamics/joints/b2WeldJoint';
+import type { b2FrictionJoint } from '../../src/dynamics/joints/b2FrictionJoint';
+import type { b2RopeJoint } from '../../src/dynamics/joints/b2RopeJoint';
+import type { b2CircleShape } from '../../src/collision/shapes/b2CircleShape';
+import type { b2EdgeShape } from '../../src/collision/shapes/b2EdgeShape';
+import type { b2PolygonShape } from '../../src/collision/shapes/b2PolygonShape';
+import type { b2ChainShape } from '../../src/collision/shapes/b2ChainShape';
+import { b2BodyFlags, b2JointType, b2ShapeType } from '../../src/common/b2Constants';
+import type { GpuContext } from '../device/device';
+import { MirrorTable } from '../device/buffers';
+import type { UploadStats } from '../device/buffers';
+import {
+  BODY_LIVE,
+  DEFAULT_CELL_SIZE,
+  JOINT_LIVE,
+  PROXY_JOINTED,
+  PROXY_LIVE,
+  PROXY_SENSOR,
+  SHAPE_HAS_VERTEX0,
+  SHAPE_HAS_VERTEX3,
+  SHAPE_SENSOR,
+} from '../device/layout';
+
+const { e_circle, e_edge, e_polygon } = b2ShapeType;
+const { e_awakeFlag } = b2BodyFlags;
+/** Four words into a scratch record at `at` (no array literal: sync() allocates nothing per joint). */
+function put4(record: Float32Array, at: number, a: number, b: number, c: number, d: number): void {
+  record[at] = a;
+  record[at + 1] = b;
+  record[at + 2] = c;
+  record[at + 3] = d;
+}
+
+/** `array`, or a copy of it with its length doubled until `index` fits (new elements `fill`). */
+function withRoom<T extends Int32Array | Uint32Array>(array: T, index: number, fill = 0): T {
+  if (index < array.length) return array;
+  let size = array.length;
+  while (size <= index) size *= 2;
+  const grown = new (array.constructor as new (length: number) => T)(size);
+  if (fill !== 0) grown.fill(fill, array.length);
+  grown.set(array);
+  return grown;
+}
+
+/**
+ * What the API changed since the last sync: the world's b2ChangeListener while a GpuWorld mirrors
+ * it (structurally one: src-gpu imports no engine class).
+ */
+class ChangeLog {
+  /** A body, fixture or joint came or went (or this is the first sync): walk everything. */
+  structure = true;
+  /** Bodies set through the API, true when their motion was set. */
+  readonly bodies = new Map<b2Body, boolean>();
+  readonly fixtures = new Set<b2Fixture>();
+
+  BodyChanged(body: b2Body, motion: boolean): void {
+    if (motion) this.bodies.set(body, true);
+    else if (!this.bodies.has(body)) this.bodies.set(body, false);
+  }
+
+  FixtureChanged(fixture: b2Fixture): void {
+    this.fixtures.add(fixture);
+  }
+
+  StructureChanged(): void {
+    this.structure = true;
+  }
+
+  reset(): void {
+    this.structure = false;
+    this.bodies.clear();
+    this.fixtures.clear();
+  }
+}
+
+/** Slots handed out lowest free first; `gen` marks the slots seen by the current sync. */
+class SlotAllocator<T> {
+  readonly items: (T | null)[] = [];
+  readonly slotOf = new Map<T, number>();
+  gen = new Uint32Array(64);
+  /** Free slots below `highWater`, in descending order (pop() gives the lowest). */
+  private free: number[] = [];
+  highWater = 0;
+  live = 0;
+
+  /** Whether the last acquire() created the slot. */
+  created = false;
+
+  /**
+   * The item's slot (a new one, lowest free first, when it has none); marks it seen. `hint`, the
+   * slot the item had at the same place of the previous walk, skips the map lookup when it holds.
+   */
+  acquire(item: T, generation: number, hint = -1): number {
+    if (hint >= 0 && hint < this.highWater && this.items[hint] === item) {
+      this.created = false;
+      this.mark(hint, generation);
+      return hint;
+    }
+    let slot = this.slotOf.get(item);
+    this.created = slot === undefined;
+    if (slot === undefined) {
+      slot = this.alloc();
+      this.slotOf.set(item, slot);
+      this.items[slot] = item;
+    }
+    this.mark(slot, generation);
+    return slot;
+  }
+
+  /** A free slot, lowest first (for items tracked by the caller, not by slotOf). */
+  alloc(): number {
+    const slot = this.free.length > 0 ? this.free.pop()! : this.highWater++;
+    this.live++;
+    return slot;
+  }
+
+  /** Marks `slot` as seen in `generation`. */
+  mark(slot: number, generation: number): void {
+    this.gen = withRoom(this.gen, slot);
+    this.gen[slot] = generation;
+  }
+
+  /** Releases every slot not seen in `generation`; calls `onRelease(slot, item)` for each. */
+  sweep(generation: number, onRelease: (slot: number, item: T) => void): number {
+    let released = 0;
+    for (let slot = 0; slot < this.highWater; ++slot) {
+      const item = this.items[slot];
+      if (item !== null && item !== undefined && this.gen[slot] !== generation) {
+        this.items[slot] = null;
+        this.slotOf.delete(item);
+        this.free.push(slot);
+        this.live--;
+        released++;
+        onRelease(slot, item);
+      }
+    }
+    if (released > 0) {
+      this.free.sort((a, b) => b - a);
+      while (this.free.length > 0 && this.free[0] === this.highWater - 1) {
+        this.free.shift();
+        this.highWater--;
+      }
+    }
+    return released;
+  }
+}
+
+/** Ranges of the shape pool, reused by size; compacted by rebuilding. */
+class PoolAllocator {
+  top = 0;
+  live = 0;
+  private readonly freeBySize = new Map<number, number[]>();
+
+  alloc(size: number): number {
+    this.live += size;
+    const list = this.freeBySize.get(size);
+    if (list && list.length > 0) return list.pop()!;
+    const offset = this.top;
+    this.top += size;
+    return offset;
+  }
+
+  free(offset: number, size: number): void {
+    this.live -= size;
+    let list = this.freeBySize.get(size);
+    if (!list) this.freeBySize.set(size, (list = []));
+    list.push(offset);
+  }
+
+  reset(): void {
+    this.top = 0;
+    this.live = 0;
+    this.freeBySize.clear();
+  }
+
+  get fragmented(): boolean {
+    return this.top > 2 * this.live + 4096;
+  }
+}
+
+export interface GpuWorldOptions {
+  /** Cell size in metres, a power of two (default 32). */
+  cellSize?: number;
+  /** The world origin: AABBs are computed relative to the cell nearest to it (default 0, 0). */
+  origin?: { x: number; y: number };
+}
+
+export interface SyncStats {
+  /** Uploads of this sync, all tables together. */
+  upload: UploadStats;
+  bodies: { live: number; created: number; released: number };
+  fixtures: { live: number; created: number; released: number };
+  proxies: { live: number; created: number; released: number };
+  joints: { live: number; created: number; released: number };
+}
+
+function shapeSize(f: b2Fixture): number {
+  const shape = f.m_shape;
+  switch (shape.m_type) {
+    case e_circle:
+      return 1;
+    case e_edge:
+      return 4;
+    case e_polygon:
+      return 2 * (shape as b2PolygonShape).m_vertexCount + 1;
+    default:
+      return (shape as b2ChainShape).m_count + 2;
+  }
+}
+
+function isCustomContactFilter(filter: object | null): boolean {
+  if (filter === null) return false;
+  if (Object.prototype.hasOwnProperty.call(filter, 'ShouldCollide')) return true;
+  // The deepest prototype defining ShouldCollide is b2ContactFilter.prototype; a subclass that
+  // overrides it shows a different function.
+  let base: unknown = undefined;
+  for (let p = Object.getPrototypeOf(filter); p && p !== Object.prototype; p = Object.getPrototypeOf(p)) {
+    if (Object.prototype.hasOwnProperty.call(p, 'ShouldCollide')) base = (p as { ShouldCollide: unknown }).ShouldCollide;
+  }
+  return (filter as { ShouldCollide?: unknown }).ShouldCollide !== base;
+}
+
+export class GpuWorld {
+  readonly ctx: GpuContext;
+  readonly world: b2World;
+  readonly cellSize: number;
+  /** The world origin cell: AABBs are relative to originCell * cellSize. */
+  readonly originCell: [number, number];
+
+  // Body tables (layout.ts).
+  readonly bodyXf: MirrorTable;
+  readonly bodyCell: MirrorTable;
+  readonly bodySweep: MirrorTable;
+  readonly bodyVel: MirrorTable;
+  readonly bodyForce: MirrorTable;
+  readonly bodyMass: MirrorTable;
+  readonly bodyParams: MirrorTable;
+  readonly bodyFlags: MirrorTable;
+  /** Per body slot: 1 awake, 0 asleep; GPU-owned once the GPU steps (see the header). */
+  readonly bodyAwake: MirrorTable;
+  readonly jointRange: MirrorTable;
+  readonly jointList: MirrorTable;
+  readonly joints: MirrorTable;
+  /** Per joint slot (layout.ts): anchors and the type's parameters, every type. */
+  readonly jointParams: MirrorTable;
+  /** Per joint slot: the accumulated impulses and limit state (GPU-owned once the GPU steps). */
+  readonly jointState: MirrorTable;
+  // Fixture tables.
+  readonly fixtureShape: MirrorTable;
+  readonly fixtureMaterial: MirrorTable;
+  readonly shapePool: MirrorTable;
+  // Proxy tables.
+  readonly proxyRef: MirrorTable;
+  readonly proxyFilter: MirrorTable;
+  /**
+   * Per proxy slot (layout.ts): the engine's broad-phase proxy id (b2FixtureProxy.proxyId, which
+   * orders same-type contacts as b2BroadPhase::QueryCallback does) and the slot's generation
+   * (changes whenever the slot is handed to a new proxy, so a contact key names one proxy pair).
+   */
+  readonly proxyKey: MirrorTable;
+
+  private ownsMotion = false;
+  /** The world's change listener while this mirror is its latest one. */
+  private readonly changes = new ChangeLog();
+  /** b2World::m_allowSleep at the last sync, and whether this sync saw it turned off. */
+  private allowSleep = true;
+  private wakeAll = false;
+  /** The tables the GPU writes once it steps (gpuOwnsMotion). */
+  private readonly gpuWrittenTables: MirrorTable[];
+
+  /** The world has a contact filter other than the default; the GPU applies the default rules. */
+  usesCustomContactFilter = false;
+
+  private readonly bodySlots = new SlotAllocator<b2Body>();
+  private readonly fixtureSlots = new SlotAllocator<b2Fixture>();
+  private readonly jointSlots = new SlotAllocator<b2Joint>();
+  /** Proxy slots; items[slot] is the owning fixture slot (proxies are found by fixture slot). */
+  private readonly proxySlots = new SlotAllocator<number>();
+  private readonly proxyFixture: (b2Fixture | null)[] = [];
+  private readonly proxyChild: number[] = [];
+  /** Generation of each proxy slot (proxyKey.y). */
+  private proxyGeneration = new Uint32Array(64);
+  /**
+   * The proxy slots of each fixture slot: child 0's (-1 for none), and the other children's for
+   * the fixtures that have more (chains). A typed array rather than an array a fixture: a world of
+   * a million single-child fixtures then makes no million small objects to collect.
+   */
+  private fixtureProxy0 = new Int32Array(64).fill(-1);
+  private readonly fixtureProxyRest = new Map<number, number[]>();
+  /** Body slots in body-list order (sync's walk). */
+  private walkSlots = new Int32Array(64);
+  private walkCount = 0;
+  /** The fixture slots in walk order, as hints for the next sync. */
+  private fixtureWalk = new Int32Array(64);
+  /** Slots whose uploaded force or torque may be non-zero (every such slot is listed): clearForces() zeroes them. */
+  private forcedSlots = new Int32Array(64);
+  private forcedCount = 0;
+  private fixtureWalkCount = 0;
+  private readonly pool = new PoolAllocator();
+  private fixturePoolOffset: number[] = [];
+  private fixturePoolSize: number[] = [];
+  /** Per fixture slot: the shape record's type | ghost flags << 4 | count << 8, and the radius. */
+  private fixtureShapeWord: number[] = [];
+  private fixtureRadius: number[] = [];
+  private readonly staleShapes = new Set<b2Fixture>();
+  private generation = 0;
+  private jointCount: Int32Array = new Int32Array(64);
+  private readonly allTables: MirrorTable[];
+
+  constructor(ctx: GpuContext, world: b2World, options: GpuWorldOptions = {}) {
+    this.ctx = ctx;
+    this.world = world;
+    const cellSize = options.cellSize ?? DEFAULT_CELL_SIZE;
+    if (!(cellSize > 0) || Math.log2(cellSize) % 1 !== 0) throw new RangeError(`cellSize must be a power of two, got ${cellSize}`);
+    this.cellSize = cellSize;
+    const origin = options.origin ?? { x: 0, y: 0 };
+    this.originCell = [Math.round(origin.x / cellSize), Math.round(origin.y / cellSize)];
+
+    this.bodyXf = new MirrorTable(ctx, 'bodyXf', 4);
+    this.bodyCell = new MirrorTable(ctx, 'bodyCell', 2);
+    this.bodySweep = new MirrorTable(ctx, 'bodySweep', 8);
+    this.bodyVel = new MirrorTable(ctx, 'bodyVel', 4);
+    this.bodyForce = new MirrorTable(ctx, 'bodyForce', 4);
+    this.bodyMass = new MirrorTable(ctx, 'bodyMass', 4);
+    this.bodyParams = new MirrorTable(ctx, 'bodyParams', 4);
+    this.bodyFlags = new MirrorTable(ctx, 'bodyFlags', 1);
+    this.bodyAwake = new MirrorTable(ctx, 'bodyAwake', 1);
+    this.jointRange = new MirrorTable(ctx, 'jointRange', 2);
+    this.jointList = new MirrorTable(ctx, 'jointList', 1);
+    this.joints = new MirrorTable(ctx, 'joints', 4);
+    this.jointParams = new MirrorTable(ctx, 'jointParams', 20);
+    this.jointState = new MirrorTable(ctx, 'jointState', 8);
+    this.fixtureShape = new MirrorTable(ctx, 'fixtureShape', 4);
+    this.fixtureMaterial = new MirrorTable(ctx, 'fixtureMaterial', 4);
+    this.shapePool = new MirrorTable(ctx, 'shapePool', 2, 256);
+    this.proxyRef = new MirrorTable(ctx, 'proxyRef', 4);
+    this.proxyFilter = new MirrorTable(ctx, 'proxyFilter', 2);
+    this.proxyKey = new MirrorTable(ctx, 'proxyKey', 2);
+    this.gpuWrittenTables = [this.bodyXf, this.bodyCell, this.bodySweep, this.bodyVel, this.bodyAwake, this.jointState];
+    this.allTables = [
+      this.bodyXf,
+      this.bodyCell,
+      this.bodySweep,
+      this.bodyVel,
+      this.bodyForce,
+      this.bodyMass,
+      this.bodyParams,
+      this.bodyFlags,
+      this.bodyAwake,
+      this.jointRange,
+      this.jointList,
+      this.joints,
+      this.jointParams,
+      this.jointState,
+      this.fixtureShape,
+      this.fixtureMaterial,
+      this.shapePool,
+      this.proxyRef,
+      this.proxyFilter,
+      this.proxyKey,
+    ];
+    world.SetChangeListener(this.changes);
+  }
+
+  /**
+   * Whether the GPU's body motion (bodyXf, bodyCell, bodySweep, bodyVel) and joint state are the
+   * authority: sync() then writes those records only for bodies and joints new to the mirror. Set
+   * once the GPU steps the world.
+   */
+  get gpuOwnsMotion(): boolean {
+    return this.ownsMotion;
+  }
+  set gpuOwnsMotion(value: boolean) {
+    if (value === this.ownsMotion) return;
+    this.ownsMotion = value;
+    for (const table of this.gpuWrittenTables) table.exactUploads = value;
+  }
+
+  // ---- The mapping between engine objects and GPU indices ----
+
+  bodySlot(body: b2Body): number {
+    return this.bodySlots.slotOf.get(body) ?? -1;
+  }
+  bodyAt(slot: number): b2Body | null {
+    return this.bodySlots.items[slot] ?? null;
+  }
+  fixtureSlot(fixture: b2Fixture): number {
+    return this.fixtureSlots.slotOf.get(fixture) ?? -1;
+  }
+  fixtureAt(slot: number): b2Fixture | null {
+    return this.fixtureSlots.items[slot] ?? null;
+  }
+  jointSlot(joint: b2Joint): number {
+    return this.jointSlots.slotOf.get(joint) ?? -1;
+  }
+  jointAt(slot: number): b2Joint | null {
+    return this.jointSlots.items[slot] ?? null;
+  }
+  /** The slot of child `childIndex` of `fixture`'s proxies, -1 when it has none (inactive body). */
+  proxySlot(fixture: b2Fixture, childIndex: number): number {
+    const fixtureSlot = this.fixtureSlot(fixture);
+    if (fixtureSlot < 0 || fixtureSlot >= this.fixtureProxy0.length || this.fixtureProxy0[fixtureSlot] < 0) return -1;
+    if (childIndex === 0) return this.fixtureProxy0[fixtureSlot];
+    return this.fixtureProxyRest.get(fixtureSlot)?.[childIndex - 1] ?? -1;
+  }
+  proxyAt(slot: number): { fixture: b2Fixture; childIndex: number } | null {
+    const fixture = this.proxyFixture[slot];
+    if (fixture === null || fixture === undefined || this.proxySlots.items[slot] === null) return null;
+    return { fixture, childIndex: this.proxyChild[slot] };
+  }
+
+  /** Proxy slots [0, proxySlotCount) exist on the GPU (live or dead). */
+  get proxySlotCount(): number {
+    return this.proxySlots.highWater;
+  }
+  get liveProxyCount(): number {
+    return this.proxySlots.live;
+  }
+  get bodySlotCount(): number {
+    return this.bodySlots.highWater;
+  }
+  get fixtureSlotCount(): number {
+    return this.fixtureSlots.highWater;
+  }
+  get jointSlotCount(): number {
+    return this.jointSlots.highWater;
+  }
+
+  /** The generation of a proxy slot: it changes whenever the slot is given to a new proxy. */
+  proxyGenerationOf(slot: number): number {
+    return slot < this.proxyGeneration.length ? this.proxyGeneration[slot] : 0;
+  }
+
+  /** The world position of a body slot as the GPU stores it (cell and float32 offset), in float64. */
+  gpuBodyPosition(slot: number): { x: number; y: number } {
+    const cx = this.bodyCell.i32[2 * slot];
+    const cy = this.bodyCell.i32[2 * slot + 1];
+    return { x: cx * this.cellSize + this.bodyXf.f32[4 * slot], y: cy * this.cellSize + this.bodyXf.f32[4 * slot + 1] };
+  }
+
+  // ---- Sync ----
+
+  /** Brings the GPU buffers up to date with the world; returns what changed and what it uploaded. */
+  sync(): SyncStats {
+    this.ctx.assertAlive();
+    const gen = ++this.generation;
+    const world = this.world;
+    const stats: SyncStats = {
+      upload: { bytes: 0, writes: 0, elements: 0 },
+      bodies: { live: 0, created: 0, released: 0 },
+      fixtures: { live: 0, created: 0, released: 0 },
+      proxies: { live: 0, created: 0, released: 0 },
+      joints: { live: 0, created: 0, released: 0 },
+    };
+    this.usesCustomContactFilter = isCustomContactFilter(world.m_contactManager.m_contactFilter);
+
+    // b2World::SetAllowSleeping(false) wakes every body, including those the GPU put to sleep
+    // since the last read-back (the world's flags still say awake there).
+    this.wakeAll = this.allowSleep && !world.m_allowSleep;
+    this.allowSleep = world.m_allowSleep;
+
+    // Everything is walked while the engine moves the bodies, after a body, fixture or joint came
+    // or went, when sleeping was turned off, or when another listener replaced the change log;
+    // otherwise only what the change log names (and every joint: they report nothing).
+    const log = this.changes;
+    const full = !this.ownsMotion || log.structure || this.wakeAll || world.m_changeListener !== log;
+    if (full) {
+      this.reserveFor(world);
+      this.syncBodies(world, gen, stats);
+    } else {
+      log.bodies.forEach(this.packChangedBody);
+    }
+
+    // 2. Joints, and the per-body lists of joints that turn collision off (only a structural
+    // change alters those).
+    const edges: number[] = [];
+    for (let j = world.m_jointList; j; j = j.m_next) {
+      const slot = this.jointSlots.acquire(j, gen);
+      if (this.jointSlots.created) stats.joints.created++;
+      const a = this.bodySlot(j.m_bodyA);
+      const b = this.bodySlot(j.m_bodyB);
+      this.joints.commitWords(slot, a, b, j.m_type, (j.m_collideConnected ? 1 : 0) | JOINT_LIVE);
+      this.packJoint(slot, j, this.jointSlots.created);
+      if (full && !j.m_collideConnected) {
+        edges.push(a * 67108864 + b, b * 67108864 + a);
+      }
+    }
+    if (full) {
+      stats.joints.released = this.jointSlots.sweep(gen, (slot) => {
+        this.joints.commitWords(slot, 0, 0, 0, 0);
+      });
+      this.packJointGraph(edges);
+    }
+
+    if (full) {
+      this.syncFixtures(world, gen, stats);
+    } else {
+      for (const f of log.fixtures) this.packChangedFixture(f, gen, stats);
+    }
+    // Motion set through the API overrides the GPU's for that body.
+    if (this.ownsMotion) log.bodies.forEach(this.packSetMotion);
+    log.reset();
+
+    stats.bodies.live = this.bodySlots.live;
+    stats.fixtures.live = this.fixtureSlots.live;
+    stats.proxies.live = this.proxySlots.live;
+    stats.joints.live = this.jointSlots.live;
+
+    const queue = this.ctx.device.queue;
+    for (const table of this.allTables) table.flush(queue, stats.upload);
+    return stats;
+  }
+
+  /**
+   * Grows the tables once to what the world holds, instead of doubling them over and over while a
+   * large world is first walked (each doubling a new buffer and shadow, and work for the collector).
+   */
+  private reserveFor(world: b2World): void {
+    const bodies = world.m_bodyCount;
+    if (bodies <= this.bodyXf.capacity) return;
+    let fixtures = 0;
+    let proxies = 0;
+    let shapes = this.pool.top;
+    for (let b = world.m_bodyList; b; b = b.m_next) {
+      fixtures += b.m_fixtureCount;
+      for (let f = b.m_fixtureList; f; f = f.m_next) {
+        proxies += f.m_proxyCount;
+        shapes += shapeSize(f);
+      }
+    }
+    const perBody = [this.bodyXf, this.bodyCell, this.bodySweep, this.bodyVel, this.bodyForce, this.bodyMass, this.bodyParams, this.bodyFlags, this.bodyAwake, this.jointRange];
+    const perFixture = [this.fixtureShape, this.fixtureMaterial];
+    const perProxy = [this.proxyRef, this.proxyFilter, this.proxyKey];
+    MirrorTable.reserveAll(
+      [this.shapePool, ...perBody, ...perFixture, ...perProxy],
+      [shapes, ...perBody.map(() => bodies), ...perFixture.map(() => fixtures), ...perProxy.map(() => proxies)],
+    );
+  }
+
+  /** Calls `visit` for every body the API changed since the last sync (the change log: applied forces included). */
+  forEachChangedBody(visit: (body: b2Body) => void): void {
+    for (const body of this.changes.bodies.keys()) visit(body);
+  }
+
+  /** A body in the change log, when sync() does not walk them all. */
+  private readonly packChangedBody = (_motion: boolean, b: b2Body): void => {
+    const slot = this.bodySlot(b);
+    if (slot >= 0) this.packBody(slot, b, false);
+  };
+
+  /** A body whose motion the API set: its motion records are uploaded over the GPU's. */
+  private readonly packSetMotion = (motion: boolean, b: b2Body): void => {
+    const slot = this.bodySlot(b);
+    if (motion && slot >= 0) this.packMotion(slot, b, true);
+  };
+
+  /** A fixture in the change log, when sync() does not walk them all. */
+  private packChangedFixture(f: b2Fixture, gen: number, stats: SyncStats): void {
+    const slot = this.fixtureSlot(f);
+    const bodySlot = this.bodySlot(f.m_body);
+    if (slot < 0 || bodySlot < 0) return;
+    this.packFixture(slot, f, bodySlot, false);
+    this.packProxies(f, slot, bodySlot, f.m_body.m_type, this.jointCount[bodySlot] > 0, gen, stats);
+  }
+
+  /**
+   * b2World::ClearForces for a world the GPU steps (GpuStepper calls it after each step, as
+   * b2World::Step does): zeroes the forces of the bodies whose uploaded force is not zero (every
+   * other body's force is zero already, unless written to m_force directly) and leaves the zeros
+   * for the next upload. Those bodies are listed as their force is packed: a million bodies
+   * without forces cost nothing here.
+   */
+  clearForces(): void {
+    for (let i = 0; i < this.forcedCount; ++i) {
+      const slot = this.forcedSlots[i];
+      const b = this.bodyAt(slot);
+      if (b !== null) {
+        b.m_force.SetZero();
+        b.m_torque = 0.0;
+      }
+      this.bodyForce.commitF4(slot, 0, 0, 0, 0);
+    }
+    this.forcedCount = 0;
+  }
+
+  /** Step 1 of sync: bodies, their slots kept in walk order for syncFixtures and as the next sync's hints. */
+  private syncBodies(world: b2World, gen: number, stats: SyncStats): void {
+    let walked = 0;
+    for (let b = world.m_bodyList; b; b = b.m_next) {
+      const slot = this.bodySlots.acquire(b, gen, walked < this.walkCount ? this.walkSlots[walked] : -1);
+      if (this.bodySlots.created) stats.bodies.created++;
+      this.packBody(slot, b, this.bodySlots.created);
+      this.walkSlots = withRoom(this.walkSlots, walked);
+      this.walkSlots[walked++] = slot;
+    }
+    this.walkCount = walked;
+    stats.bodies.released = this.bodySlots.sweep(gen, (slot) => {
+      this.bodyFlags.commitWords(slot, 0);
+    });
+  }
+
+  /** Step 3 of sync: fixtures and their proxies. (Each walk is a method of its own so that V8 optimises it apart.) */
+  private syncFixtures(world: b2World, gen: number, stats: SyncStats): void {
+    if (this.pool.fragmented) this.compactPool();
+    let index = 0;
+    let fixtureWalked = 0;
+    for (let b = world.m_bodyList; b; b = b.m_next) {
+      const bodySlot = this.walkSlots[index++];
+      const jointed = this.jointCount[bodySlot] > 0;
+      for (let f = b.m_fixtureList; f; f = f.m_next) {
+        const hint = fixtureWalked < this.fixtureWalkCount ? this.fixtureWalk[fixtureWalked] : -1;
+        const slot = this.fixtureSlots.acquire(f, gen, hint);
+        this.fixtureWalk = withRoom(this.fixtureWalk, fixtureWalked);
+        this.fixtureWalk[fixtureWalked++] = slot;
+        if (this.fixtureSlots.created) stats.fixtures.created++;
+        this.packFixture(slot, f, bodySlot, this.fixtureSlots.created);
+        this.packProxies(f, slot, bodySlot, b.m_type, jointed, gen, stats);
+      }
+    }
+    this.fixtureWalkCount = fixtureWalked;
+    stats.fixtures.released = this.fixtureSlots.sweep(gen, (slot, fixture) => {
+      this.staleShapes.delete(fixture);
+      this.fixtureShape.commitWords(slot, 0, 0, 0, 0);
+      if (this.fixturePoolSize[slot] > 0) this.pool.free(this.fixturePoolOffset[slot], this.fixturePoolSize[slot]);
+      this.fixturePoolSize[slot] = 0;
+      this.fixtureProxy0[slot] = -1;
+      this.fixtureProxyRest.delete(slot);
+    });
+    stats.proxies.released = this.proxySlots.sweep(gen, (slot) => {
+      this.proxyFixture[slot] = null;
+      this.proxyRef.commitWords(slot, 0, 0, 0, 0);
+      this.proxyFilter.commitWords(slot, 0, 0);
+      this.proxyKey.commitWords(slot, 0, this.proxyGeneration[slot]);
+    });
+  }
+
+  private packBody(slot: number, b: b2Body, created: boolean): void {
+    if (!this.ownsMotion || created) this.packMotion(slot, b, created && this.ownsMotion);
+
+    const f = this.bodyForce.f32;
+    const unforced = slot >= this.bodyForce.count || (f[4 * slot] === 0 && f[4 * slot + 1] === 0 && f[4 * slot + 2] === 0);
+    this.bodyForce.commitF4(slot, b.m_force.x, b.m_force.y, b.m_torque, 0);
+    if (unforced && (b.m_force.x !== 0 || b.m_force.y !== 0 || b.m_torque !== 0)) {
+      this.forcedSlots = withRoom(this.forcedSlots, this.forcedCount);
+      this.forcedSlots[this.forcedCount++] = slot;
+    }
+    this.bodyMass.commitF4(slot, b.m_invMass, b.m_invI, b.m_sweep.localCenter.x, b.m_sweep.localCenter.y);
+    this.bodyParams.commitF4(slot, b.m_linearDamping, b.m_angularDamping, b.m_gravityScale, 0);
+
+    this.bodyFlags.commitWords(slot, ((b.m_flags & 0xffff) | (b.m_type << 16) | BODY_LIVE) >>> 0);
+    // The awake flag (header): commit uploads it when it differs from the last value uploaded or
+    // read back; a new body's, and every body's once sleeping is turned off, always. A body that has
+    // not fetched the last read-back's state (b2Body.PullState) shows an older flag, which is not
+    // the application's: the GPU's stands.
+    if (!this.ownsMotion || created || this.wakeAll || b.m_stateEpoch === this.world.m_stateEpoch) {
+      this.bodyAwake.commitWords(slot, (b.m_flags & e_awakeFlag) !== 0 ? 1 : 0);
+    }
+    if (this.ownsMotion && (created || this.wakeAll)) this.bodyAwake.markDirty(slot);
+  }
+
+  /** Packs the motion records (cell, transform, sweep, velocity); `force` uploads them even if unchanged. */
+  private packMotion(slot: number, b: b2Body, force: boolean): void {
+    const S = this.cellSize;
+    const p = b.m_xf.p;
+    const cx = Math.round(p.x / S);
+    const cy = Math.round(p.y / S);
+    const ox = cx * S;
+    const oy = cy * S;
+
+    const cell = this.bodyCell.scratchI32;
+    cell[0] = cx;
+    cell[1] = cy;
+    this.bodyCell.commit(slot);
+
+    const xf = this.bodyXf.scratchF32;
+    xf[0] = p.x - ox;
+    xf[1] = p.y - oy;
+    xf[2] = b.m_xf.q.c;
+    xf[3] = b.m_xf.q.s;
+    this.bodyXf.commit(slot);
+
+    const sw = b.m_sweep;
+    const s = this.bodySweep.scratchF32;
+    s[0] = sw.c0.x - ox;
+    s[1] = sw.c0.y - oy;
+    s[2] = sw.a0;
+    s[3] = sw.alpha0;
+    s[4] = sw.c.x - ox;
+    s[5] = sw.c.y - oy;
+    s[6] = sw.a;
+    s[7] = b.m_sleepTime;
+    this.bodySweep.commit(slot);
+
+    const v = this.bodyVel.scratchF32;
+    v[0] = b.m_linearVelocity.x;
+    v[1] = b.m_linearVelocity.y;
+    v[2] = b.m_angularVelocity;
+    v[3] = 0;
+    this.bodyVel.commit(slot);
+    if (force) {
+      this.bodyCell.markDirty(slot);
+      this.bodyXf.markDirty(slot);
+      this.bodySweep.markDirty(slot);
+      this.bodyVel.markDirty(slot);
+    }
+  }
+
+  /** jointParams, and jointState unless the GPU owns it (a new joint's is always uploaded). */
+  private packJoint(slot: number, j: b2Joint, created: boolean): void {
+    const p = this.jointParams.scratchF32;
+    p.fill(0);
+    const owned = this.ownsMotion && !created;
+    const s = this.jointState.scratchF32;
+    s.fill(0);
+    switch (j.m_type) {
+      case b2JointType.e_revoluteJoint: {
+        const r = j as b2RevoluteJoint;
+        put4(p, 0, r.m_localAnchorA.x, r.m_localAnchorA.y, r.m_localAnchorB.x, r.m_localAnchorB.y);
+        put4(p, 4, r.m_referenceAngle, r.m_lowerAngle, r.m_upperAngle, r.m_maxMotorTorque);
+        put4(p, 8, r.m_motorSpeed, r.m_enableLimit ? 1 : 0, r.m_enableMotor ? 1 : 0, 0);
+        put4(s, 0, r.m_impulse.x, r.m_impulse.y, r.m_impulse.z, r.m_motorImpulse);
+        s[4] = r.m_limitState;
+        break;
+      }
+      case b2JointType.e_prismaticJoint: {
+        const r = j as b2PrismaticJoint;
+        put4(p, 0, r.m_localAnchorA.x, r.m_localAnchorA.y, r.m_localAnchorB.x, r.m_localAnchorB.y);
+        put4(p, 4, r.m_referenceAngle, r.m_lowerTranslation, r.m_upperTranslation, r.m_maxMotorForce);
+        put4(p, 8, r.m_motorSpeed, r.m_enableLimit ? 1 : 0, r.m_enableMotor ? 1 : 0, 0);
+        put4(p, 12, r.m_localXAxisA.x, r.m_localXAxisA.y, r.m_localYAxisA.x, r.m_localYAxisA.y);
+        put4(s, 0, r.m_impulse.x, r.m_impulse.y, r.m_impulse.z, r.m_motorImpulse);
+        s[4] = r.m_limitState;
+        break;
+      }
+      case b2JointType.e_distanceJoint: {
+        const d = j as b2DistanceJoint;
+        put4(p, 0, d.m_localAnchorA.x, d.m_localAnchorA.y, d.m_localAnchorB.x, d.m_localAnchorB.y);
+        put4(p, 4, d.m_length, d.m_frequencyHz, d.m_dampingRatio, 0);
+        s[0] = d.m_impulse;
+        break;
+      }
+      case b2JointType.e_pulleyJoint: {
+        const q = j as b2PulleyJoint;
+        put4(p, 0, q.m_localAnchorA.x, q.m_localAnchorA.y, q.m_localAnchorB.x, q.m_localAnchorB.y);
+        put4(p, 4, q.m_lengthA, q.m_lengthB, q.m_ratio, q.m_constant);
+        this.packWorldPoint(q.m_groundAnchorA.x, q.m_groundAnchorA.y, 8, 12);
+        this.packWorldPoint(q.m_groundAnchorB.x, q.m_groundAnchorB.y, 10, 14);
+        s[0] = q.m_impulse;
+        break;
+      }
+      case b2JointType.e_mouseJoint: {
+        const m = j as b2MouseJoint;
+        put4(p, 0, 0, 0, m.m_localAnchorB.x, m.m_localAnchorB.y);
+        put4(p, 4, m.m_frequencyHz, m.m_dampingRatio, m.m_maxForce, m.m_bodyB.m_mass);
+        this.packWorldPoint(m.m_targetA.x, m.m_targetA.y, 8, 12);
+        s[0] = m.m_impulse.x;
+        s[1] = m.m_impulse.y;
+        break;
+      }
+      case b2JointType.e_gearJoint: {
+        const g = j as b2GearJoint;
+        put4(p, 0, g.m_localAnchorA.x, g.m_localAnchorA.y, g.m_localAnchorB.x, g.m_localAnchorB.y);
+        put4(p, 4, g.m_referenceAngleA, g.m_referenceAngleB, g.m_ratio, g.m_constant);
+        put4(p, 8, g.m_localAnchorC.x, g.m_localAnchorC.y, g.m_localAnchorD.x, g.m_localAnchorD.y);
+        put4(p, 12, g.m_localAxisC.x, g.m_localAxisC.y, g.m_localAxisD.x, g.m_localAxisD.y);
+        const u = this.jointParams.scratchU32;
+        u[16] = this.bodySlot(g.m_bodyC);
+        u[17] = this.bodySlot(g.m_bodyD);
+        u[18] = g.m_typeA;
+        u[19] = g.m_typeB;
+        s[0] = g.m_impulse;
+        break;
+      }
+      case b2JointType.e_wheelJoint: {
+        const w = j as b2WheelJoint;
+        put4(p, 0, w.m_localAnchorA.x, w.m_localAnchorA.y, w.m_localAnchorB.x, w.m_localAnchorB.y);
+        put4(p, 4, w.m_frequencyHz, w.m_dampingRatio, 0, w.m_maxMotorTorque);
+        put4(p, 8, w.m_motorSpeed, 0, w.m_enableMotor ? 1 : 0, 0);
+        put4(p, 12, w.m_localXAxisA.x, w.m_localXAxisA.y, w.m_localYAxisA.x, w.m_localYAxisA.y);
+        put4(s, 0, w.m_impulse, w.m_springImpulse, w.m_motorImpulse, 0);
+        break;
+      }
+      case b2JointType.e_weldJoint: {
+        const w = j as b2WeldJoint;
+        put4(p, 0, w.m_localAnchorA.x, w.m_localAnchorA.y, w.m_localAnchorB.x, w.m_localAnchorB.y);
+        put4(p, 4, w.m_referenceAngle, w.m_frequencyHz, w.m_dampingRatio, 0);
+        put4(s, 0, w.m_impulse.x, w.m_impulse.y, w.m_impulse.z, 0);
+        break;
+      }
+      case b2JointType.e_frictionJoint: {
+        const f = j as b2FrictionJoint;
+        put4(p, 0, f.m_localAnchorA.x, f.m_localAnchorA.y, f.m_localAnchorB.x, f.m_localAnchorB.y);
+        put4(p, 4, f.m_maxForce, f.m_maxTorque, 0, 0);
+        put4(s, 0, f.m_linearImpulse.x, f.m_linearImpulse.y, f.m_angularImpulse, 0);
+        break;
+      }
+      case b2JointType.e_ropeJoint: {
+        const r = j as b2RopeJoint;
+        put4(p, 0, r.m_localAnchorA.x, r.m_localAnchorA.y, r.m_localAnchorB.x, r.m_localAnchorB.y);
+        p[4] = r.m_maxLength;
+        s[0] = r.m_impulse;
+        s[4] = r.m_state;
+        break;
+      }
+    }
+    this.jointParams.commit(slot);
+    if (owned) return;
+    this.jointState.commit(slot);
+    if (created && this.ownsMotion) this.jointState.markDirty(slot);
+  }
+
+  /**
+   * The GPU's joint state (jointState words, 8 per joint slot, as read back) into the joints'
+   * impulses and limit states, the inverse of packJoint's state words: so that the engine's next
+   * step warm-starts the joints from the GPU's impulses. The shadow takes the same words.
+   */
+  unpackJointStates(state: Float32Array): void {
+    const n = Math.min(this.jointSlotCount, state.length >> 3);
+    this.jointState.f32.set(state.subarray(0, 8 * n));
+    for (let slot = 0; slot < n; ++slot) {
+      const j = this.jointAt(slot);
+      if (j === null) continue;
+      const s = 8 * slot;
+      switch (j.m_type) {
+        case b2JointType.e_revoluteJoint:
+        case b2JointType.e_prismaticJoint: {
+          const r = j as b2RevoluteJoint | b2PrismaticJoint;
+          r.m_impulse.Set(state[s], state[s + 1], state[s + 2]);
+          r.m_motorImpulse = state[s + 3];
+          r.m_limitState = state[s + 4];
+          break;
+        }
+        case b2JointType.e_distanceJoint:
+          (j as b2DistanceJoint).m_impulse = state[s];
+          break;
+        case b2JointType.e_pulleyJoint:
+          (j as b2PulleyJoint).m_impulse = state[s];
+          break;
+        case b2JointType.e_mouseJoint:
+          (j as b2MouseJoint).m_impulse.Set(state[s], state[s + 1]);
+          break;
+        case b2JointType.e_gearJoint:
+          (j as b2GearJoint).m_impulse = state[s];
+          break;
+        case b2JointType.e_wheelJoint: {
+          const w = j as b2WheelJoint;
+          w.m_impulse = state[s];
+          w.m_springImpulse = state[s + 1];
+          w.m_motorImpulse = state[s + 2];
+          break;
+        }
+        case b2JointType.e_weldJoint:
+          (j as b2WeldJoint).m_impulse.Set(state[s], state[s + 1], state[s + 2]);
+          break;
+        case b2JointType.e_frictionJoint: {
+          const f = j as b2FrictionJoint;
+          f.m_linearImpulse.Set(state[s], state[s + 1]);
+          f.m_angularImpulse = state[s + 2];
+          break;
+        }
+        case b2JointType.e_ropeJoint: {
+          const r = j as b2RopeJoint;
+          r.m_impulse = state[s];
+          r.m_state = state[s + 4];
+          break;
+        }
+      }
+    }
+  }
+
+  /**
+   * A world point into jointParams' scratch record as bodies are held: its cell (i32 words at
+   * `cellAt`) and the float32 offset in it (at `offsetAt`), so a stage takes it into any body's cell.
+   */
+  private packWorldPoint(x: number, y: number, offsetAt: number, cellAt: number): void {
+    const S = this.cellSize;
+    const cx = Math.round(x / S);
+    const cy = Math.round(y / S);
+    this.jointParams.scratchF32[offsetAt] = x - cx * S;
+    this.jointParams.scratchF32[offsetAt + 1] = y - cy * S;
+    this.jointParams.scratchI32[cellAt] = cx;
+    this.jointParams.scratchI32[cellAt + 1] = cy;
+  }
+
+  private packJointGraph(edges: number[]): void {
+    const bodyCount = this.bodySlots.highWater;
+    if (this.jointCount.length < bodyCount) this.jointCount = new Int32Array(Math.max(bodyCount, 2 * this.jointCount.length));
+    const count = this.jointCount;
+    count.fill(0);
+    const keys = Float64Array.from(edges).sort();
+    for (let i = 0; i < keys.length; ++i) count[Math.floor(keys[i] / 67108864)]++;
+    let start = 0;
+    for (let slot = 0; slot < bodyCount; ++slot) {
+      this.jointRange.commitWords(slot, start, count[slot]);
+      start += count[slot];
+    }
+    for (let i = 0; i < keys.length; ++i) this.jointList.commitWords(i, keys[i] % 67108864);
+    if (this.jointList.count < keys.length) this.jointList.setCount(keys.length);
+  }
+
+  private compactPool(): void {
+    this.pool.reset();
+    this.fixturePoolSize = [];
+    this.fixturePoolOffset = [];
+    this.fixtureShapeWord = [];
+    this.fixtureRadius = [];
+  }
+
+  private packFixture(slot: number, f: b2Fixture, bodySlot: number, created: boolean): void {
+    if (created || this.fixturePoolSize[slot] === undefined || (this.staleShapes.size > 0 && this.staleShapes.delete(f))) {
+      this.packShape(slot, f);
+    }
+    const sensor = f.m_isSensor ? SHAPE_SENSOR << 4 : 0;
+    const rec = this.fixtureShape.scratchU32;
+    rec[0] = (this.fixtureShapeWord[slot] | sensor) >>> 0;
+    rec[1] = this.fixturePoolOffset[slot];
+    rec[2] = bodySlot;
+    this.fixtureShape.scratchF32[3] = this.fixtureRadius[slot];
+    this.fixtureShape.commit(slot);
+
+    this.fixtureMaterial.commitF4(slot, f.m_friction, f.m_restitution, f.m_density, 0);
+  }
+
+  /** The shape's data into the pool; its record's type, ghost flags and count into fixtureShapeWord. */
+  private packShape(slot: number, f: b2Fixture): void {
+    const shape = f.m_shape;
+    const size = shapeSize(f);
+    if (this.fixturePoolSize[slot] !== size) {
+      if (this.fixturePoolSize[slot] > 0) this.pool.free(this.fixturePoolOffset[slot], this.fixturePoolSize[slot]);
+      this.fixturePoolOffset[slot] = this.pool.alloc(size);
+      this.fixturePoolSize[slot] = size;
+    }
+    const offset = this.fixturePoolOffset[slot];
+    const pool = this.shapePool;
+    if (offset + size > pool.capacity) pool.reserve(offset + size);
+    let count = 0;
+    let flags = 0;
+    switch (shape.m_type) {
+      case e_circle: {
+        const c = shape as b2CircleShape;
+        pool.commitF2(offset, c.m_p.x, c.m_p.y);
+        count = 1;
+        break;
+      }
+      case e_edge: {
+        const e = shape as b2EdgeShape;
+        pool.commitF2(offset, e.m_vertex1.x, e.m_vertex1.y);
+        pool.commitF2(offset + 1, e.m_vertex2.x, e.m_vertex2.y);
+        pool.commitF2(offset + 2, e.m_vertex0.x, e.m_vertex0.y);
+        pool.commitF2(offset + 3, e.m_vertex3.x, e.m_vertex3.y);
+        count = 2;
+        if (e.m_hasVertex0) flags |= SHAPE_HAS_VERTEX0;
+        if (e.m_hasVertex3) flags |= SHAPE_HAS_VERTEX3;
+        break;
+      }
+      case e_polygon: {
+        const p = shape as b2PolygonShape;
+        count = p.m_vertexCount;
+        for (let i = 0; i < count; ++i) pool.commitF2(offset + i, p.m_vertices[i].x, p.m_vertices[i].y);
+        for (let i = 0; i < count; ++i) pool.commitF2(offset + count + i, p.m_normals[i].x, p.m_normals[i].y);
+        pool.commitF2(offset + 2 * count, p.m_centroid.x, p.m_centroid.y);
+        break;
+      }
+      default: {
+        const c = shape as b2ChainShape;
+        count = c.m_count;
+        for (let i = 0; i < count; ++i) pool.commitF2(offset + i, c.m_vertices[i].x, c.m_vertices[i].y);
+        pool.commitF2(offset + count, c.m_prevVertex.x, c.m_prevVertex.y);
+        pool.commitF2(offset + count + 1, c.m_nextVertex.x, c.m_nextVertex.y);
+        if (c.m_hasPrevVertex) flags |= SHAPE_HAS_VERTEX0;
+        if (c.m_hasNextVertex) flags |= SHAPE_HAS_VERTEX3;
+      }
+    }
+    this.fixtureShapeWord[slot] = shape.m_type | (flags << 4) | (count << 8);
+    this.fixtureRadius[slot] = shape.m_radius;
+  }
+
+  /**
+   * Uploads `fixture`'s shape again at the next sync. The mirror packs a shape when its fixture is
+   * created and does not compare shapes afterwards (reading every vertex of every shape each step
+   * was half of a sync's time): call this after editing a fixture's shape in place.
+   */
+  invalidateShape(fixture: b2Fixture): void {
+    this.staleShapes.add(fixture);
+  }
+
+  private packProxies(
+    f: b2Fixture,
+    fixtureSlot: number,
+    bodySlot: number,
+    bodyType: number,
+    jointed: boolean,
+    gen: number,
+    stats: SyncStats,
+  ): void {
+    // Proxies belong to (fixture slot, child): a fixture slot is reused only after the sync that
+    // released it, so the pair names one live proxy.
+    const n = f.m_proxyCount;
+    this.fixtureProxy0 = withRoom(this.fixtureProxy0, fixtureSlot, -1);
+    // Children beyond n (a body made inactive) are left unmarked: the sweep releases them.
+    if (n === 0) {
+      this.fixtureProxy0[fixtureSlot] = -1;
+      this.fixtureProxyRest.delete(fixtureSlot);
+      return;
+    }
+    let rest = this.fixtureProxyRest.get(fixtureSlot);
+    if (rest !== undefined && rest.length > n - 1) rest.length = n - 1;
+    const filter = f.m_filter;
+    const word =
+      f.m_shape.m_type | (bodyType << 2) | PROXY_LIVE | (f.m_isSensor ? PROXY_SENSOR : 0) | (jointed ? PROXY_JOINTED : 0);
+    const filterWord = ((filter.categoryBits & 0xffff) | ((filter.maskBits & 0xffff) << 16)) >>> 0;
+    const group = filter.groupIndex & 0xffff;
+    const proxies = this.proxySlots;
+    const engineProxies = (f as { m_proxies?: { proxyId: number }[] }).m_proxies;
+    for (let child = 0; child < n; ++child) {
+      let slot = child === 0 ? this.fixtureProxy0[fixtureSlot] : (rest?.[child - 1] ?? -1);
+      let fresh = false;
+      if (slot < 0) {
+        slot = proxies.alloc();
+        proxies.items[slot] = fixtureSlot;
+        if (child === 0) {
+          this.fixtureProxy0[fixtureSlot] = slot;
+        } else {
+          if (rest === undefined) this.fixtureProxyRest.set(fixtureSlot, (rest = []));
+          rest.push(slot);
+        }
+        stats.proxies.created++;
+        fresh = true;
+      }
+      proxies.mark(slot, gen);
+      this.proxyFixture[slot] = f;
+      this.proxyChild[slot] = child;
+      this.proxyRef.commitWords(slot, fixtureSlot, child, bodySlot, word);
+      this.proxyFilter.commitWords(slot, filterWord, group);
+      // The engine's proxy id orders same-type contacts (b2BroadPhase::QueryCallback puts the
+      // lower id first, b2Contact::Create makes it fixture A); without one (a synthetic world),
+      // the slot orders them. A new proxy in the slot, or a new engine proxy (the body was
+      // deactivated and reactivated between syncs), gets a new generation.
+      const engineId = engineProxies?.[child]?.proxyId;
+      const order = typeof engineId === 'number' && engineId >= 0 ? engineId : slot;
+      this.proxyGeneration = withRoom(this.proxyGeneration, slot);
+      if (fresh || this.proxyKey.u32[2 * slot] !== order) this.proxyGeneration[slot] = (this.proxyGeneration[slot] + 1) >>> 0;
+      this.proxyKey.commitWords(slot, order, this.proxyGeneration[slot]);
+    }
+  }
+
+  destroy(): void {
+    if (this.world.m_changeListener === this.changes) this.world.SetChangeListener(null);
+    for (const table of this.allTables) table.destroy();
+  }
+}
