@@ -104,6 +104,11 @@ interface InFlight {
   state: Uint32Array | null;
 }
 
+/**
+ * Records and submits the GPU step, stage by stage (GpuStage).
+ * @internal Advanced: exported for tools, benchmarks and tests; applications use WebGPUBackend
+ * through b2World.SetBackend (docs/GPU.md, "The world API on the GPU").
+ */
 export class GpuPipeline {
   readonly ctx: GpuContext;
   readonly broadPhase: GpuBroadPhase;

@@ -106,6 +106,11 @@ export interface GpuReadStats {
   pullMs: number;
 }
 
+/**
+ * Steps a b2World on the GPU without the world API: WebGPUBackend is built on it.
+ * @internal Advanced: exported for tools, benchmarks and tests; applications use WebGPUBackend
+ * through b2World.SetBackend (docs/GPU.md, "The world API on the GPU").
+ */
 export class GpuStepper {
   readonly ctx: GpuContext;
   readonly world: b2World;

@@ -82,6 +82,11 @@ export interface BroadPhaseResult {
   gpuTime: Record<string, number> | null;
 }
 
+/**
+ * The GPU broad phase (sweep-and-prune), usable alone on a GpuWorld or a GpuProxySet.
+ * @internal Advanced: exported for tools, benchmarks and tests; applications use WebGPUBackend
+ * through b2World.SetBackend (docs/GPU.md, "The world API on the GPU").
+ */
 export class GpuBroadPhase {
   readonly ctx: GpuContext;
   readonly extension: number;

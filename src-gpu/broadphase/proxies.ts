@@ -25,6 +25,11 @@ export interface RawProxies {
   noCollide?: [number, number][];
 }
 
+/**
+ * Raw proxies (AABBs and filters without a b2World) for the broad phase alone.
+ * @internal Advanced: exported for tools, benchmarks and tests; applications use WebGPUBackend
+ * through b2World.SetBackend (docs/GPU.md, "The world API on the GPU").
+ */
 export class GpuProxySet implements SweepInputs {
   readonly ctx: GpuContext;
   slotCount = 0;

@@ -142,6 +142,11 @@ export interface GpuContactEvent {
 
 const { e_touchingFlag } = b2ContactFlags;
 
+/**
+ * The GPU narrow phase: contact buffers and the stages GpuPipeline records.
+ * @internal Advanced: exported for tools, benchmarks and tests; applications use WebGPUBackend
+ * through b2World.SetBackend (docs/GPU.md, "The world API on the GPU").
+ */
 export class GpuNarrowPhase {
   readonly ctx: GpuContext;
   /** Each bin's kernel records in a pass of its own ('collide <bin>' in gpuTime). */

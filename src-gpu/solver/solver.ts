@@ -104,6 +104,11 @@ export interface SolverState {
   recoloured: boolean;
 }
 
+/**
+ * The GPU solver: its buffers and the stages GpuPipeline records.
+ * @internal Advanced: exported for tools, benchmarks and tests; applications use WebGPUBackend
+ * through b2World.SetBackend (docs/GPU.md, "The world API on the GPU").
+ */
 export class GpuSolver {
   readonly ctx: GpuContext;
   /** Solver state words (layout.ts SV). */

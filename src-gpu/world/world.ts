@@ -280,6 +280,11 @@ function isCustomContactFilter(filter: object | null): boolean {
   return (filter as { ShouldCollide?: unknown }).ShouldCollide !== base;
 }
 
+/**
+ * The world mirrored on the GPU (structure-of-arrays tables, uploaded incrementally).
+ * @internal Advanced: exported for tools, benchmarks and tests; applications use WebGPUBackend
+ * through b2World.SetBackend (docs/GPU.md, "The world API on the GPU").
+ */
 export class GpuWorld {
   readonly ctx: GpuContext;
   readonly world: b2World;
