@@ -24,8 +24,6 @@
  * sorts, never from atomics.
  */
 
-import type { b2Contact } from '../../src/dynamics/contacts/b2Contact';
-import { b2ContactFlags } from '../../src/common/b2Constants';
 import type { GpuContext } from '../device/device';
 import { GpuArray } from '../device/buffers';
 import { Uniform } from '../device/kernel';
@@ -41,14 +39,15 @@ import { OverlapStage } from './overlap';
 import { PersistStage } from './persist';
 import { CompactStage } from './compact';
 import { readBuffer } from '../device/readback';
+import { decodeContacts, decodeEvents } from './records';
+import type { GpuContactEvent, GpuContactRecord } from './records';
+import { packWorldContacts } from './seed';
 import type { PersistInputs } from './persist';
 import type { CompactInputs } from './compact';
 import type { SolverInputs } from '../solver/solver';
 import {
   BIN_COUNT,
   MANIFOLD_WORDS,
-  MF,
-  NO_CONTACT,
   NP,
   NP_INDIRECT_WORDS,
   NP_STATE_WORDS,
@@ -98,49 +97,6 @@ export interface NarrowPhaseResult {
   /** { wait: false }: resolves with this step's own result once its read-back is in. */
   settled?: Promise<NarrowPhaseResult>;
 }
-
-/** A contact as readContacts() returns it (a debugging and test view of the GPU records). */
-export interface GpuContactRecord {
-  index: number;
-  /** The pair: proxy slots, a < b. */
-  a: number;
-  b: number;
-  /** Proxy slots of fixture A and fixture B (b2Contact's order). */
-  proxyA: number;
-  proxyB: number;
-  fixtureA: number;
-  childA: number;
-  fixtureB: number;
-  childB: number;
-  bin: number;
-  sensor: boolean;
-  touching: boolean;
-  began: boolean;
-  ended: boolean;
-  /** Matched a contact of the previous step. */
-  warm: boolean;
-  /** The previous step's index, or -1. */
-  previous: number;
-  /** b2Manifold::Type (0 when there are no points). */
-  type: number;
-  pointCount: number;
-  localNormal: { x: number; y: number };
-  localPoint: { x: number; y: number };
-  points: { localPoint: { x: number; y: number }; id: number; normalImpulse: number; tangentImpulse: number }[];
-}
-
-export interface GpuContactEvent {
-  /** EVENT_BEGIN (1) or EVENT_END (2). */
-  kind: number;
-  proxyA: number;
-  proxyB: number;
-  /** This step's contact index, or the previous step's for a contact gone with its pair. */
-  index: number;
-  /** The contact is gone (its pair left the broad phase's list) rather than no longer touching. */
-  vanished: boolean;
-}
-
-const { e_touchingFlag } = b2ContactFlags;
 
 /**
  * The GPU narrow phase: contact buffers and the stages GpuPipeline records.
@@ -416,65 +372,12 @@ export class GpuNarrowPhase {
    * mirror does not have are skipped. Returns how many contacts were taken.
    */
   seedFromWorld(mirror: GpuWorld): number {
-    const records: { a: number; b: number; words: Uint32Array }[] = [];
-    const f32 = new Float32Array(1);
-    const u32 = new Uint32Array(f32.buffer);
-    const bits = (x: number) => {
-      f32[0] = x;
-      return u32[0];
-    };
-    for (let c: b2Contact | null = mirror.world.m_contactManager.m_contactList; c; c = c.m_next) {
-      const pa = mirror.proxySlot(c.m_fixtureA, c.m_indexA);
-      const pb = mirror.proxySlot(c.m_fixtureB, c.m_indexB);
-      if (pa < 0 || pb < 0) continue;
-      const a = Math.min(pa, pb);
-      const b = Math.max(pa, pb);
-      const m = c.m_manifold;
-      const touching = (c.m_flags & e_touchingFlag) !== 0;
-      const sensor = c.m_fixtureA.m_isSensor || c.m_fixtureB.m_isSensor;
-      const w = new Uint32Array(4 + MANIFOLD_WORDS);
-      w[0] = a;
-      w[1] = b;
-      w[2] = mirror.proxyGenerationOf(a);
-      w[3] = mirror.proxyGenerationOf(b);
-      const count = m.pointCount;
-      let header = count > 0 ? (m.type | (count << 2)) >>> 0 : 0;
-      if (touching) header |= MF.TOUCHING;
-      if (sensor) header |= MF.SENSOR;
-      if (pa > pb) header |= MF.SWAPPED;
-      const h = 4;
-      w[h] = header;
-      w[h + 1] = count > 0 ? m.points[0].id.key : 0;
-      w[h + 2] = count > 1 ? m.points[1].id.key : 0;
-      w[h + 3] = NO_CONTACT;
-      if (count > 0) {
-        w[h + 4] = bits(m.localNormal.x);
-        w[h + 5] = bits(m.localNormal.y);
-        w[h + 6] = bits(m.localPoint.x);
-        w[h + 7] = bits(m.localPoint.y);
-      }
-      for (let k = 0; k < count; ++k) {
-        const p = m.points[k];
-        w[h + 8 + 2 * k] = bits(p.localPoint.x);
-        w[h + 9 + 2 * k] = bits(p.localPoint.y);
-        w[h + 12 + 2 * k] = bits(p.normalImpulse);
-        w[h + 13 + 2 * k] = bits(p.tangentImpulse);
-      }
-      records.push({ a, b, words: w });
-    }
-    records.sort((x, y) => x.a - y.a || x.b - y.b);
-    const n = records.length;
+    const { count: n, keys, manifolds } = packWorldContacts(mirror);
     this.growContacts(n);
     const set = 1 - this.cur;
-    const keyWords = new Uint32Array(4 * Math.max(1, n));
-    const manifoldWords = new Uint32Array(MANIFOLD_WORDS * Math.max(1, n));
-    records.forEach((r, i) => {
-      keyWords.set(r.words.subarray(0, 4), 4 * i);
-      manifoldWords.set(r.words.subarray(4), MANIFOLD_WORDS * i);
-    });
     const queue = this.ctx.device.queue;
-    queue.writeBuffer(this.keys[set].buffer, 0, keyWords);
-    queue.writeBuffer(this.manifoldSets[set].buffer, 0, manifoldWords);
+    queue.writeBuffer(this.keys[set].buffer, 0, keys);
+    queue.writeBuffer(this.manifoldSets[set].buffer, 0, manifolds);
     queue.writeBuffer(this.state, 4 * (NP.COUNT_0 + set), new Uint32Array([n]));
     return n;
   }
@@ -494,51 +397,8 @@ export class GpuNarrowPhase {
     if (n === 0) return [];
     const keys = new Uint32Array(await readBuffer(this.ctx, this.contactKeys, 16 * n, DEBUG_READ));
     const refs = new Uint32Array(await readBuffer(this.ctx, this.contactRef.buffer, 32 * n, DEBUG_READ));
-    const mw = await readBuffer(this.ctx, this.manifolds, 4 * MANIFOLD_WORDS * n, DEBUG_READ);
-    const mu = new Uint32Array(mw);
-    const mf = new Float32Array(mw);
-    const out: GpuContactRecord[] = [];
-    for (let i = 0; i < n; ++i) {
-      const m = MANIFOLD_WORDS * i;
-      const h = mu[m];
-      const count = (h >> 2) & 3;
-      const swapped = (h & MF.SWAPPED) !== 0;
-      const a = keys[4 * i];
-      const b = keys[4 * i + 1];
-      const points: GpuContactRecord['points'] = [];
-      for (let k = 0; k < count; ++k) {
-        points.push({
-          localPoint: { x: mf[m + 8 + 2 * k], y: mf[m + 9 + 2 * k] },
-          id: mu[m + 1 + k],
-          normalImpulse: mf[m + 12 + 2 * k],
-          tangentImpulse: mf[m + 13 + 2 * k],
-        });
-      }
-      out.push({
-        index: i,
-        a,
-        b,
-        proxyA: swapped ? b : a,
-        proxyB: swapped ? a : b,
-        fixtureA: refs[8 * i],
-        childA: refs[8 * i + 1],
-        fixtureB: refs[8 * i + 4],
-        childB: refs[8 * i + 5],
-        bin: (refs[8 * i + 3] >> 4) & 0xf,
-        sensor: (h & MF.SENSOR) !== 0,
-        touching: (h & MF.TOUCHING) !== 0,
-        began: (h & MF.BEGAN) !== 0,
-        ended: (h & MF.ENDED) !== 0,
-        warm: (h & MF.WARM) !== 0,
-        previous: mu[m + 3] === NO_CONTACT ? -1 : mu[m + 3],
-        type: h & 3,
-        pointCount: count,
-        localNormal: { x: mf[m + 4], y: mf[m + 5] },
-        localPoint: { x: mf[m + 6], y: mf[m + 7] },
-        points,
-      });
-    }
-    return out;
+    const manifolds = await readBuffer(this.ctx, this.manifolds, 4 * MANIFOLD_WORDS * n, DEBUG_READ);
+    return decodeContacts(keys, refs, manifolds, n);
   }
 
   /** The last step's solver list (contact indices). */
@@ -552,18 +412,7 @@ export class GpuNarrowPhase {
     const n = (await this.readState())[NP.EVENTS];
     if (n === 0) return [];
     const w = new Uint32Array(await readBuffer(this.ctx, this.events, 16 * n, DEBUG_READ));
-    const out: GpuContactEvent[] = [];
-    for (let i = 0; i < n; ++i) {
-      const index = w[4 * i + 3];
-      out.push({
-        kind: w[4 * i + 2],
-        proxyA: w[4 * i],
-        proxyB: w[4 * i + 1],
-        index: index & 0x7fffffff,
-        vanished: (index & 0x80000000) !== 0,
-      });
-    }
-    return out;
+    return decodeEvents(w, n);
   }
 
   /**

@@ -51,24 +51,16 @@ import type { b2Body } from '../../src/dynamics/b2Body';
 import type { b2Fixture } from '../../src/dynamics/b2Fixture';
 import type { b2World } from '../../src/dynamics/b2World';
 import type { b2Joint } from '../../src/dynamics/joints/b2Joint';
-import type { b2RevoluteJoint } from '../../src/dynamics/joints/b2RevoluteJoint';
-import type { b2DistanceJoint } from '../../src/dynamics/joints/b2DistanceJoint';
-import type { b2PrismaticJoint } from '../../src/dynamics/joints/b2PrismaticJoint';
-import type { b2PulleyJoint } from '../../src/dynamics/joints/b2PulleyJoint';
-import type { b2MouseJoint } from '../../src/dynamics/joints/b2MouseJoint';
-import type { b2GearJoint } from '../../src/dynamics/joints/b2GearJoint';
-import type { b2WheelJoint } from '../../src/dynamics/joints/b2WheelJoint';
-import type { b2WeldJoint } from '../../src/dynamics/joints/b2WeldJoint';
-import type { b2FrictionJoint } from '../../src/dynamics/joints/b2FrictionJoint';
-import type { b2RopeJoint } from '../../src/dynamics/joints/b2RopeJoint';
 import type { b2CircleShape } from '../../src/collision/shapes/b2CircleShape';
 import type { b2EdgeShape } from '../../src/collision/shapes/b2EdgeShape';
 import type { b2PolygonShape } from '../../src/collision/shapes/b2PolygonShape';
 import type { b2ChainShape } from '../../src/collision/shapes/b2ChainShape';
-import { b2BodyFlags, b2JointType, b2ShapeType } from '../../src/common/b2Constants';
+import { b2BodyFlags, b2ShapeType } from '../../src/common/b2Constants';
 import type { GpuContext } from '../device/device';
 import { MirrorTable } from '../device/buffers';
 import type { UploadStats } from '../device/buffers';
+import { ChangeLog, PoolAllocator, SlotAllocator, withRoom } from './slots';
+import { packJoint, unpackJointState } from './joints';
 import {
   BODY_LIVE,
   DEFAULT_CELL_SIZE,
@@ -83,160 +75,6 @@ import {
 
 const { e_circle, e_edge, e_polygon } = b2ShapeType;
 const { e_awakeFlag } = b2BodyFlags;
-/** Four words into a scratch record at `at` (no array literal: sync() allocates nothing per joint). */
-function put4(record: Float32Array, at: number, a: number, b: number, c: number, d: number): void {
-  record[at] = a;
-  record[at + 1] = b;
-  record[at + 2] = c;
-  record[at + 3] = d;
-}
-
-/** `array`, or a copy of it with its length doubled until `index` fits (new elements `fill`). */
-function withRoom<T extends Int32Array | Uint32Array>(array: T, index: number, fill = 0): T {
-  if (index < array.length) return array;
-  let size = array.length;
-  while (size <= index) size *= 2;
-  const grown = new (array.constructor as new (length: number) => T)(size);
-  if (fill !== 0) grown.fill(fill, array.length);
-  grown.set(array);
-  return grown;
-}
-
-/**
- * What the API changed since the last sync: the world's b2ChangeListener while a GpuWorld mirrors
- * it (structurally one: src-gpu imports no engine class).
- */
-class ChangeLog {
-  /** A body, fixture or joint came or went (or this is the first sync): walk everything. */
-  structure = true;
-  /** Bodies set through the API, true when their motion was set. */
-  readonly bodies = new Map<b2Body, boolean>();
-  readonly fixtures = new Set<b2Fixture>();
-
-  BodyChanged(body: b2Body, motion: boolean): void {
-    if (motion) this.bodies.set(body, true);
-    else if (!this.bodies.has(body)) this.bodies.set(body, false);
-  }
-
-  FixtureChanged(fixture: b2Fixture): void {
-    this.fixtures.add(fixture);
-  }
-
-  StructureChanged(): void {
-    this.structure = true;
-  }
-
-  reset(): void {
-    this.structure = false;
-    this.bodies.clear();
-    this.fixtures.clear();
-  }
-}
-
-/** Slots handed out lowest free first; `gen` marks the slots seen by the current sync. */
-class SlotAllocator<T> {
-  readonly items: (T | null)[] = [];
-  readonly slotOf = new Map<T, number>();
-  gen = new Uint32Array(64);
-  /** Free slots below `highWater`, in descending order (pop() gives the lowest). */
-  private free: number[] = [];
-  highWater = 0;
-  live = 0;
-
-  /** Whether the last acquire() created the slot. */
-  created = false;
-
-  /**
-   * The item's slot (a new one, lowest free first, when it has none); marks it seen. `hint`, the
-   * slot the item had at the same place of the previous walk, skips the map lookup when it holds.
-   */
-  acquire(item: T, generation: number, hint = -1): number {
-    if (hint >= 0 && hint < this.highWater && this.items[hint] === item) {
-      this.created = false;
-      this.mark(hint, generation);
-      return hint;
-    }
-    let slot = this.slotOf.get(item);
-    this.created = slot === undefined;
-    if (slot === undefined) {
-      slot = this.alloc();
-      this.slotOf.set(item, slot);
-      this.items[slot] = item;
-    }
-    this.mark(slot, generation);
-    return slot;
-  }
-
-  /** A free slot, lowest first (for items tracked by the caller, not by slotOf). */
-  alloc(): number {
-    const slot = this.free.length > 0 ? this.free.pop()! : this.highWater++;
-    this.live++;
-    return slot;
-  }
-
-  /** Marks `slot` as seen in `generation`. */
-  mark(slot: number, generation: number): void {
-    this.gen = withRoom(this.gen, slot);
-    this.gen[slot] = generation;
-  }
-
-  /** Releases every slot not seen in `generation`; calls `onRelease(slot, item)` for each. */
-  sweep(generation: number, onRelease: (slot: number, item: T) => void): number {
-    let released = 0;
-    for (let slot = 0; slot < this.highWater; ++slot) {
-      const item = this.items[slot];
-      if (item !== null && item !== undefined && this.gen[slot] !== generation) {
-        this.items[slot] = null;
-        this.slotOf.delete(item);
-        this.free.push(slot);
-        this.live--;
-        released++;
-        onRelease(slot, item);
-      }
-    }
-    if (released > 0) {
-      this.free.sort((a, b) => b - a);
-      while (this.free.length > 0 && this.free[0] === this.highWater - 1) {
-        this.free.shift();
-        this.highWater--;
-      }
-    }
-    return released;
-  }
-}
-
-/** Ranges of the shape pool, reused by size; compacted by rebuilding. */
-class PoolAllocator {
-  top = 0;
-  live = 0;
-  private readonly freeBySize = new Map<number, number[]>();
-
-  alloc(size: number): number {
-    this.live += size;
-    const list = this.freeBySize.get(size);
-    if (list && list.length > 0) return list.pop()!;
-    const offset = this.top;
-    this.top += size;
-    return offset;
-  }
-
-  free(offset: number, size: number): void {
-    this.live -= size;
-    let list = this.freeBySize.get(size);
-    if (!list) this.freeBySize.set(size, (list = []));
-    list.push(offset);
-  }
-
-  reset(): void {
-    this.top = 0;
-    this.live = 0;
-    this.freeBySize.clear();
-  }
-
-  get fragmented(): boolean {
-    return this.top > 2 * this.live + 4096;
-  }
-}
 
 export interface GpuWorldOptions {
   /** Cell size in metres, a power of two (default 32). */
@@ -545,7 +383,7 @@ export class GpuWorld {
       const a = this.bodySlot(j.m_bodyA);
       const b = this.bodySlot(j.m_bodyB);
       this.joints.commitWords(slot, a, b, j.m_type, (j.m_collideConnected ? 1 : 0) | JOINT_LIVE);
-      this.packJoint(slot, j, this.jointSlots.created);
+      this.commitJoint(slot, j, this.jointSlots.created);
       if (full && !j.m_collideConnected) {
         edges.push(a * 67108864 + b, b * 67108864 + a);
       }
@@ -771,103 +609,9 @@ export class GpuWorld {
   }
 
   /** jointParams, and jointState unless the GPU owns it (a new joint's is always uploaded). */
-  private packJoint(slot: number, j: b2Joint, created: boolean): void {
-    const p = this.jointParams.scratchF32;
-    p.fill(0);
+  private commitJoint(slot: number, j: b2Joint, created: boolean): void {
     const owned = this.ownsMotion && !created;
-    const s = this.jointState.scratchF32;
-    s.fill(0);
-    switch (j.m_type) {
-      case b2JointType.e_revoluteJoint: {
-        const r = j as b2RevoluteJoint;
-        put4(p, 0, r.m_localAnchorA.x, r.m_localAnchorA.y, r.m_localAnchorB.x, r.m_localAnchorB.y);
-        put4(p, 4, r.m_referenceAngle, r.m_lowerAngle, r.m_upperAngle, r.m_maxMotorTorque);
-        put4(p, 8, r.m_motorSpeed, r.m_enableLimit ? 1 : 0, r.m_enableMotor ? 1 : 0, 0);
-        put4(s, 0, r.m_impulse.x, r.m_impulse.y, r.m_impulse.z, r.m_motorImpulse);
-        s[4] = r.m_limitState;
-        break;
-      }
-      case b2JointType.e_prismaticJoint: {
-        const r = j as b2PrismaticJoint;
-        put4(p, 0, r.m_localAnchorA.x, r.m_localAnchorA.y, r.m_localAnchorB.x, r.m_localAnchorB.y);
-        put4(p, 4, r.m_referenceAngle, r.m_lowerTranslation, r.m_upperTranslation, r.m_maxMotorForce);
-        put4(p, 8, r.m_motorSpeed, r.m_enableLimit ? 1 : 0, r.m_enableMotor ? 1 : 0, 0);
-        put4(p, 12, r.m_localXAxisA.x, r.m_localXAxisA.y, r.m_localYAxisA.x, r.m_localYAxisA.y);
-        put4(s, 0, r.m_impulse.x, r.m_impulse.y, r.m_impulse.z, r.m_motorImpulse);
-        s[4] = r.m_limitState;
-        break;
-      }
-      case b2JointType.e_distanceJoint: {
-        const d = j as b2DistanceJoint;
-        put4(p, 0, d.m_localAnchorA.x, d.m_localAnchorA.y, d.m_localAnchorB.x, d.m_localAnchorB.y);
-        put4(p, 4, d.m_length, d.m_frequencyHz, d.m_dampingRatio, 0);
-        s[0] = d.m_impulse;
-        break;
-      }
-      case b2JointType.e_pulleyJoint: {
-        const q = j as b2PulleyJoint;
-        put4(p, 0, q.m_localAnchorA.x, q.m_localAnchorA.y, q.m_localAnchorB.x, q.m_localAnchorB.y);
-        put4(p, 4, q.m_lengthA, q.m_lengthB, q.m_ratio, q.m_constant);
-        this.packWorldPoint(q.m_groundAnchorA.x, q.m_groundAnchorA.y, 8, 12);
-        this.packWorldPoint(q.m_groundAnchorB.x, q.m_groundAnchorB.y, 10, 14);
-        s[0] = q.m_impulse;
-        break;
-      }
-      case b2JointType.e_mouseJoint: {
-        const m = j as b2MouseJoint;
-        put4(p, 0, 0, 0, m.m_localAnchorB.x, m.m_localAnchorB.y);
-        put4(p, 4, m.m_frequencyHz, m.m_dampingRatio, m.m_maxForce, m.m_bodyB.m_mass);
-        this.packWorldPoint(m.m_targetA.x, m.m_targetA.y, 8, 12);
-        s[0] = m.m_impulse.x;
-        s[1] = m.m_impulse.y;
-        break;
-      }
-      case b2JointType.e_gearJoint: {
-        const g = j as b2GearJoint;
-        put4(p, 0, g.m_localAnchorA.x, g.m_localAnchorA.y, g.m_localAnchorB.x, g.m_localAnchorB.y);
-        put4(p, 4, g.m_referenceAngleA, g.m_referenceAngleB, g.m_ratio, g.m_constant);
-        put4(p, 8, g.m_localAnchorC.x, g.m_localAnchorC.y, g.m_localAnchorD.x, g.m_localAnchorD.y);
-        put4(p, 12, g.m_localAxisC.x, g.m_localAxisC.y, g.m_localAxisD.x, g.m_localAxisD.y);
-        const u = this.jointParams.scratchU32;
-        u[16] = this.bodySlot(g.m_bodyC);
-        u[17] = this.bodySlot(g.m_bodyD);
-        u[18] = g.m_typeA;
-        u[19] = g.m_typeB;
-        s[0] = g.m_impulse;
-        break;
-      }
-      case b2JointType.e_wheelJoint: {
-        const w = j as b2WheelJoint;
-        put4(p, 0, w.m_localAnchorA.x, w.m_localAnchorA.y, w.m_localAnchorB.x, w.m_localAnchorB.y);
-        put4(p, 4, w.m_frequencyHz, w.m_dampingRatio, 0, w.m_maxMotorTorque);
-        put4(p, 8, w.m_motorSpeed, 0, w.m_enableMotor ? 1 : 0, 0);
-        put4(p, 12, w.m_localXAxisA.x, w.m_localXAxisA.y, w.m_localYAxisA.x, w.m_localYAxisA.y);
-        put4(s, 0, w.m_impulse, w.m_springImpulse, w.m_motorImpulse, 0);
-        break;
-      }
-      case b2JointType.e_weldJoint: {
-        const w = j as b2WeldJoint;
-        put4(p, 0, w.m_localAnchorA.x, w.m_localAnchorA.y, w.m_localAnchorB.x, w.m_localAnchorB.y);
-        put4(p, 4, w.m_referenceAngle, w.m_frequencyHz, w.m_dampingRatio, 0);
-        put4(s, 0, w.m_impulse.x, w.m_impulse.y, w.m_impulse.z, 0);
-        break;
-      }
-      case b2JointType.e_frictionJoint: {
-        const f = j as b2FrictionJoint;
-        put4(p, 0, f.m_localAnchorA.x, f.m_localAnchorA.y, f.m_localAnchorB.x, f.m_localAnchorB.y);
-        put4(p, 4, f.m_maxForce, f.m_maxTorque, 0, 0);
-        put4(s, 0, f.m_linearImpulse.x, f.m_linearImpulse.y, f.m_angularImpulse, 0);
-        break;
-      }
-      case b2JointType.e_ropeJoint: {
-        const r = j as b2RopeJoint;
-        put4(p, 0, r.m_localAnchorA.x, r.m_localAnchorA.y, r.m_localAnchorB.x, r.m_localAnchorB.y);
-        p[4] = r.m_maxLength;
-        s[0] = r.m_impulse;
-        s[4] = r.m_state;
-        break;
-      }
-    }
+    packJoint(j, this.jointParams, this.jointState, this.cellSize, this);
     this.jointParams.commit(slot);
     if (owned) return;
     this.jointState.commit(slot);
@@ -876,7 +620,7 @@ export class GpuWorld {
 
   /**
    * The GPU's joint state (jointState words, 8 per joint slot, as read back) into the joints'
-   * impulses and limit states, the inverse of packJoint's state words: so that the engine's next
+   * impulses and limit states, the inverse of packJoint's state words (joints.ts): so that the engine's next
    * step warm-starts the joints from the GPU's impulses. The shadow takes the same words.
    */
   unpackJointStates(state: Float32Array): void {
@@ -885,66 +629,8 @@ export class GpuWorld {
     for (let slot = 0; slot < n; ++slot) {
       const j = this.jointAt(slot);
       if (j === null) continue;
-      const s = 8 * slot;
-      switch (j.m_type) {
-        case b2JointType.e_revoluteJoint:
-        case b2JointType.e_prismaticJoint: {
-          const r = j as b2RevoluteJoint | b2PrismaticJoint;
-          r.m_impulse.Set(state[s], state[s + 1], state[s + 2]);
-          r.m_motorImpulse = state[s + 3];
-          r.m_limitState = state[s + 4];
-          break;
-        }
-        case b2JointType.e_distanceJoint:
-          (j as b2DistanceJoint).m_impulse = state[s];
-          break;
-        case b2JointType.e_pulleyJoint:
-          (j as b2PulleyJoint).m_impulse = state[s];
-          break;
-        case b2JointType.e_mouseJoint:
-          (j as b2MouseJoint).m_impulse.Set(state[s], state[s + 1]);
-          break;
-        case b2JointType.e_gearJoint:
-          (j as b2GearJoint).m_impulse = state[s];
-          break;
-        case b2JointType.e_wheelJoint: {
-          const w = j as b2WheelJoint;
-          w.m_impulse = state[s];
-          w.m_springImpulse = state[s + 1];
-          w.m_motorImpulse = state[s + 2];
-          break;
-        }
-        case b2JointType.e_weldJoint:
-          (j as b2WeldJoint).m_impulse.Set(state[s], state[s + 1], state[s + 2]);
-          break;
-        case b2JointType.e_frictionJoint: {
-          const f = j as b2FrictionJoint;
-          f.m_linearImpulse.Set(state[s], state[s + 1]);
-          f.m_angularImpulse = state[s + 2];
-          break;
-        }
-        case b2JointType.e_ropeJoint: {
-          const r = j as b2RopeJoint;
-          r.m_impulse = state[s];
-          r.m_state = state[s + 4];
-          break;
-        }
-      }
+      unpackJointState(j, state, 8 * slot);
     }
-  }
-
-  /**
-   * A world point into jointParams' scratch record as bodies are held: its cell (i32 words at
-   * `cellAt`) and the float32 offset in it (at `offsetAt`), so a stage takes it into any body's cell.
-   */
-  private packWorldPoint(x: number, y: number, offsetAt: number, cellAt: number): void {
-    const S = this.cellSize;
-    const cx = Math.round(x / S);
-    const cy = Math.round(y / S);
-    this.jointParams.scratchF32[offsetAt] = x - cx * S;
-    this.jointParams.scratchF32[offsetAt + 1] = y - cy * S;
-    this.jointParams.scratchI32[cellAt] = cx;
-    this.jointParams.scratchI32[cellAt + 1] = cy;
   }
 
   private packJointGraph(edges: number[]): void {

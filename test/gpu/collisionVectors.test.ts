@@ -36,7 +36,7 @@ import { b2World } from '../../src/dynamics/b2World';
 import { GpuBroadPhase } from '../../src-gpu/broadphase/broadPhase';
 import { GpuNarrowPhase } from '../../src-gpu/narrowphase/narrowPhase';
 import { GpuPipeline } from '../../src-gpu/pipeline';
-import type { GpuContactRecord } from '../../src-gpu/narrowphase/narrowPhase';
+import type { GpuContactRecord } from '../../src-gpu/narrowphase/records';
 import type { GpuContext } from '../../src-gpu/device/device';
 import { GpuWorld } from '../../src-gpu/world/world';
 import { collisionVectors, makeShape, makeTransform } from '../support/collisionVectors';

@@ -35,7 +35,7 @@ import { GpuBroadPhase } from '../../src-gpu/broadphase/broadPhase';
 import { BIN } from '../../src-gpu/device/layout';
 import { GpuNarrowPhase } from '../../src-gpu/narrowphase/narrowPhase';
 import { GpuPipeline } from '../../src-gpu/pipeline';
-import type { GpuContactRecord } from '../../src-gpu/narrowphase/narrowPhase';
+import type { GpuContactRecord } from '../../src-gpu/narrowphase/records';
 import { GpuWorld } from '../../src-gpu/world/world';
 import { goldenSceneNames, loadGoldenScene } from '../support/scene';
 import { describeGpu } from './support';
