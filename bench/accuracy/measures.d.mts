@@ -1,0 +1,22 @@
+// Types for bench/accuracy/measures.mjs. The measures read any build of the engine through its
+// public fields, so the world and its parts are typed by what they read.
+
+/** What the measures read of a b2World (the engine's own class satisfies it). */
+export type MeasuredWorld = object;
+
+export function contactSeparations(contact: object): number[];
+export function penetration(world: MeasuredWorld): { mean: number; max: number; points: number };
+export function jointError(joint: object): { linear: number; angular: number };
+export function jointErrors(world: MeasuredWorld): { linear: number; angular: number; joints: number };
+export function dynamicBodies(world: MeasuredWorld): object[];
+export function energyAndMomentum(world: MeasuredWorld): {
+  kinetic: number;
+  potential: number;
+  total: number;
+  momentum: { x: number; y: number };
+  angular: number;
+};
+export function rmsSpeed(world: MeasuredWorld): number;
+export function positions(world: MeasuredWorld): Float64Array;
+export function trajectoryError(a: Float64Array, b: Float64Array): { max: number; rms: number };
+export function restingDrift(before: Float64Array, after: Float64Array): number;
