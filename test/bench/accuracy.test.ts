@@ -1,9 +1,12 @@
 // The accuracy study's measures (bench/accuracy/): each on a case whose answer is known, with the
 // engine itself; and the limit search on synthetic tests whose limit is known.
+import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import path from 'node:path';
 import { describe, expect, it } from 'vitest';
 import { b2CircleShape } from '../../src/collision/shapes/b2CircleShape';
 import { b2PolygonShape } from '../../src/collision/shapes/b2PolygonShape';
-import { b2Vec2 } from '../../src/common/b2Math';
+import { b2Rot, b2Vec2 } from '../../src/common/b2Math';
 import { b2_linearSlop, b2_polygonRadius } from '../../src/common/b2Settings';
 import { b2BodyDef, b2_dynamicBody } from '../../src/dynamics/b2Body';
 import type { b2Body } from '../../src/dynamics/b2Body';
@@ -12,6 +15,7 @@ import { b2RevoluteJointDef } from '../../src/dynamics/joints/b2RevoluteJoint';
 import { b2WeldJointDef } from '../../src/dynamics/joints/b2WeldJoint';
 import { agm, freeFall, pendulumPeriod } from '../../bench/accuracy/analytic.mjs';
 import { bisectLimit } from '../../bench/accuracy/limits.mjs';
+import { runAccuracy, writeAccuracy } from '../../bench/accuracy/run.mjs';
 import { energyAndMomentum, jointErrors, penetration, positions, restingDrift, trajectoryError } from '../../bench/accuracy/measures.mjs';
 
 const DT = 1 / 60;
@@ -69,7 +73,8 @@ describe('analytic answers', () => {
       const dt = 1 / hz;
       const world = new b2World(new b2Vec2(0, -10));
       const ground = body(world, 0, 0, false);
-      const bob = body(world, L * Math.sin(amplitude), -L * Math.cos(amplitude), true);
+      const q = new b2Rot(amplitude);
+      const bob = body(world, L * q.s, -L * q.c, true);
       circle(bob, r);
       const jd = new b2RevoluteJointDef();
       jd.Initialize(ground, bob, new b2Vec2(0, 0));
@@ -205,5 +210,47 @@ describe('bisectLimit', () => {
     expect(await bisectLimit(() => false, 0, 10)).toMatchObject({ limit: null, outside: 'below' });
     expect(await bisectLimit(() => true, 0, 10)).toMatchObject({ limit: 10, outside: 'above' });
     await expect(bisectLimit(() => true, 5, 5)).rejects.toThrow(/lo \(5\) must be finite and below hi \(5\)/);
+  });
+});
+
+describe('runAccuracy --quick', () => {
+  it('measures each scene under each method, marks the Pareto front, finds the stability limits, and writes JSON, Markdown and one chart per measure', async () => {
+    const b2 = await import('../../src/index');
+    const run = await runAccuracy(b2, { quick: true });
+    expect(run.schema).toBe('webphysics-accuracy/1');
+    expect(run.scenes.map((s) => s.id)).toEqual(['pendulum', 'bounce', 'slide', 'chain']);
+    for (const scene of run.scenes) {
+      expect(scene.results.map((r) => r.method)).toEqual(['iter-2-1', 'iter-8-3', 'substeps-2']);
+      for (const r of scene.results) expect(r.msPerSecond).toBeGreaterThan(0);
+      for (const measure of scene.measures) {
+        // The front gets cheaper-to-dearer and better at each point.
+        const front = scene.fronts[measure].map((id) => scene.results.find((r) => r.method === id)!);
+        expect(front.length).toBeGreaterThan(0);
+        for (let i = 1; i < front.length; ++i) {
+          expect(front[i].msPerSecond).toBeGreaterThanOrEqual(front[i - 1].msPerSecond);
+          expect(front[i].measures[measure]).toBeLessThan(front[i - 1].measures[measure]);
+        }
+      }
+    }
+    // The pendulum at 8/3 and 60 Hz: 1.05 % short, as the analytic test above finds; 2 substeps halve it.
+    const pendulum = run.scenes[0].results;
+    expect(pendulum[1].measures['period error']).toBeCloseTo(0.0105, 3);
+    expect(pendulum[2].measures['period error']).toBeLessThan(0.6 * pendulum[1].measures['period error']);
+    const limit = (id: string) => run.limits.find((l) => l.id === id)!;
+    // Without continuous physics a 0.05 m plate stops a 0.1 m ball only while no step can land past its middle.
+    expect(limit('tunnelling speed').limit).toBeGreaterThan(6);
+    expect(limit('tunnelling speed').limit).toBeLessThan(16);
+    expect(limit('tunnelling speed (continuous)').outside).toBe('above');
+    const dir = mkdtempSync(path.join(tmpdir(), 'accuracy-'));
+    try {
+      const files = writeAccuracy(run, dir).map((f) => path.basename(f));
+      expect(files).toContain('accuracy.json');
+      expect(files).toContain('accuracy-pendulum-period-error.svg');
+      expect(JSON.parse(readFileSync(path.join(dir, 'accuracy.json'), 'utf8')).scenes).toHaveLength(4);
+      expect(readFileSync(path.join(dir, 'accuracy.md'), 'utf8')).toMatch(/## Stability limits/);
+      expect(readFileSync(path.join(dir, 'accuracy-chain-joint-error.svg'), 'utf8')).toMatch(/^<svg[\s\S]*<polyline[\s\S]*<\/svg>\n$/);
+    } finally {
+      rmSync(dir, { recursive: true, force: true });
+    }
   });
 });

@@ -1,0 +1,123 @@
+// The accuracy study's report: the Pareto front of a scene's points for one measure, its chart
+// (SVG, log axes) and the Markdown summary with the stability limits.
+
+/** Units of the measures (docs/ACCURACY.md). */
+export const MEASURE_UNITS = {
+  'penetration max': 'm',
+  'penetration mean': 'm',
+  drift: 'm',
+  jitter: 'm/s',
+  'joint error': 'm',
+  'period error': 'relative',
+  'rebound error': 'relative',
+  'stopping error': 'relative',
+  'energy drift': 'relative',
+  'trajectory error': 'm',
+};
+
+/** Errors below this are drawn at it on the log axis (an exact answer has no logarithm). */
+const FLOOR = 1e-12;
+
+/**
+ * The results no other result beats on both cost and `measure` (lower time per simulated second
+ * and lower error), cheapest first; results whose error is not finite (a failed run) are left out.
+ */
+export function paretoFront(results, measure) {
+  const points = results.filter((r) => Number.isFinite(r.measures[measure])).sort((a, b) => a.msPerSecond - b.msPerSecond || a.measures[measure] - b.measures[measure]);
+  const front = [];
+  let best = Infinity;
+  for (const r of points) {
+    if (r.measures[measure] < best) {
+      front.push(r);
+      best = r.measures[measure];
+    }
+  }
+  return front;
+}
+
+const esc = (s) => String(s).replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;').replace(/"/g, '&quot;');
+const fmt = (v) => (v === 0 ? '0' : !Number.isFinite(v) ? String(v) : Math.abs(v) >= 0.01 && Math.abs(v) < 1000 ? v.toPrecision(3) : v.toExponential(2));
+
+/** Decades covering [lo, hi] (log10 bounds, at least one decade wide). */
+function decades(lo, hi) {
+  const a = Math.floor(Math.log10(lo));
+  const b = Math.max(a + 1, Math.ceil(Math.log10(hi)));
+  return [a, b];
+}
+
+/** The chart of one scene and measure: error against milliseconds per simulated second, both log scale. */
+export function paretoSvg(scene, measure, run) {
+  const labels = Object.fromEntries(run.methods.map((m) => [m.id, m.label]));
+  const points = scene.results.filter((r) => Number.isFinite(r.measures[measure]));
+  const front = new Set(scene.fronts[measure]);
+  const width = 760;
+  const height = 460;
+  const left = 80;
+  const right = 200;
+  const top = 72;
+  const bottom = 60;
+  const xs = points.map((r) => r.msPerSecond);
+  const ys = points.map((r) => Math.max(FLOOR, r.measures[measure]));
+  const [x0, x1] = decades(Math.min(...xs, 1), Math.max(...xs, 1));
+  const [y0, y1] = decades(Math.min(...ys, 1), Math.max(...ys, 1e-3));
+  const px = (v) => left + ((Math.log10(v) - x0) / (x1 - x0)) * (width - left - right);
+  const py = (v) => height - bottom - ((Math.log10(Math.max(FLOOR, v)) - y0) / (y1 - y0)) * (height - top - bottom);
+  const parts = [
+    `<svg xmlns="http://www.w3.org/2000/svg" width="${width}" height="${height}" viewBox="0 0 ${width} ${height}" font-family="Helvetica, Arial, sans-serif" font-size="12">`,
+    `<rect width="100%" height="100%" fill="#ffffff"/>`,
+    `<text x="12" y="22" font-size="15" font-weight="bold">${esc(`${scene.title}: ${measure} (${MEASURE_UNITS[measure] ?? ''})`)}</text>`,
+    `<text x="12" y="40" fill="#555">against the time to step one simulated second; lower left is better; the Pareto front in orange</text>`,
+    `<text x="12" y="56" fill="#555">${esc(`Node ${run.machine.node}, ${run.machine.cpuModel}, ${run.date.slice(0, 10)}`)}</text>`,
+  ];
+  for (let d = x0; d <= x1; ++d) {
+    const gx = px(10 ** d);
+    parts.push(`<line x1="${gx.toFixed(1)}" y1="${top}" x2="${gx.toFixed(1)}" y2="${height - bottom}" stroke="#e3e3e3"/>`, `<text x="${gx.toFixed(1)}" y="${height - bottom + 16}" text-anchor="middle" fill="#555">${esc(fmt(10 ** d))}</text>`);
+  }
+  for (let d = y0; d <= y1; ++d) {
+    const gy = py(10 ** d);
+    parts.push(`<line x1="${left}" y1="${gy.toFixed(1)}" x2="${width - right}" y2="${gy.toFixed(1)}" stroke="#e3e3e3"/>`, `<text x="${left - 6}" y="${(gy + 4).toFixed(1)}" text-anchor="end" fill="#555">${esc(fmt(10 ** d))}</text>`);
+  }
+  parts.push(`<text x="${(left + width - right) / 2}" y="${height - 20}" text-anchor="middle" fill="#555">ms of stepping per simulated second (log)</text>`);
+  const frontPoints = scene.fronts[measure].map((id) => points.find((r) => r.method === id)).filter(Boolean);
+  if (frontPoints.length > 1) {
+    parts.push(`<polyline fill="none" stroke="#f28e2b" stroke-width="2" points="${frontPoints.map((r) => `${px(r.msPerSecond).toFixed(1)},${py(r.measures[measure]).toFixed(1)}`).join(' ')}"/>`);
+  }
+  for (const r of points) {
+    const on = front.has(r.method);
+    const cx = px(r.msPerSecond);
+    const cy = py(r.measures[measure]);
+    parts.push(
+      `<circle cx="${cx.toFixed(1)}" cy="${cy.toFixed(1)}" r="${on ? 5 : 4}" fill="${on ? '#f28e2b' : '#4e79a7'}"><title>${esc(`${labels[r.method] ?? r.method}: ${fmt(r.msPerSecond)} ms per simulated second, ${measure} ${fmt(r.measures[measure])}`)}</title></circle>`,
+      `<text x="${(cx + 7).toFixed(1)}" y="${(cy + 4).toFixed(1)}" fill="#333" font-size="10">${esc(r.method)}</text>`,
+    );
+  }
+  const failed = scene.results.filter((r) => !Number.isFinite(r.measures[measure]));
+  if (failed.length > 0) parts.push(`<text x="${width - right + 10}" y="${top + 10}" fill="#a00">${esc(`no answer: ${failed.map((r) => r.method).join(', ')}`)}</text>`);
+  if (ys.some((v) => v === FLOOR)) parts.push(`<text x="${width - right + 10}" y="${top + 26}" fill="#555">${esc(`0 drawn at ${fmt(FLOOR)}`)}</text>`);
+  parts.push('</svg>');
+  return parts.join('\n') + '\n';
+}
+
+/** The study's summary: per scene, each method's cost and measures (front marked), then the limits. */
+export function accuracyMarkdown(run) {
+  const labels = Object.fromEntries(run.methods.map((m) => [m.id, m.label]));
+  const lines = ['# Accuracy: speed against error', '', `Node ${run.machine.node}, ${run.machine.cpus} x ${run.machine.cpuModel}, ${run.date}${run.quick ? ' (quick subset)' : ''}. The measures and scenes: docs/ACCURACY.md. * marks a point on the Pareto front of that measure.`, ''];
+  for (const scene of run.scenes) {
+    lines.push(`## ${scene.title} (${scene.seconds} s)`, '', `| method | ms per simulated second | ${scene.measures.map((m) => `${m} (${MEASURE_UNITS[m] ?? ''})`).join(' | ')} |`, `| --- | ---: |${' ---: |'.repeat(scene.measures.length)}`);
+    for (const r of scene.results) {
+      lines.push(`| ${labels[r.method] ?? r.method} | ${fmt(r.msPerSecond)} | ${scene.measures.map((m) => `${fmt(r.measures[m])}${scene.fronts[m].includes(r.method) ? ' *' : ''}`).join(' | ')} |`);
+    }
+    lines.push('');
+  }
+  if (run.limits.length > 0) {
+    lines.push('## Stability limits', '', '| limit | method | value | test | tests run |', '| --- | --- | ---: | --- | ---: |');
+    for (const l of run.limits) {
+      // Outside the range: not even the safe end passes ('below'), or the far end passes too ('above').
+      const [safe, far] = l.smallest ? [`above ${fmt(l.range[1])}`, `at most ${fmt(l.range[0])}`] : [`below ${fmt(l.range[0])}`, `at least ${fmt(l.range[1])}`];
+      const value = l.outside === 'below' ? safe : l.outside === 'above' ? far : fmt(l.limit);
+      lines.push(`| ${l.id} | ${labels[l.method] ?? l.method} | ${value} ${l.unit} | ${l.test} | ${l.tests} |`);
+    }
+    lines.push('');
+  }
+  return lines.join('\n');
+}

@@ -1,0 +1,261 @@
+#!/usr/bin/env node
+// The accuracy study: every scene of scenes.mjs stepped by every method of methods.mjs, each a
+// point (milliseconds per simulated second, error) per measure, and the stability limits of
+// limits.mjs; docs/ACCURACY.md says what each number means.
+//   node bench/accuracy/run.mjs [--scenes a,b] [--methods a,b] [--quick] [--no-limits]
+//                               [--out DIR] [--ours FILE]
+// writes accuracy.json, accuracy.md and one SVG chart per scene and measure (log axes, the Pareto
+// front highlighted) into bench/results/accuracy, or --out. `--quick` runs a small subset in a minute or
+// two (CI's tests run it). For programs: runAccuracy(b2, options) resolves to the results.
+
+import { mkdirSync, writeFileSync } from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import { parseArgs } from 'node:util';
+import { fileURLToPath, pathToFileURL } from 'node:url';
+import { bisectLimit } from './limits.mjs';
+import { DEFAULT_METHOD, METHODS, REFERENCE, applyMethod, methodById, stepFrame } from './methods.mjs';
+import { jointErrors, positions, trajectoryError } from './measures.mjs';
+import { ACCURACY_SCENES, ACCURACY_SCENE_IDS, buildChain, buildPyramid, buildStack } from './scenes.mjs';
+import { accuracyMarkdown, paretoFront, paretoSvg } from './report.mjs';
+
+const here = path.dirname(fileURLToPath(import.meta.url));
+const repoRoot = path.resolve(here, '../..');
+
+export const ACCURACY_SCHEMA = 'webphysics-accuracy/1';
+
+/** The scenes and methods of `--quick`. */
+const QUICK_SCENES = ['pendulum', 'bounce', 'slide', 'chain'];
+const QUICK_METHODS = ['iter-2-1', 'iter-8-3', 'substeps-2'];
+
+/** Runs `scene` under `m` once: the measures, the milliseconds of stepping per simulated second, the final positions. */
+function runSceneOnce(b2, scene, m) {
+  const { world, probe } = scene.build(b2);
+  applyMethod(world, m);
+  const frames = Math.round(scene.seconds * m.frameHz);
+  let stepping = 0;
+  for (let f = 1; f <= frames; ++f) {
+    const t0 = performance.now();
+    stepFrame(world, m);
+    stepping += performance.now() - t0;
+    probe.sample(f / m.frameHz);
+  }
+  return { measures: probe.result(), msPerSecond: stepping / scene.seconds, final: positions(world) };
+}
+
+/**
+ * Runs `scene` under `m` `rounds` times and keeps the fastest time (the first run of a method
+ * pays for compiling its code paths); the measures are the same in every run (the engine is
+ * deterministic), which is checked.
+ */
+function runScene(b2, scene, m, rounds) {
+  let best = runSceneOnce(b2, scene, m);
+  for (let i = 1; i < rounds; ++i) {
+    const r = runSceneOnce(b2, scene, m);
+    if (JSON.stringify(r.measures) !== JSON.stringify(best.measures)) throw new Error(`${m.id}: two runs of '${scene.title}' measured differently`);
+    if (r.msPerSecond < best.msPerSecond) best = r;
+  }
+  return best;
+}
+
+/**
+ * Whether a stack or pyramid still stands: its top box within half a box of where it started
+ * (settling under load moves it by up to about 0.3 m in a pyramid of base 20; a collapse, more).
+ */
+function stands(top, start) {
+  const p = top.GetPosition();
+  return Math.hypot(p.x - start.x, p.y - start.y) < 0.5;
+}
+
+/** Runs a world for `seconds` of `m`'s frames; calls `check` after each frame and stops when it says false. */
+function runWhile(world, m, seconds, check) {
+  applyMethod(world, m);
+  const frames = Math.round(seconds * m.frameHz);
+  for (let f = 1; f <= frames; ++f) {
+    stepFrame(world, m);
+    if (!check()) return false;
+  }
+  return true;
+}
+
+/** Standing 10 s: the stack's or pyramid's top box within half a box of where it started. */
+function standsFor(world, boxes, m, seconds = 10) {
+  const top = boxes[boxes.length - 1];
+  const start = { x: top.GetPosition().x, y: top.GetPosition().y };
+  return runWhile(world, m, seconds, () => stands(top, start));
+}
+
+/**
+ * The stability limits (docs/ACCURACY.md, "Stability limits"), each the limit of a stated test
+ * found by bisection, for method `m` (the time-step and iteration limits vary that one setting of it).
+ */
+export async function stabilityLimits(b2, m, { quick = false } = {}) {
+  const out = [];
+  const limit = async (id, test, unit, lo, hi, options, passes) => {
+    const r = await bisectLimit(passes, lo, hi, options);
+    out.push({ id, test, unit, method: m.id, range: [lo, hi], smallest: options.smallest === true, ...r });
+  };
+  await limit('stack height', 'the tallest column of unit boxes whose top box stays within 0.5 m of its start for 10 s', 'boxes', 2, quick ? 16 : 80, { integer: true }, (h) => {
+    const { world, boxes } = buildStack(b2, h);
+    return standsFor(world, boxes, m);
+  });
+  const base = quick ? 12 : 20;
+  await limit('iterations', `the fewest iterations (velocity and position, n of each) that keep a pyramid of base ${base} standing 10 s (top box within 0.5 m)`, 'iterations', 1, 32, { integer: true, smallest: true }, (n) => {
+    const { world, boxes } = buildPyramid(b2, base);
+    return standsFor(world, boxes, { ...m, velocityIterations: n, positionIterations: n });
+  });
+  await limit('frame time', "the longest frame (taken in the method's substeps) with which a pyramid of base 10 stands 10 s (top box within 0.5 m)", 's', 1 / 240, 1 / 4, { tolerance: 1e-3 }, (dt) => {
+    const { world, boxes } = buildPyramid(b2, 10);
+    return standsFor(world, boxes, { ...m, frameHz: 1 / dt });
+  });
+  await limit('mass ratio', 'log10 of the largest weight-to-link mass ratio at the end of a 10-link chain whose joints stay within 0.1 m for 5 s', 'log10 ratio', 0, 4, { tolerance: 0.02 }, (log10Ratio) => {
+    const { world } = buildChain(b2, 10, 10 ** log10Ratio);
+    return runWhile(world, m, 5, () => jointErrors(world).linear < 0.1);
+  });
+  // Whether a ball crossing the plate is stopped depends on where its steps fall (one landing in
+  // the plate's near half is pushed back, one past the middle out the far side): the test takes
+  // eight starts spread over one step's travel and passes only if the plate stops all of them,
+  // which makes it monotone in the speed.
+  const stopped = (speed, continuous, phase) => {
+    const world = new b2.b2World(new b2.b2Vec2(0, 0));
+    world.SetContinuousPhysics(continuous);
+    const plateDef = new b2.b2BodyDef();
+    plateDef.position.Set(5, 0);
+    const plate = world.CreateBody(plateDef);
+    const plateShape = new b2.b2PolygonShape();
+    plateShape.SetAsBox(0.025, 5);
+    plate.CreateFixture(plateShape, 0);
+    const ballDef = new b2.b2BodyDef();
+    ballDef.type = b2.b2_dynamicBody;
+    ballDef.position.Set((phase * speed) / (m.frameHz * m.substeps), 0);
+    const ball = world.CreateBody(ballDef);
+    const ballShape = new b2.b2CircleShape();
+    ballShape.m_radius = 0.1;
+    ball.CreateFixture(ballShape, 1);
+    ball.SetLinearVelocity(new b2.b2Vec2(speed, 0));
+    runWhile(world, m, 1, () => true);
+    return ball.GetPosition().x < 5;
+  };
+  for (const continuous of [false, true]) {
+    await limit(
+      continuous ? 'tunnelling speed (continuous)' : 'tunnelling speed',
+      `the fastest ball (radius 0.1 m) that a static plate 0.05 m thick stops from any of 8 starts over one step, continuous physics ${continuous ? 'on' : 'off'} (at most b2_maxTranslation per step)`,
+      'm/s',
+      1,
+      2 * m.frameHz * m.substeps,
+      { tolerance: 0.5 },
+      (speed) => {
+        for (let k = 0; k < 8; ++k) if (!stopped(speed, continuous, k / 8)) return false;
+        return true;
+      },
+    );
+  }
+  return out;
+}
+
+/**
+ * The study with engine module `b2` (the exports of webphysics): each scene under each method,
+ * the trajectory scenes against REFERENCE, the Pareto front per scene and measure, and each
+ * method's stability limits.
+ */
+export async function runAccuracy(b2, options = {}) {
+  const quick = options.quick === true;
+  const sceneIds = options.scenes ?? (quick ? QUICK_SCENES : ACCURACY_SCENE_IDS);
+  const methods = (options.methods ?? (quick ? QUICK_METHODS : METHODS.map((m) => m.id))).map(methodById);
+  const log = options.log ?? (() => {});
+  const rounds = options.rounds ?? 2;
+  const scenes = [];
+  for (const id of sceneIds) {
+    const scene = ACCURACY_SCENES[id];
+    if (!scene) throw new RangeError(`unknown scene '${id}': ${ACCURACY_SCENE_IDS.join(', ')}`);
+    const reference = scene.trajectory ? runSceneOnce(b2, scene, REFERENCE).final : null;
+    // Untimed: the scene's code paths compiled before the first method is timed.
+    runSceneOnce(b2, scene, DEFAULT_METHOD);
+    const results = [];
+    for (const m of methods) {
+      const r = runScene(b2, scene, m, rounds);
+      const measures = { ...r.measures };
+      if (reference) measures['trajectory error'] = trajectoryError(reference, r.final).max;
+      results.push({ method: m.id, msPerSecond: r.msPerSecond, measures });
+      log(`${id} / ${m.id}: ${r.msPerSecond.toFixed(2)} ms per simulated second, ${JSON.stringify(measures)}`);
+    }
+    const measureNames = Object.keys(results[0]?.measures ?? {});
+    const fronts = Object.fromEntries(measureNames.map((name) => [name, paretoFront(results, name).map((r) => r.method)]));
+    scenes.push({ id, title: scene.title, seconds: scene.seconds, measures: measureNames, results, fronts });
+  }
+  // Every method's limits; --quick: the default method's only.
+  const limits = [];
+  if (options.limits !== false) for (const m of quick ? [DEFAULT_METHOD] : methods) limits.push(...(await stabilityLimits(b2, m, { quick })));
+  for (const l of limits) log(`limit ${l.id}: ${l.limit} ${l.unit}${l.outside ? ` (${l.outside} the range)` : ''} after ${l.tests} tests`);
+  const cpus = os.cpus();
+  return {
+    schema: ACCURACY_SCHEMA,
+    date: new Date().toISOString(),
+    quick,
+    machine: { cpus: cpus.length, cpuModel: cpus[0]?.model ?? 'unknown', node: process.version },
+    methods: [...methods, ...(sceneIds.some((id) => ACCURACY_SCENES[id].trajectory) ? [REFERENCE] : [])],
+    scenes,
+    limits,
+  };
+}
+
+/** Writes accuracy.json, accuracy.md and the charts into `dir`; returns the files written. */
+export function writeAccuracy(results, dir) {
+  mkdirSync(dir, { recursive: true });
+  const files = [path.join(dir, 'accuracy.json'), path.join(dir, 'accuracy.md')];
+  writeFileSync(files[0], JSON.stringify(results, null, 2) + '\n');
+  writeFileSync(files[1], accuracyMarkdown(results));
+  for (const scene of results.scenes) {
+    for (const measure of scene.measures) {
+      const file = path.join(dir, `accuracy-${scene.id}-${measure.replaceAll(' ', '-')}.svg`);
+      writeFileSync(file, paretoSvg(scene, measure, results));
+      files.push(file);
+    }
+  }
+  return files;
+}
+
+const USAGE = `usage: node bench/accuracy/run.mjs [--scenes a,b] [--methods a,b] [--quick] [--no-limits] [--out DIR] [--ours FILE]
+  scenes:  ${ACCURACY_SCENE_IDS.join(', ')}
+  methods: ${METHODS.map((m) => m.id).join(', ')}`;
+
+async function main() {
+  const { values } = parseArgs({
+    options: {
+      scenes: { type: 'string' },
+      methods: { type: 'string' },
+      quick: { type: 'boolean', default: false },
+      'no-limits': { type: 'boolean', default: false },
+      out: { type: 'string' },
+      ours: { type: 'string' },
+      help: { type: 'boolean', default: false },
+    },
+  });
+  if (values.help) {
+    process.stdout.write(USAGE + '\n');
+    return;
+  }
+  let bundle = values.ours;
+  if (!bundle) {
+    const { buildOurs } = await import('../harness.mjs');
+    bundle = buildOurs((s) => process.stderr.write(s + '\n')).bundle;
+  }
+  const b2 = await import(pathToFileURL(path.resolve(bundle)).href);
+  const results = await runAccuracy(b2, {
+    quick: values.quick,
+    scenes: values.scenes?.split(','),
+    methods: values.methods?.split(','),
+    limits: !values['no-limits'],
+    log: (s) => process.stderr.write(s + '\n'),
+  });
+  const dir = values.out ?? path.join(repoRoot, 'bench', 'results', 'accuracy');
+  for (const f of writeAccuracy(results, dir)) process.stderr.write(`wrote ${path.relative(process.cwd(), f)}\n`);
+  process.stdout.write(accuracyMarkdown(results));
+}
+
+if (import.meta.url === pathToFileURL(process.argv[1] ?? '').href) {
+  main().catch((e) => {
+    process.stderr.write(`${e instanceof Error ? e.message : e}\n${USAGE}\n`);
+    process.exit(1);
+  });
+}
