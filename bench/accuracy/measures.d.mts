@@ -4,8 +4,9 @@
 /** What the measures read of a b2World (the engine's own class satisfies it). */
 export type MeasuredWorld = object;
 
-export function contactSeparations(contact: object): number[];
-export function penetration(world: MeasuredWorld): { mean: number; max: number; points: number };
+export function manifoldSeparations(manifold: object, xfA: object, xfB: object, radii: number): number[];
+/** `b2`: the engine's exports (its collide functions and shapes). */
+export function penetration(b2: unknown, world: MeasuredWorld): { mean: number; max: number; points: number };
 export function jointError(joint: object): { linear: number; angular: number };
 export function jointErrors(world: MeasuredWorld): { linear: number; angular: number; joints: number };
 export function dynamicBodies(world: MeasuredWorld): object[];

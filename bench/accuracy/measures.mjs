@@ -1,7 +1,9 @@
 // Accuracy measures of a Box2D 2.2.1 world (docs/ACCURACY.md defines each, with its formula and
-// unit). They read a world through the engine's public fields only (m_bodyList, m_jointList, the
-// contact manager's list, m_xf, m_sweep), so they take the JavaScript engine's world and a world
-// the GPU backend has synchronised alike. Nothing here steps a world or changes one.
+// unit). They read a world through the engine's public fields only (m_bodyList, m_jointList,
+// m_xf, m_sweep, the fixtures' shapes), so they take the JavaScript engine's world and a world
+// the GPU backend has synchronised alike (world.PullState() first brings every body to the last
+// synchronisation; the contacts live on the GPU, so penetration computes its manifolds from the
+// shapes with the engine's collide functions). Nothing here steps a world or changes its state.
 
 // b2Manifold::Type and b2JointType (src/common/b2Constants.ts), as numbers: the measures take any
 // build of the engine, so they import none of its modules.
@@ -9,8 +11,12 @@ const MANIFOLD_CIRCLES = 0;
 const MANIFOLD_FACE_A = 1;
 const MANIFOLD_FACE_B = 2;
 const JOINT = { revolute: 1, prismatic: 2, distance: 3, pulley: 4, mouse: 5, gear: 6, wheel: 7, weld: 8, friction: 9, rope: 10 };
-const TOUCHING_FLAG = 0x0002;
 const STATIC_BODY = 0;
+// b2ShapeType.
+const CIRCLE = 0;
+const EDGE = 1;
+const POLYGON = 2;
+const CHAIN = 3;
 
 /** x, y of transform `xf` applied to local point `p`. */
 function mulXf(xf, p) {
@@ -23,16 +29,10 @@ function mulRot(xf, v) {
 }
 
 /**
- * The separation of each manifold point of a contact (metres, negative when the shapes overlap),
- * as b2PositionSolverManifold computes it from the bodies' transforms now.
+ * The separation of each point of manifold `m` (metres, negative when the shapes overlap), as
+ * b2PositionSolverManifold computes it from transforms xfA and xfB and the shapes' radii.
  */
-export function contactSeparations(contact) {
-  const m = contact.m_manifold;
-  const fA = contact.m_fixtureA;
-  const fB = contact.m_fixtureB;
-  const xfA = fA.m_body.m_xf;
-  const xfB = fB.m_body.m_xf;
-  const radii = fA.m_shape.m_radius + fB.m_shape.m_radius;
+export function manifoldSeparations(m, xfA, xfB, radii) {
   const out = [];
   if (m.pointCount === 0) return out;
   if (m.type === MANIFOLD_CIRCLES) {
@@ -41,7 +41,7 @@ export function contactSeparations(contact) {
     out.push(Math.hypot(b.x - a.x, b.y - a.y) - radii);
     return out;
   }
-  if (m.type !== MANIFOLD_FACE_A && m.type !== MANIFOLD_FACE_B) throw new Error(`contactSeparations: unknown manifold type ${m.type}`);
+  if (m.type !== MANIFOLD_FACE_A && m.type !== MANIFOLD_FACE_B) throw new Error(`manifoldSeparations: unknown manifold type ${m.type}`);
   const faceA = m.type === MANIFOLD_FACE_A;
   const xfFace = faceA ? xfA : xfB;
   const xfClip = faceA ? xfB : xfA;
@@ -54,21 +54,75 @@ export function contactSeparations(contact) {
   return out;
 }
 
+/** The shapes of a fixture as the narrow phase sees them: a chain's children as edges. */
+function childShapes(b2, fixture) {
+  const shape = fixture.m_shape;
+  if (shape.m_type !== CHAIN) return [shape];
+  const out = [];
+  for (let i = 0; i < shape.GetChildCount(); ++i) {
+    const edge = new b2.b2EdgeShape();
+    shape.GetChildEdge(edge, i);
+    out.push(edge);
+  }
+  return out;
+}
+
 /**
- * Penetration (metres): over every manifold point of the touching, non-sensor contacts, the
- * overlap depth max(0, -separation); its mean and maximum, and the number of points.
+ * The manifold of two shapes at their bodies' transforms, with the engine's collide function for
+ * the pair (b2Contact's registry order: polygon before circle, edge before circle or polygon);
+ * null for a pair Box2D makes no contact for (edge against edge).
  */
-export function penetration(world) {
+function collide(b2, shapeA, xfA, shapeB, xfB) {
+  let [a, b, ta, tb] = [shapeA, shapeB, xfA, xfB];
+  if (a.m_type === CIRCLE && b.m_type !== CIRCLE) [a, b, ta, tb] = [b, a, tb, ta];
+  if (a.m_type === POLYGON && b.m_type === EDGE) [a, b, ta, tb] = [b, a, tb, ta];
+  const m = new b2.b2Manifold();
+  if (a.m_type === CIRCLE) b2.b2CollideCircles(m, a, ta, b, tb);
+  else if (a.m_type === POLYGON && b.m_type === CIRCLE) b2.b2CollidePolygonAndCircle(m, a, ta, b, tb);
+  else if (a.m_type === POLYGON) b2.b2CollidePolygons(m, a, ta, b, tb);
+  else if (a.m_type === EDGE && b.m_type === CIRCLE) b2.b2CollideEdgeAndCircle(m, a, ta, b, tb);
+  else if (a.m_type === EDGE && b.m_type === POLYGON) b2.b2CollideEdgeAndPolygon(m, a, ta, b, tb);
+  else return null;
+  return { manifold: m, xfA: ta, xfB: tb, radii: a.m_radius + b.m_radius };
+}
+
+/**
+ * Penetration (metres): the shapes' manifolds computed now, with the engine `b2` (the exports of
+ * webphysics), for every pair of non-sensor fixtures of two bodies, at least one of them dynamic,
+ * whose bounding boxes overlap; over their points, the overlap depth max(0, -separation). Its
+ * mean over the overlapping points, its maximum, and the number of overlapping points.
+ */
+export function penetration(b2, world) {
+  world.PullState();
+  const entries = [];
+  for (let body = world.m_bodyList; body; body = body.m_next) {
+    for (let f = body.m_fixtureList; f; f = f.m_next) {
+      if (f.m_isSensor) continue;
+      for (const shape of childShapes(b2, f)) {
+        const aabb = new b2.b2AABB();
+        shape.ComputeAABB(aabb, body.m_xf, 0);
+        entries.push({ body, shape, aabb });
+      }
+    }
+  }
   let sum = 0;
   let max = 0;
   let points = 0;
-  for (let c = world.m_contactManager.m_contactList; c; c = c.m_next) {
-    if ((c.m_flags & TOUCHING_FLAG) === 0 || c.m_fixtureA.m_isSensor || c.m_fixtureB.m_isSensor) continue;
-    for (const s of contactSeparations(c)) {
-      const depth = Math.max(0, -s);
-      sum += depth;
-      if (depth > max) max = depth;
-      points++;
+  for (let i = 0; i < entries.length; ++i) {
+    const p = entries[i];
+    for (let j = i + 1; j < entries.length; ++j) {
+      const q = entries[j];
+      if (p.body === q.body || (p.body.m_type === STATIC_BODY && q.body.m_type === STATIC_BODY)) continue;
+      if (p.aabb.upperBound.x < q.aabb.lowerBound.x || q.aabb.upperBound.x < p.aabb.lowerBound.x) continue;
+      if (p.aabb.upperBound.y < q.aabb.lowerBound.y || q.aabb.upperBound.y < p.aabb.lowerBound.y) continue;
+      const c = collide(b2, p.shape, p.body.m_xf, q.shape, q.body.m_xf);
+      if (c === null) continue;
+      for (const s of manifoldSeparations(c.manifold, c.xfA, c.xfB, c.radii)) {
+        if (s >= 0) continue;
+        sum -= s;
+        if (-s > max) max = -s;
+        points++;
+      }
     }
   }
   return { mean: points > 0 ? sum / points : 0, max, points };
@@ -150,6 +204,7 @@ export function jointError(joint) {
 
 /** The largest linear (m) and angular (rad) joint error in the world, and the joints measured. */
 export function jointErrors(world) {
+  world.PullState();
   let linear = 0;
   let angular = 0;
   let joints = 0;
@@ -174,6 +229,7 @@ export function dynamicBodies(world) {
  * (kg m/s) and angular momentum about the origin (kg m²/s) of the world's bodies.
  */
 export function energyAndMomentum(world) {
+  world.PullState();
   const g = world.m_gravity;
   let kinetic = 0;
   let potential = 0;
@@ -195,6 +251,7 @@ export function energyAndMomentum(world) {
 
 /** Root mean square of the dynamic bodies' linear speed (m/s): the jitter of bodies that should rest. */
 export function rmsSpeed(world) {
+  world.PullState();
   const bodies = dynamicBodies(world);
   if (bodies.length === 0) return 0;
   let sum = 0;
@@ -204,6 +261,7 @@ export function rmsSpeed(world) {
 
 /** The dynamic bodies' centres, x and y interleaved. */
 export function positions(world) {
+  world.PullState();
   const bodies = dynamicBodies(world);
   const out = new Float64Array(2 * bodies.length);
   bodies.forEach((b, i) => {

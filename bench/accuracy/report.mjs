@@ -18,12 +18,19 @@ export const MEASURE_UNITS = {
 /** Errors below this are drawn at it on the log axis (an exact answer has no logarithm). */
 const FLOOR = 1e-12;
 
+/** A result's name: its method's label, after the backend's name on the GPU. */
+function labelOf(run, r) {
+  const label = run.methods.find((m) => m.id === r.method)?.label ?? r.method;
+  return r.backend === 'webgpu' ? `WebGPU, ${label}` : label;
+}
+
 /**
  * The results no other result beats on both cost and `measure` (lower time per simulated second
- * and lower error), cheapest first; results whose error is not finite (a failed run) are left out.
+ * and lower error), cheapest first; results whose error is not finite (a failed run) or that
+ * were not timed (the GPU on a software adapter) are left out.
  */
 export function paretoFront(results, measure) {
-  const points = results.filter((r) => Number.isFinite(r.measures[measure])).sort((a, b) => a.msPerSecond - b.msPerSecond || a.measures[measure] - b.measures[measure]);
+  const points = results.filter((r) => r.msPerSecond !== null && Number.isFinite(r.measures[measure])).sort((a, b) => a.msPerSecond - b.msPerSecond || a.measures[measure] - b.measures[measure]);
   const front = [];
   let best = Infinity;
   for (const r of points) {
@@ -47,8 +54,8 @@ function decades(lo, hi) {
 
 /** The chart of one scene and measure: error against milliseconds per simulated second, both log scale. */
 export function paretoSvg(scene, measure, run) {
-  const labels = Object.fromEntries(run.methods.map((m) => [m.id, m.label]));
-  const points = scene.results.filter((r) => Number.isFinite(r.measures[measure]));
+  const points = scene.results.filter((r) => r.msPerSecond !== null && Number.isFinite(r.measures[measure]));
+  const untimed = scene.results.filter((r) => r.msPerSecond === null);
   const front = new Set(scene.fronts[measure]);
   const width = 760;
   const height = 460;
@@ -78,22 +85,26 @@ export function paretoSvg(scene, measure, run) {
     parts.push(`<line x1="${left}" y1="${gy.toFixed(1)}" x2="${width - right}" y2="${gy.toFixed(1)}" stroke="#e3e3e3"/>`, `<text x="${left - 6}" y="${(gy + 4).toFixed(1)}" text-anchor="end" fill="#555">${esc(fmt(10 ** d))}</text>`);
   }
   parts.push(`<text x="${(left + width - right) / 2}" y="${height - 20}" text-anchor="middle" fill="#555">ms of stepping per simulated second (log)</text>`);
-  const frontPoints = scene.fronts[measure].map((id) => points.find((r) => r.method === id)).filter(Boolean);
+  const frontPoints = scene.fronts[measure].map((key) => points.find((r) => r.key === key)).filter(Boolean);
   if (frontPoints.length > 1) {
     parts.push(`<polyline fill="none" stroke="#f28e2b" stroke-width="2" points="${frontPoints.map((r) => `${px(r.msPerSecond).toFixed(1)},${py(r.measures[measure]).toFixed(1)}`).join(' ')}"/>`);
   }
   for (const r of points) {
-    const on = front.has(r.method);
+    const on = front.has(r.key);
     const cx = px(r.msPerSecond);
     const cy = py(r.measures[measure]);
     parts.push(
-      `<circle cx="${cx.toFixed(1)}" cy="${cy.toFixed(1)}" r="${on ? 5 : 4}" fill="${on ? '#f28e2b' : '#4e79a7'}"><title>${esc(`${labels[r.method] ?? r.method}: ${fmt(r.msPerSecond)} ms per simulated second, ${measure} ${fmt(r.measures[measure])}`)}</title></circle>`,
-      `<text x="${(cx + 7).toFixed(1)}" y="${(cy + 4).toFixed(1)}" fill="#333" font-size="10">${esc(r.method)}</text>`,
+      `<circle cx="${cx.toFixed(1)}" cy="${cy.toFixed(1)}" r="${on ? 5 : 4}" fill="${on ? '#f28e2b' : r.backend === 'webgpu' ? '#59a14f' : '#4e79a7'}"><title>${esc(`${labelOf(run, r)}: ${fmt(r.msPerSecond)} ms per simulated second, ${measure} ${fmt(r.measures[measure])}`)}</title></circle>`,
+      `<text x="${(cx + 7).toFixed(1)}" y="${(cy + 4).toFixed(1)}" fill="#333" font-size="10">${esc(r.key)}</text>`,
     );
   }
+  // Notes at the right: failed runs, exact answers, and the GPU's untimed points with their errors.
+  const notes = [];
   const failed = scene.results.filter((r) => !Number.isFinite(r.measures[measure]));
-  if (failed.length > 0) parts.push(`<text x="${width - right + 10}" y="${top + 10}" fill="#a00">${esc(`no answer: ${failed.map((r) => r.method).join(', ')}`)}</text>`);
-  if (ys.some((v) => v === FLOOR)) parts.push(`<text x="${width - right + 10}" y="${top + 26}" fill="#555">${esc(`0 drawn at ${fmt(FLOOR)}`)}</text>`);
+  if (failed.length > 0) notes.push([`no answer: ${failed.map((r) => r.key).join(', ')}`, '#a00']);
+  if (ys.some((v) => v === FLOOR)) notes.push([`0 drawn at ${fmt(FLOOR)}`, '#555']);
+  if (untimed.length > 0) notes.push(['untimed (software adapter):', '#59a14f'], ...untimed.map((r) => [`${r.key}: ${fmt(r.measures[measure])}`, '#59a14f']));
+  notes.forEach(([text, colour], i) => parts.push(`<text x="${width - right + 10}" y="${top + 10 + 16 * i}" fill="${colour}" font-size="11">${esc(text)}</text>`));
   parts.push('</svg>');
   return parts.join('\n') + '\n';
 }
@@ -101,11 +112,12 @@ export function paretoSvg(scene, measure, run) {
 /** The study's summary: per scene, each method's cost and measures (front marked), then the limits. */
 export function accuracyMarkdown(run) {
   const labels = Object.fromEntries(run.methods.map((m) => [m.id, m.label]));
-  const lines = ['# Accuracy: speed against error', '', `Node ${run.machine.node}, ${run.machine.cpus} x ${run.machine.cpuModel}, ${run.date}${run.quick ? ' (quick subset)' : ''}. The measures and scenes: docs/ACCURACY.md. * marks a point on the Pareto front of that measure.`, ''];
+  const gpu = run.machine.gpu ? ` WebGPU: ${run.machine.gpu.description || run.machine.gpu.device} (${run.machine.gpu.software ? 'software: accuracy only, not timed' : 'timed'}).` : '';
+  const lines = ['# Accuracy: speed against error', '', `Node ${run.machine.node}, ${run.machine.cpus} x ${run.machine.cpuModel}, ${run.date}${run.quick ? ' (quick subset)' : ''}.${gpu} The measures and scenes: docs/ACCURACY.md. * marks a point on the Pareto front of that measure.`, ''];
   for (const scene of run.scenes) {
     lines.push(`## ${scene.title} (${scene.seconds} s)`, '', `| method | ms per simulated second | ${scene.measures.map((m) => `${m} (${MEASURE_UNITS[m] ?? ''})`).join(' | ')} |`, `| --- | ---: |${' ---: |'.repeat(scene.measures.length)}`);
     for (const r of scene.results) {
-      lines.push(`| ${labels[r.method] ?? r.method} | ${fmt(r.msPerSecond)} | ${scene.measures.map((m) => `${fmt(r.measures[m])}${scene.fronts[m].includes(r.method) ? ' *' : ''}`).join(' | ')} |`);
+      lines.push(`| ${labelOf(run, r)} | ${r.msPerSecond === null ? 'untimed' : fmt(r.msPerSecond)} | ${scene.measures.map((m) => `${fmt(r.measures[m])}${scene.fronts[m].includes(r.key) ? ' *' : ''}`).join(' | ')} |`);
     }
     lines.push('');
   }

@@ -12,8 +12,12 @@ export interface AccuracyMethod {
 }
 
 export interface AccuracyResult {
+  /** The method's id, after 'webgpu ' for the GPU's runs. */
+  key: string;
   method: string;
-  msPerSecond: number;
+  backend: 'js' | 'webgpu';
+  /** null: not timed (the GPU on a software adapter). */
+  msPerSecond: number | null;
   measures: Record<string, number>;
 }
 
@@ -23,7 +27,7 @@ export interface AccuracyScene {
   seconds: number;
   measures: string[];
   results: AccuracyResult[];
-  /** Per measure, the methods on the Pareto front, cheapest first. */
+  /** Per measure, the keys of the results on the Pareto front, cheapest first. */
   fronts: Record<string, string[]>;
 }
 
@@ -40,13 +44,21 @@ export interface AccuracyRun {
   schema: string;
   date: string;
   quick: boolean;
-  machine: { cpus: number; cpuModel: string; node: string };
+  machine: { cpus: number; cpuModel: string; node: string; gpu: object | null };
   methods: AccuracyMethod[];
   scenes: AccuracyScene[];
   limits: AccuracyLimit[];
 }
 
+export interface GpuRunner {
+  adapter: { description: string; device: string; software: boolean };
+  timed: boolean;
+  create(): Promise<unknown>;
+}
+
 export interface AccuracyOptions {
+  gpu?: GpuRunner | null;
+  gpuMethods?: string[];
   quick?: boolean;
   scenes?: string[];
   methods?: string[];
@@ -58,4 +70,5 @@ export interface AccuracyOptions {
 export const ACCURACY_SCHEMA: string;
 export function runAccuracy(b2: unknown, options?: AccuracyOptions): Promise<AccuracyRun>;
 export function stabilityLimits(b2: unknown, method: AccuracyMethod, options?: { quick?: boolean }): Promise<AccuracyLimit[]>;
+export function gpuBackend(gpuBundle: string): Promise<GpuRunner>;
 export function writeAccuracy(results: AccuracyRun, dir: string): string[];

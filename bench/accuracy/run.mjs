@@ -2,11 +2,13 @@
 // The accuracy study: every scene of scenes.mjs stepped by every method of methods.mjs, each a
 // point (milliseconds per simulated second, error) per measure, and the stability limits of
 // limits.mjs; docs/ACCURACY.md says what each number means.
-//   node bench/accuracy/run.mjs [--scenes a,b] [--methods a,b] [--quick] [--no-limits]
+//   node bench/accuracy/run.mjs [--scenes a,b] [--methods a,b] [--quick] [--no-limits] [--gpu]
 //                               [--out DIR] [--ours FILE]
 // writes accuracy.json, accuracy.md and one SVG chart per scene and measure (log axes, the Pareto
 // front highlighted) into bench/results/accuracy, or --out. `--quick` runs a small subset in a minute or
-// two (CI's tests run it). For programs: runAccuracy(b2, options) resolves to the results.
+// two (CI's tests run it). `--gpu` adds the WebGPU backend's runs of some methods (on a software
+// adapter such as SwiftShader their errors are reported and their times are not). For programs:
+// runAccuracy(b2, options) resolves to the results.
 
 import { mkdirSync, writeFileSync } from 'node:fs';
 import os from 'node:os';
@@ -27,20 +29,48 @@ export const ACCURACY_SCHEMA = 'webphysics-accuracy/1';
 /** The scenes and methods of `--quick`. */
 const QUICK_SCENES = ['pendulum', 'bounce', 'slide', 'chain'];
 const QUICK_METHODS = ['iter-2-1', 'iter-8-3', 'substeps-2'];
+/** The methods the WebGPU backend runs with --gpu (on SwiftShader a frame takes tens of milliseconds). */
+const GPU_METHODS = ['iter-4-2', 'iter-8-3', 'iter-16-6', 'dt-30', 'substeps-2'];
 
-/** Runs `scene` under `m` once: the measures, the milliseconds of stepping per simulated second, the final positions. */
-function runSceneOnce(b2, scene, m) {
+/**
+ * Runs `scene` under `m` once, on the JavaScript engine or, given `gpu` (gpuBackend()), on the
+ * WebGPU backend (each frame's steps, then world.Synchronize()): the measures, the milliseconds
+ * of stepping per simulated second, the final positions.
+ */
+async function runSceneOnce(b2, scene, m, gpu = null) {
   const { world, probe } = scene.build(b2);
   applyMethod(world, m);
-  const frames = Math.round(scene.seconds * m.frameHz);
-  let stepping = 0;
-  for (let f = 1; f <= frames; ++f) {
-    const t0 = performance.now();
-    stepFrame(world, m);
-    stepping += performance.now() - t0;
-    probe.sample(f / m.frameHz);
+  const backend = gpu === null ? null : await gpu.create();
+  if (backend !== null) await world.SetBackend(backend);
+  try {
+    const frames = Math.round(scene.seconds * m.frameHz);
+    let stepping = 0;
+    for (let f = 1; f <= frames; ++f) {
+      const t0 = performance.now();
+      stepFrame(world, m);
+      if (backend !== null) await world.Synchronize();
+      stepping += performance.now() - t0;
+      probe.sample(f / m.frameHz);
+    }
+    return { measures: probe.result(), msPerSecond: stepping / scene.seconds, final: positions(world) };
+  } finally {
+    await backend?.destroy();
   }
-  return { measures: probe.result(), msPerSecond: stepping / scene.seconds, final: positions(world) };
+}
+
+/**
+ * The WebGPU backend of webphysics-gpu.mjs beside the engine bundle, on one device: `create()`
+ * makes a backend for a world, `timed` says whether its times mean anything (not on a software
+ * adapter such as SwiftShader, which the study still uses for the GPU's accuracy).
+ */
+export async function gpuBackend(gpuBundle) {
+  const gpu = await import(pathToFileURL(path.resolve(gpuBundle)).href);
+  const context = await gpu.requestGpu({ skipValidation: true });
+  return {
+    adapter: context.adapterInfo,
+    timed: !context.adapterInfo.software,
+    create: () => gpu.WebGPUBackend.create({ context }),
+  };
 }
 
 /**
@@ -48,10 +78,10 @@ function runSceneOnce(b2, scene, m) {
  * pays for compiling its code paths); the measures are the same in every run (the engine is
  * deterministic), which is checked.
  */
-function runScene(b2, scene, m, rounds) {
-  let best = runSceneOnce(b2, scene, m);
+async function runScene(b2, scene, m, rounds, gpu = null) {
+  let best = await runSceneOnce(b2, scene, m, gpu);
   for (let i = 1; i < rounds; ++i) {
-    const r = runSceneOnce(b2, scene, m);
+    const r = await runSceneOnce(b2, scene, m, gpu);
     if (JSON.stringify(r.measures) !== JSON.stringify(best.measures)) throw new Error(`${m.id}: two runs of '${scene.title}' measured differently`);
     if (r.msPerSecond < best.msPerSecond) best = r;
   }
@@ -164,23 +194,28 @@ export async function runAccuracy(b2, options = {}) {
   const methods = (options.methods ?? (quick ? QUICK_METHODS : METHODS.map((m) => m.id))).map(methodById);
   const log = options.log ?? (() => {});
   const rounds = options.rounds ?? 2;
+  const gpu = options.gpu ?? null;
+  const gpuMethods = gpu === null ? [] : (options.gpuMethods ?? GPU_METHODS).map(methodById);
   const scenes = [];
   for (const id of sceneIds) {
     const scene = ACCURACY_SCENES[id];
     if (!scene) throw new RangeError(`unknown scene '${id}': ${ACCURACY_SCENE_IDS.join(', ')}`);
-    const reference = scene.trajectory ? runSceneOnce(b2, scene, REFERENCE).final : null;
+    const reference = scene.trajectory ? (await runSceneOnce(b2, scene, REFERENCE)).final : null;
     // Untimed: the scene's code paths compiled before the first method is timed.
-    runSceneOnce(b2, scene, DEFAULT_METHOD);
+    await runSceneOnce(b2, scene, DEFAULT_METHOD);
     const results = [];
-    for (const m of methods) {
-      const r = runScene(b2, scene, m, rounds);
+    const record = (backend, m, r) => {
       const measures = { ...r.measures };
       if (reference) measures['trajectory error'] = trajectoryError(reference, r.final).max;
-      results.push({ method: m.id, msPerSecond: r.msPerSecond, measures });
-      log(`${id} / ${m.id}: ${r.msPerSecond.toFixed(2)} ms per simulated second, ${JSON.stringify(measures)}`);
-    }
+      const msPerSecond = backend === 'webgpu' && !gpu.timed ? null : r.msPerSecond;
+      results.push({ key: backend === 'js' ? m.id : `${backend} ${m.id}`, method: m.id, backend, msPerSecond, measures });
+      log(`${id} / ${backend} ${m.id}: ${msPerSecond === null ? 'untimed' : `${msPerSecond.toFixed(2)} ms per simulated second`}, ${JSON.stringify(measures)}`);
+    };
+    for (const m of methods) record('js', m, await runScene(b2, scene, m, rounds));
+    // The GPU's runs: one each (untimed on a software adapter; deterministic either way).
+    for (const m of gpuMethods) record('webgpu', m, await runScene(b2, scene, m, gpu.timed ? rounds : 1, gpu));
     const measureNames = Object.keys(results[0]?.measures ?? {});
-    const fronts = Object.fromEntries(measureNames.map((name) => [name, paretoFront(results, name).map((r) => r.method)]));
+    const fronts = Object.fromEntries(measureNames.map((name) => [name, paretoFront(results, name).map((r) => r.key)]));
     scenes.push({ id, title: scene.title, seconds: scene.seconds, measures: measureNames, results, fronts });
   }
   // Every method's limits; --quick: the default method's only.
@@ -192,8 +227,8 @@ export async function runAccuracy(b2, options = {}) {
     schema: ACCURACY_SCHEMA,
     date: new Date().toISOString(),
     quick,
-    machine: { cpus: cpus.length, cpuModel: cpus[0]?.model ?? 'unknown', node: process.version },
-    methods: [...methods, ...(sceneIds.some((id) => ACCURACY_SCENES[id].trajectory) ? [REFERENCE] : [])],
+    machine: { cpus: cpus.length, cpuModel: cpus[0]?.model ?? 'unknown', node: process.version, gpu: gpu?.adapter ?? null },
+    methods: [...new Set([...methods, ...gpuMethods]), ...(sceneIds.some((id) => ACCURACY_SCENES[id].trajectory) ? [REFERENCE] : [])],
     scenes,
     limits,
   };
@@ -215,7 +250,7 @@ export function writeAccuracy(results, dir) {
   return files;
 }
 
-const USAGE = `usage: node bench/accuracy/run.mjs [--scenes a,b] [--methods a,b] [--quick] [--no-limits] [--out DIR] [--ours FILE]
+const USAGE = `usage: node bench/accuracy/run.mjs [--scenes a,b] [--methods a,b] [--quick] [--no-limits] [--gpu] [--out DIR] [--ours FILE]
   scenes:  ${ACCURACY_SCENE_IDS.join(', ')}
   methods: ${METHODS.map((m) => m.id).join(', ')}`;
 
@@ -226,6 +261,7 @@ async function main() {
       methods: { type: 'string' },
       quick: { type: 'boolean', default: false },
       'no-limits': { type: 'boolean', default: false },
+      gpu: { type: 'boolean', default: false },
       out: { type: 'string' },
       ours: { type: 'string' },
       help: { type: 'boolean', default: false },
@@ -241,7 +277,10 @@ async function main() {
     bundle = buildOurs((s) => process.stderr.write(s + '\n')).bundle;
   }
   const b2 = await import(pathToFileURL(path.resolve(bundle)).href);
+  const gpu = values.gpu ? await gpuBackend(path.join(path.dirname(bundle), 'webphysics-gpu.mjs')) : null;
+  if (gpu) process.stderr.write(`WebGPU: ${gpu.adapter.description || gpu.adapter.device}${gpu.timed ? '' : ' (software: its runs are not timed)'}\n`);
   const results = await runAccuracy(b2, {
+    gpu,
     quick: values.quick,
     scenes: values.scenes?.split(','),
     methods: values.methods?.split(','),

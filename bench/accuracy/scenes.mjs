@@ -49,7 +49,7 @@ function ground(b2, world, halfWidth = 40, friction = 0.6, restitution = 0) {
  * A resting scene's measures: penetration (mean and maximum over the last second), the drift of
  * every body between the end of the first second and the end, and the jitter at the end.
  */
-function restingProbe(world, seconds) {
+function restingProbe(b2, world, seconds) {
   let settled = null;
   let maxDepth = 0;
   let meanDepth = 0;
@@ -58,7 +58,7 @@ function restingProbe(world, seconds) {
     sample(t) {
       if (settled === null && t >= 1) settled = positions(world);
       if (t > seconds - 1) {
-        const p = penetration(world);
+        const p = penetration(b2, world);
         if (p.max > maxDepth) maxDepth = p.max;
         meanDepth += p.mean;
         samples++;
@@ -135,7 +135,7 @@ export const ACCURACY_SCENES = {
     seconds: 10,
     build(b2) {
       const { world } = buildStack(b2, 10);
-      return { world, probe: restingProbe(world, 10) };
+      return { world, probe: restingProbe(b2, world, 10) };
     },
   },
   pyramid: {
@@ -143,7 +143,7 @@ export const ACCURACY_SCENES = {
     seconds: 10,
     build(b2) {
       const { world } = buildPyramid(b2, 10);
-      return { world, probe: restingProbe(world, 10) };
+      return { world, probe: restingProbe(b2, world, 10) };
     },
   },
   chain: {

@@ -4,6 +4,8 @@ import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { describe, expect, it } from 'vitest';
+import * as b2 from '../../src/index';
+import { b2ChainShape } from '../../src/collision/shapes/b2ChainShape';
 import { b2CircleShape } from '../../src/collision/shapes/b2CircleShape';
 import { b2PolygonShape } from '../../src/collision/shapes/b2PolygonShape';
 import { b2Rot, b2Vec2 } from '../../src/common/b2Math';
@@ -123,18 +125,31 @@ describe('analytic answers', () => {
 });
 
 describe('measures on states whose answer is known', () => {
-  it('penetration: two circles 0.1 m into each other and two boxes 0.05 m into each other (plus the polygons\' skins)', () => {
+  it('penetration, from the shapes alone: two circles 0.1 m into each other, two boxes 0.05 m (plus the polygons\' skins), a ball on a chain', () => {
     const world = new b2World(new b2Vec2(0, 0));
     circle(body(world, 0, 0, true), 0.5);
     circle(body(world, 0.9, 0, true), 0.5);
     box(body(world, 10, 0, true), 0.5, 0.5);
     box(body(world, 10.95, 0, true), 0.5, 0.5);
-    world.Step(0, 8, 3);
-    const p = penetration(world);
+    // Apart: a box and a circle 0.2 m from each other, a static pair overlapping (not counted).
+    box(body(world, 20, 0, true), 0.5, 0.5);
+    circle(body(world, 21, 0, true), 0.3);
+    box(body(world, 30, 0, false), 1, 1);
+    box(body(world, 30.5, 0, false), 1, 1);
+    const p = penetration(b2, world);
     // Circles: one point at 0.1; boxes: two points at 0.05 + 2 b2_polygonRadius (the radius skin).
     expect(p.points).toBe(3);
     expect(p.max).toBeCloseTo(0.1, 12);
     expect(p.mean).toBeCloseTo((0.1 + 2 * (0.05 + 2 * b2_polygonRadius)) / 3, 12);
+    // A ball sunk 0.05 m into a chain's second edge.
+    const chainWorld = new b2World(new b2Vec2(0, 0));
+    const chain = new b2ChainShape();
+    chain.CreateChain([new b2Vec2(-2, 0), new b2Vec2(0, 0), new b2Vec2(2, 0)], 3);
+    body(chainWorld, 0, 0, false).CreateFixture(chain, 0);
+    circle(body(chainWorld, 1, 0.45, true), 0.5);
+    const q = penetration(b2, chainWorld);
+    expect(q.points).toBe(1);
+    expect(q.max).toBeCloseTo(0.05 + b2_polygonRadius, 12);
   });
 
   it('penetration of a box resting on the ground settles to what Box2D allows (b2_linearSlop into the skins)', () => {
@@ -142,7 +157,7 @@ describe('measures on states whose answer is known', () => {
     box(body(world, 0, 0, false), 10, 0.5);
     box(body(world, 0, 1.2, true), 0.5, 0.5);
     for (let n = 0; n < 180; ++n) world.Step(DT, 8, 3);
-    const p = penetration(world);
+    const p = penetration(b2, world);
     expect(p.points).toBe(2);
     expect(p.max).toBeGreaterThan(0.5 * b2_linearSlop);
     expect(p.max).toBeLessThan(1.5 * b2_linearSlop);
@@ -215,7 +230,6 @@ describe('bisectLimit', () => {
 
 describe('runAccuracy --quick', () => {
   it('measures each scene under each method, marks the Pareto front, finds the stability limits, and writes JSON, Markdown and one chart per measure', async () => {
-    const b2 = await import('../../src/index');
     const run = await runAccuracy(b2, { quick: true });
     expect(run.schema).toBe('webphysics-accuracy/1');
     expect(run.scenes.map((s) => s.id)).toEqual(['pendulum', 'bounce', 'slide', 'chain']);
@@ -224,10 +238,10 @@ describe('runAccuracy --quick', () => {
       for (const r of scene.results) expect(r.msPerSecond).toBeGreaterThan(0);
       for (const measure of scene.measures) {
         // The front gets cheaper-to-dearer and better at each point.
-        const front = scene.fronts[measure].map((id) => scene.results.find((r) => r.method === id)!);
+        const front = scene.fronts[measure].map((key) => scene.results.find((r) => r.key === key)!);
         expect(front.length).toBeGreaterThan(0);
         for (let i = 1; i < front.length; ++i) {
-          expect(front[i].msPerSecond).toBeGreaterThanOrEqual(front[i - 1].msPerSecond);
+          expect(front[i].msPerSecond).toBeGreaterThanOrEqual(front[i - 1].msPerSecond!);
           expect(front[i].measures[measure]).toBeLessThan(front[i - 1].measures[measure]);
         }
       }
