@@ -1,6 +1,7 @@
-// The demo pages (demos/): bundles the testbed (demos/main.ts) into <outDir>/testbed.js and the
+// The demo pages (demos/): bundles the testbed (demos/main.ts) into <outDir>/testbed.js, the
 // comparison page (demos/compare/main.ts, and its worker) into compare.js and compare-worker.js
-// with esbuild, and copies the HTML and CSS beside them. `node scripts/build-demos.mjs [outDir]`
+// and the accuracy page (demos/accuracy/main.ts) into accuracy.js with esbuild, and copies the
+// HTML and CSS beside them, and the accuracy study's results (accuracy.json). `node scripts/build-demos.mjs [outDir]`
 // (default demos/dist); `npm start` calls buildDemos() and serves the folder. The WebGPU backend's
 // WGSL is inlined as text; its Node-only imports (Dawn, node:*) are on a code path a browser never
 // takes, so they stay external.
@@ -56,8 +57,11 @@ const kEntries = {
   testbed: path.join(repoRoot, 'demos', 'main.ts'),
   compare: path.join(repoRoot, 'demos', 'compare', 'main.ts'),
   'compare-worker': path.join(repoRoot, 'demos', 'compare', 'worker.ts'),
+  accuracy: path.join(repoRoot, 'demos', 'accuracy', 'main.ts'),
 };
-const kStatic = ['index.html', 'page.css', 'testbed.css', 'compare.html', 'compare.css'];
+const kStatic = ['index.html', 'page.css', 'testbed.css', 'compare.html', 'compare.css', 'accuracy.html', 'accuracy.css'];
+/** The accuracy study's results, which the accuracy page draws (bench/accuracy/run.mjs writes them). */
+const kAccuracyResults = path.join(repoRoot, 'bench', 'results', 'accuracy', 'accuracy.json');
 
 function options(outDir) {
   return {
@@ -79,6 +83,7 @@ function options(outDir) {
 
 function copyStatic(outDir) {
   for (const file of kStatic) copyFileSync(path.join(repoRoot, 'demos', file), path.join(outDir, file));
+  copyFileSync(kAccuracyResults, path.join(outDir, 'accuracy.json'));
 }
 
 /** Build the page into outDir. With watch, rebuild on every change (returns the esbuild context). */

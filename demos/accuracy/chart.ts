@@ -1,0 +1,138 @@
+/*
+ * The accuracy page's chart: one scene and measure of the study, error against milliseconds of
+ * stepping per simulated second, both on log scales (decades), one point per method, the Pareto
+ * front joined in orange. pointAt() finds the point under the pointer for the tooltip.
+ */
+
+import type { AccuracyResult, AccuracyScene } from '../../bench/accuracy/run.mjs';
+
+/** Errors below this are drawn at it (an exact answer has no logarithm), as in the SVG charts. */
+const FLOOR = 1e-12;
+const FRONT = '#f28e2b';
+const JS = '#4e79a7';
+const GPU = '#59a14f';
+
+/** A point as drawn, in CSS pixels of the canvas. */
+export interface DrawnPoint {
+  result: AccuracyResult;
+  x: number;
+  y: number;
+  front: boolean;
+}
+
+function decades(lo: number, hi: number): [number, number] {
+  const a = Math.floor(Math.log10(lo));
+  return [a, Math.max(a + 1, Math.ceil(Math.log10(hi)))];
+}
+
+export function formatNumber(v: number): string {
+  if (v === 0) return '0';
+  if (!Number.isFinite(v)) return String(v);
+  return Math.abs(v) >= 0.01 && Math.abs(v) < 1000 ? v.toPrecision(3) : v.toExponential(2);
+}
+
+export class ParetoChart {
+  points: DrawnPoint[] = [];
+  private readonly ctx: CanvasRenderingContext2D;
+
+  constructor(readonly canvas: HTMLCanvasElement) {
+    const ctx = canvas.getContext('2d');
+    if (ctx === null) throw new Error('this browser gives no 2D canvas context');
+    this.ctx = ctx;
+  }
+
+  /** Draws `measure` of `scene`; the GPU's untimed results are listed, not placed. */
+  draw(scene: AccuracyScene, measure: string, unit: string): void {
+    const canvas = this.canvas;
+    const dpr = window.devicePixelRatio || 1;
+    const rect = canvas.getBoundingClientRect();
+    const w = Math.max(1, rect.width);
+    const h = Math.max(1, rect.height);
+    canvas.width = Math.round(w * dpr);
+    canvas.height = Math.round(h * dpr);
+    const ctx = this.ctx;
+    ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
+    ctx.fillStyle = '#161616';
+    ctx.fillRect(0, 0, w, h);
+    const timed = scene.results.filter((r) => r.msPerSecond !== null && Number.isFinite(r.measures[measure]));
+    const untimed = scene.results.filter((r) => r.msPerSecond === null);
+    const left = 70;
+    const right = w - 190;
+    const top = 30;
+    const bottom = h - 40;
+    const xs = timed.map((r) => r.msPerSecond!);
+    const ys = timed.map((r) => Math.max(FLOOR, r.measures[measure]));
+    const [x0, x1] = decades(Math.min(...xs, 1), Math.max(...xs, 1));
+    const [y0, y1] = decades(Math.min(...ys, 1), Math.max(...ys, 1e-3));
+    const px = (v: number) => left + ((Math.log10(v) - x0) / (x1 - x0)) * (right - left);
+    const py = (v: number) => bottom - ((Math.log10(Math.max(FLOOR, v)) - y0) / (y1 - y0)) * (bottom - top);
+    ctx.font = '12px system-ui, sans-serif';
+    ctx.strokeStyle = '#333';
+    ctx.fillStyle = '#999';
+    ctx.lineWidth = 1;
+    ctx.textAlign = 'center';
+    for (let d = x0; d <= x1; ++d) {
+      const x = px(10 ** d);
+      ctx.beginPath();
+      ctx.moveTo(x, top);
+      ctx.lineTo(x, bottom);
+      ctx.stroke();
+      ctx.fillText(formatNumber(10 ** d), x, bottom + 16);
+    }
+    ctx.fillText('ms of stepping per simulated second (log)', (left + right) / 2, bottom + 32);
+    ctx.textAlign = 'right';
+    for (let d = y0; d <= y1; ++d) {
+      const y = py(10 ** d);
+      ctx.beginPath();
+      ctx.moveTo(left, y);
+      ctx.lineTo(right, y);
+      ctx.stroke();
+      ctx.fillText(formatNumber(10 ** d), left - 6, y + 4);
+    }
+    ctx.textAlign = 'left';
+    ctx.fillText(`${measure} (${unit}, log); lower left is better`, left, top - 12);
+    const front = scene.fronts[measure] ?? [];
+    this.points = timed.map((r) => ({ result: r, x: px(r.msPerSecond!), y: py(r.measures[measure]), front: front.includes(r.key) }));
+    const onFront = front.map((key) => this.points.find((p) => p.result.key === key)).filter((p): p is DrawnPoint => p !== undefined);
+    ctx.strokeStyle = FRONT;
+    ctx.lineWidth = 2;
+    ctx.beginPath();
+    onFront.forEach((p, i) => (i === 0 ? ctx.moveTo(p.x, p.y) : ctx.lineTo(p.x, p.y)));
+    ctx.stroke();
+    for (const p of this.points) {
+      ctx.fillStyle = p.front ? FRONT : p.result.backend === 'webgpu' ? GPU : JS;
+      ctx.beginPath();
+      ctx.arc(p.x, p.y, p.front ? 5 : 4, 0, 2 * Math.PI);
+      ctx.fill();
+      ctx.fillStyle = '#bbb';
+      ctx.font = '10px system-ui, sans-serif';
+      ctx.fillText(p.result.key, p.x + 7, p.y + 3);
+    }
+    ctx.font = '11px system-ui, sans-serif';
+    let noteY = top;
+    const note = (text: string, colour: string) => {
+      ctx.fillStyle = colour;
+      ctx.fillText(text, right + 14, noteY);
+      noteY += 15;
+    };
+    if (ys.some((v) => v === FLOOR)) note(`0 drawn at ${formatNumber(FLOOR)}`, '#999');
+    if (untimed.length > 0) {
+      note('WebGPU, untimed (software adapter):', GPU);
+      for (const r of untimed) note(`${r.key}: ${formatNumber(r.measures[measure])}`, GPU);
+    }
+  }
+
+  /** The point within 8 px of (x, y) in CSS pixels, nearest first, or null. */
+  pointAt(x: number, y: number): DrawnPoint | null {
+    let best: DrawnPoint | null = null;
+    let bestD = 64;
+    for (const p of this.points) {
+      const d = (p.x - x) ** 2 + (p.y - y) ** 2;
+      if (d <= bestD) {
+        best = p;
+        bestD = d;
+      }
+    }
+    return best;
+  }
+}

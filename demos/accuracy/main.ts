@@ -1,0 +1,153 @@
+/*
+ * The accuracy page (accuracy.html): the study's results (accuracy.json, copied beside the page
+ * from bench/results/accuracy when the demos are built) drawn as one chart per scene and measure,
+ * a tooltip naming the method under the pointer, and a replay of the chosen method's run of the
+ * scene that measures it again in the page. ?scene=&measure=&method= select them.
+ * `window.webphysicsAccuracy` is the state tests read.
+ */
+
+import { MEASURE_UNITS } from '../../bench/accuracy/report.mjs';
+import type { AccuracyRun, AccuracyScene } from '../../bench/accuracy/run.mjs';
+import { ParetoChart, formatNumber } from './chart';
+import { replay } from './replay';
+import type { ReplayState } from './replay';
+
+export interface AccuracyPageState {
+  ready: boolean;
+  error: string | null;
+  scene: string;
+  measure: string;
+  /** The chart's points in CSS pixels of the chart canvas. */
+  points: { key: string; x: number; y: number; front: boolean }[];
+  /** The tooltip's text, empty when hidden. */
+  tip: string;
+  replay: ReplayState | null;
+  /** The study's measures for the replayed scene and method. */
+  expected: Record<string, number> | null;
+}
+
+declare global {
+  interface Window {
+    webphysicsAccuracy: AccuracyPageState;
+  }
+}
+
+const state: AccuracyPageState = { ready: false, error: null, scene: '', measure: '', points: [], tip: '', replay: null, expected: null };
+window.webphysicsAccuracy = state;
+
+const $ = <T extends HTMLElement>(id: string) => document.getElementById(id) as T;
+const sceneSelect = $<HTMLSelectElement>('scene');
+const measureSelect = $<HTMLSelectElement>('measure');
+const methodSelect = $<HTMLSelectElement>('method');
+const about = $<HTMLParagraphElement>('about');
+const tip = $<HTMLDivElement>('tip');
+const chartCanvas = $<HTMLCanvasElement>('chart');
+const worldCanvas = $<HTMLCanvasElement>('world');
+const replayButton = $<HTMLButtonElement>('replay');
+const replayResult = $<HTMLParagraphElement>('replay-result');
+const chart = new ParetoChart(chartCanvas);
+
+let run: AccuracyRun | null = null;
+let stopReplay: (() => void) | null = null;
+
+const labelOf = (method: string, backend: string) => {
+  const label = run?.methods.find((m) => m.id === method)?.label ?? method;
+  return backend === 'webgpu' ? `WebGPU, ${label}` : label;
+};
+
+function currentScene(): AccuracyScene {
+  return run!.scenes.find((s) => s.id === sceneSelect.value)!;
+}
+
+function fillMeasures(scene: AccuracyScene, wanted: string | null): void {
+  measureSelect.replaceChildren(...scene.measures.map((m) => new Option(m, m)));
+  if (wanted !== null && scene.measures.includes(wanted)) measureSelect.value = wanted;
+  // The replay runs on this page's JavaScript engine: its methods only.
+  const methods = [...new Set(scene.results.filter((r) => r.backend === 'js').map((r) => r.method))];
+  const previous = methodSelect.value;
+  methodSelect.replaceChildren(...methods.map((m) => new Option(labelOf(m, 'js'), m)));
+  if (methods.includes(previous)) methodSelect.value = previous;
+}
+
+function drawChart(): void {
+  const scene = currentScene();
+  const measure = measureSelect.value;
+  chart.draw(scene, measure, MEASURE_UNITS[measure as keyof typeof MEASURE_UNITS] ?? '');
+  state.scene = scene.id;
+  state.measure = measure;
+  state.points = chart.points.map((p) => ({ key: p.result.key, x: p.x, y: p.y, front: p.front }));
+  const url = new URL(location.href);
+  url.searchParams.set('scene', scene.id);
+  url.searchParams.set('measure', measure);
+  history.replaceState(null, '', url);
+}
+
+function showTip(event: MouseEvent): void {
+  const rect = chartCanvas.getBoundingClientRect();
+  const p = chart.pointAt(event.clientX - rect.left, event.clientY - rect.top);
+  if (p === null) {
+    tip.hidden = true;
+    state.tip = '';
+    return;
+  }
+  const r = p.result;
+  state.tip = `${labelOf(r.method, r.backend)}: ${formatNumber(r.msPerSecond!)} ms per simulated second, ${measureSelect.value} ${formatNumber(r.measures[measureSelect.value])}${p.front ? ' (on the Pareto front)' : ''}`;
+  tip.textContent = state.tip;
+  tip.hidden = false;
+  tip.style.left = `${Math.min(p.x + 12, rect.width - tip.offsetWidth - 4)}px`;
+  tip.style.top = `${p.y + 12}px`;
+}
+
+function startReplay(): void {
+  stopReplay?.();
+  const scene = currentScene();
+  const method = methodSelect.value;
+  state.expected = scene.results.find((r) => r.backend === 'js' && r.method === method)?.measures ?? null;
+  replayResult.textContent = 'Running…';
+  stopReplay = replay(scene.id, method, worldCanvas, (s) => {
+    state.replay = { ...s, measures: s.measures === null ? null : { ...s.measures } };
+    if (!s.done) {
+      replayResult.textContent = `${labelOf(method, 'js')}: ${(s.frame / s.frames * 100).toFixed(0)} % of ${scene.seconds} s`;
+      return;
+    }
+    const same = state.expected !== null && Object.entries(s.measures!).every(([k, v]) => Object.is(v, state.expected![k]));
+    replayResult.textContent = `${labelOf(method, 'js')}: ${Object.entries(s.measures!)
+      .map(([k, v]) => `${k} ${formatNumber(v)}`)
+      .join(', ')}; ${same ? 'the same as the study, bit for bit' : 'NOT the study\'s numbers'}`;
+  });
+}
+
+async function main(): Promise<void> {
+  const response = await fetch('accuracy.json');
+  if (!response.ok) throw new Error(`accuracy.json: ${response.status} ${response.statusText} (npm run bench:accuracy writes it)`);
+  run = (await response.json()) as AccuracyRun;
+  const params = new URLSearchParams(location.search);
+  sceneSelect.replaceChildren(...run.scenes.map((s) => new Option(s.title, s.id)));
+  const wantedScene = params.get('scene');
+  if (wantedScene !== null && run.scenes.some((s) => s.id === wantedScene)) sceneSelect.value = wantedScene;
+  fillMeasures(currentScene(), params.get('measure'));
+  const wantedMethod = params.get('method');
+  if (wantedMethod !== null && Array.from(methodSelect.options).some((o) => o.value === wantedMethod)) methodSelect.value = wantedMethod;
+  const gpu = run.machine.gpu as { description?: string; device?: string; software?: boolean } | null;
+  about.textContent = `The study of ${run.date.slice(0, 10)}: ${run.scenes.length} scenes, ${run.methods.length} methods; JavaScript engine timed on ${run.machine.cpus} x ${run.machine.cpuModel}, Node ${run.machine.node}${gpu ? `; WebGPU on ${gpu.description || gpu.device}${gpu.software ? ' (software: errors only, not timed)' : ''}` : ''}.`;
+  sceneSelect.addEventListener('change', () => {
+    fillMeasures(currentScene(), measureSelect.value);
+    drawChart();
+  });
+  measureSelect.addEventListener('change', drawChart);
+  chartCanvas.addEventListener('mousemove', showTip);
+  chartCanvas.addEventListener('mouseleave', () => {
+    tip.hidden = true;
+    state.tip = '';
+  });
+  replayButton.addEventListener('click', startReplay);
+  window.addEventListener('resize', drawChart);
+  drawChart();
+  state.ready = true;
+}
+
+main().catch((e: unknown) => {
+  state.error = e instanceof Error ? e.message : String(e);
+  about.textContent = `Could not load the study: ${state.error}`;
+  about.className = 'note warn';
+});

@@ -1,0 +1,159 @@
+/*
+ * Replaying one run of the accuracy study in the page: the scene built and stepped exactly as
+ * bench/accuracy/run.mjs steps it (the same scene, method and probe code, on the JavaScript engine
+ * of this page), one frame of simulated time per display frame, drawn as it goes; at the end the
+ * measures, which equal the study's bit for bit (the engine computes the same bits in every
+ * JavaScript engine).
+ */
+
+import * as b2 from '../../src/index';
+import type { b2World } from '../../src/dynamics/b2World';
+import type { b2Shape } from '../../src/collision/shapes/b2Shape';
+import type { b2CircleShape } from '../../src/collision/shapes/b2CircleShape';
+import type { b2PolygonShape } from '../../src/collision/shapes/b2PolygonShape';
+import type { b2EdgeShape } from '../../src/collision/shapes/b2EdgeShape';
+import type { b2ChainShape } from '../../src/collision/shapes/b2ChainShape';
+import { ACCURACY_SCENES } from '../../bench/accuracy/scenes.mjs';
+import { REFERENCE, applyMethod, methodById, stepFrame } from '../../bench/accuracy/methods.mjs';
+import { positions, trajectoryError } from '../../bench/accuracy/measures.mjs';
+
+export interface ReplayState {
+  scene: string;
+  method: string;
+  frame: number;
+  frames: number;
+  done: boolean;
+  measures: Record<string, number> | null;
+}
+
+/** Draws a world's fixtures (static green, dynamic pink, as the Testbed colours them) to fit the canvas. */
+function drawWorld(canvas: HTMLCanvasElement, world: b2World, view: { x: number; y: number; half: number }): void {
+  const dpr = window.devicePixelRatio || 1;
+  const rect = canvas.getBoundingClientRect();
+  const w = Math.max(1, rect.width);
+  const h = Math.max(1, rect.height);
+  if (canvas.width !== Math.round(w * dpr) || canvas.height !== Math.round(h * dpr)) {
+    canvas.width = Math.round(w * dpr);
+    canvas.height = Math.round(h * dpr);
+  }
+  const ctx = canvas.getContext('2d')!;
+  ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
+  ctx.fillStyle = '#000';
+  ctx.fillRect(0, 0, w, h);
+  const scale = Math.min(w, h) / (2 * view.half);
+  const sx = (x: number) => w / 2 + (x - view.x) * scale;
+  const sy = (y: number) => h / 2 - (y - view.y) * scale;
+  ctx.lineWidth = 1;
+  for (let body = world.GetBodyList(); body; body = body.GetNext()) {
+    const xf = body.m_xf;
+    const px = (x: number, y: number) => sx(xf.q.c * x - xf.q.s * y + xf.p.x);
+    const py = (x: number, y: number) => sy(xf.q.s * x + xf.q.c * y + xf.p.y);
+    ctx.strokeStyle = body.GetType() === b2.b2_staticBody ? '#7fe57f' : '#e5b2b2';
+    ctx.fillStyle = body.GetType() === b2.b2_staticBody ? 'rgba(127,229,127,0.25)' : 'rgba(229,178,178,0.25)';
+    for (let f = body.GetFixtureList(); f; f = f.GetNext()) {
+      const shape: b2Shape = f.GetShape();
+      ctx.beginPath();
+      switch (shape.m_type) {
+        case b2.b2Shape.e_circle: {
+          const c = shape as b2CircleShape;
+          const cx = px(c.m_p.x, c.m_p.y);
+          const cy = py(c.m_p.x, c.m_p.y);
+          ctx.arc(cx, cy, c.m_radius * scale, 0, 2 * Math.PI);
+          ctx.moveTo(cx, cy);
+          ctx.lineTo(px(c.m_p.x + c.m_radius, c.m_p.y), py(c.m_p.x + c.m_radius, c.m_p.y));
+          break;
+        }
+        case b2.b2Shape.e_polygon: {
+          const p = shape as b2PolygonShape;
+          for (let i = 0; i < p.m_vertexCount; ++i) {
+            const v = p.m_vertices[i];
+            if (i === 0) ctx.moveTo(px(v.x, v.y), py(v.x, v.y));
+            else ctx.lineTo(px(v.x, v.y), py(v.x, v.y));
+          }
+          ctx.closePath();
+          break;
+        }
+        case b2.b2Shape.e_edge: {
+          const e = shape as b2EdgeShape;
+          ctx.moveTo(px(e.m_vertex1.x, e.m_vertex1.y), py(e.m_vertex1.x, e.m_vertex1.y));
+          ctx.lineTo(px(e.m_vertex2.x, e.m_vertex2.y), py(e.m_vertex2.x, e.m_vertex2.y));
+          break;
+        }
+        case b2.b2Shape.e_chain: {
+          const c = shape as b2ChainShape;
+          for (let i = 0; i < c.m_count; ++i) {
+            const v = c.m_vertices[i];
+            if (i === 0) ctx.moveTo(px(v.x, v.y), py(v.x, v.y));
+            else ctx.lineTo(px(v.x, v.y), py(v.x, v.y));
+          }
+          break;
+        }
+      }
+      if (shape.m_type === b2.b2Shape.e_circle || shape.m_type === b2.b2Shape.e_polygon) ctx.fill();
+      ctx.stroke();
+    }
+  }
+}
+
+/** The view that frames the dynamic bodies (at least 6 m across), centred on them. */
+function frameDynamic(world: b2World): { x: number; y: number; half: number } {
+  let minX = Infinity;
+  let minY = Infinity;
+  let maxX = -Infinity;
+  let maxY = -Infinity;
+  for (let body = world.GetBodyList(); body; body = body.GetNext()) {
+    if (body.GetType() === b2.b2_staticBody) continue;
+    const p = body.GetPosition();
+    minX = Math.min(minX, p.x);
+    minY = Math.min(minY, p.y);
+    maxX = Math.max(maxX, p.x);
+    maxY = Math.max(maxY, p.y);
+  }
+  if (minX > maxX) return { x: 0, y: 0, half: 10 };
+  return { x: (minX + maxX) / 2, y: (minY + maxY) / 2, half: Math.max(3, 0.6 * Math.max(maxX - minX, maxY - minY) + 1.5) };
+}
+
+/**
+ * Replays `sceneId` with method `methodId` on `canvas`, `framesPerDraw` frames of simulated time
+ * per display frame; `onFrame` sees the state after each drawing, the last with the measures.
+ * Returns a function that stops the replay.
+ */
+export function replay(sceneId: string, methodId: string, canvas: HTMLCanvasElement, onFrame: (state: ReplayState) => void, framesPerDraw = 1): () => void {
+  const scene = ACCURACY_SCENES[sceneId as keyof typeof ACCURACY_SCENES];
+  if (scene === undefined) throw new RangeError(`replay: unknown scene '${sceneId}'`);
+  const method = methodById(methodId);
+  // A trajectory scene is measured against the converged reference, run first (not drawn).
+  let reference: Float64Array | null = null;
+  if ('trajectory' in scene && scene.trajectory) {
+    const ref = scene.build(b2);
+    applyMethod(ref.world, REFERENCE);
+    const frames = Math.round(scene.seconds * REFERENCE.frameHz);
+    for (let f = 1; f <= frames; ++f) stepFrame(ref.world, REFERENCE);
+    reference = positions(ref.world);
+  }
+  const { world, probe } = scene.build(b2);
+  applyMethod(world, method);
+  const frames = Math.round(scene.seconds * method.frameHz);
+  const view = frameDynamic(world);
+  const state: ReplayState = { scene: sceneId, method: methodId, frame: 0, frames, done: false, measures: null };
+  let handle = 0;
+  const tick = () => {
+    for (let k = 0; k < framesPerDraw && state.frame < frames; ++k) {
+      state.frame++;
+      stepFrame(world, method);
+      probe.sample(state.frame / method.frameHz);
+    }
+    drawWorld(canvas, world, view);
+    if (state.frame >= frames) {
+      const measures: Record<string, number> = { ...probe.result() };
+      if (reference !== null) measures['trajectory error'] = trajectoryError(reference, positions(world)).max;
+      state.measures = measures;
+      state.done = true;
+    } else {
+      handle = requestAnimationFrame(tick);
+    }
+    onFrame(state);
+  };
+  handle = requestAnimationFrame(tick);
+  return () => cancelAnimationFrame(handle);
+}
