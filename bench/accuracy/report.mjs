@@ -18,8 +18,12 @@ export const MEASURE_UNITS = {
 /** Errors below this are drawn at it on the log axis (an exact answer has no logarithm). */
 const FLOOR = 1e-12;
 
-/** A result's name: its method's label, after the backend's name on the GPU. */
-function labelOf(run, r) {
+/** A result's name: its method's label (after 'WebGPU, ' on the GPU), or a peer's name and version. */
+export function labelOf(run, r) {
+  if (r.backend !== 'js' && r.backend !== 'webgpu') {
+    const peer = run.peers?.find((p) => p.id === r.backend);
+    return peer ? `${peer.name}${peer.version ? ` ${peer.version}` : ''}` : r.backend;
+  }
   const label = run.methods.find((m) => m.id === r.method)?.label ?? r.method;
   return r.backend === 'webgpu' ? `WebGPU, ${label}` : label;
 }
@@ -43,7 +47,7 @@ export function paretoFront(results, measure) {
 }
 
 const esc = (s) => String(s).replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;').replace(/"/g, '&quot;');
-const fmt = (v) => (v === 0 ? '0' : !Number.isFinite(v) ? String(v) : Math.abs(v) >= 0.01 && Math.abs(v) < 1000 ? v.toPrecision(3) : v.toExponential(2));
+const fmt = (v) => (v === undefined ? '–' : v === 0 ? '0' : !Number.isFinite(v) ? String(v) : Math.abs(v) >= 0.01 && Math.abs(v) < 1000 ? v.toPrecision(3) : v.toExponential(2));
 
 /** Decades covering [lo, hi] (log10 bounds, at least one decade wide). */
 function decades(lo, hi) {
@@ -94,16 +98,18 @@ export function paretoSvg(scene, measure, run) {
     const cx = px(r.msPerSecond);
     const cy = py(r.measures[measure]);
     parts.push(
-      `<circle cx="${cx.toFixed(1)}" cy="${cy.toFixed(1)}" r="${on ? 5 : 4}" fill="${on ? '#f28e2b' : r.backend === 'webgpu' ? '#59a14f' : '#4e79a7'}"><title>${esc(`${labelOf(run, r)}: ${fmt(r.msPerSecond)} ms per simulated second, ${measure} ${fmt(r.measures[measure])}`)}</title></circle>`,
+      `<circle cx="${cx.toFixed(1)}" cy="${cy.toFixed(1)}" r="${on ? 5 : 4}" fill="${on ? '#f28e2b' : r.backend === 'webgpu' ? '#59a14f' : r.backend === 'js' ? '#4e79a7' : '#b07aa1'}"><title>${esc(`${labelOf(run, r)}: ${fmt(r.msPerSecond)} ms per simulated second, ${measure} ${fmt(r.measures[measure])}`)}</title></circle>`,
       `<text x="${(cx + 7).toFixed(1)}" y="${(cy + 4).toFixed(1)}" fill="#333" font-size="10">${esc(r.key)}</text>`,
     );
   }
   // Notes at the right: failed runs, exact answers, and the GPU's untimed points with their errors.
   const notes = [];
-  const failed = scene.results.filter((r) => !Number.isFinite(r.measures[measure]));
+  const failed = scene.results.filter((r) => r.measures[measure] !== undefined && !Number.isFinite(r.measures[measure]));
   if (failed.length > 0) notes.push([`no answer: ${failed.map((r) => r.key).join(', ')}`, '#a00']);
   if (ys.some((v) => v === FLOOR)) notes.push([`0 drawn at ${fmt(FLOOR)}`, '#555']);
   if (untimed.length > 0) notes.push(['untimed (software adapter):', '#59a14f'], ...untimed.map((r) => [`${r.key}: ${fmt(r.measures[measure])}`, '#59a14f']));
+  const unmeasured = scene.results.filter((r) => r.measures[measure] === undefined);
+  if (unmeasured.length > 0) notes.push([`not measurable: ${unmeasured.map((r) => r.key).join(', ')}`, '#999']);
   notes.forEach(([text, colour], i) => parts.push(`<text x="${width - right + 10}" y="${top + 10 + 16 * i}" fill="${colour}" font-size="11">${esc(text)}</text>`));
   parts.push('</svg>');
   return parts.join('\n') + '\n';
@@ -113,7 +119,8 @@ export function paretoSvg(scene, measure, run) {
 export function accuracyMarkdown(run) {
   const labels = Object.fromEntries(run.methods.map((m) => [m.id, m.label]));
   const gpu = run.machine.gpu ? ` WebGPU: ${run.machine.gpu.description || run.machine.gpu.device} (${run.machine.gpu.software ? 'software: accuracy only, not timed' : 'timed'}).` : '';
-  const lines = ['# Accuracy: speed against error', '', `Node ${run.machine.node}, ${run.machine.cpus} x ${run.machine.cpuModel}, ${run.date}${run.quick ? ' (quick subset)' : ''}.${gpu} The measures and scenes: docs/ACCURACY.md. * marks a point on the Pareto front of that measure.`, ''];
+  const peers = run.peers?.length ? ` Peers at their own settings (1/60 s; 8/3 iterations where they have them, Box2D v3 4 substeps, Rapier its default): ${run.peers.map((p) => `${p.name}${p.version ? ` ${p.version}` : ''}`).join(', ')}; – marks a measure that needs a Box2D 2.2.1 world, and the trajectory error is against WebPhysics' converged run.` : '';
+  const lines = ['# Accuracy: speed against error', '', `Node ${run.machine.node}, ${run.machine.cpus} x ${run.machine.cpuModel}, ${run.date}${run.quick ? ' (quick subset)' : ''}.${gpu}${peers} The measures and scenes: docs/ACCURACY.md. * marks a point on the Pareto front of that measure.`, ''];
   for (const scene of run.scenes) {
     lines.push(`## ${scene.title} (${scene.seconds} s)`, '', `| method | ms per simulated second | ${scene.measures.map((m) => `${m} (${MEASURE_UNITS[m] ?? ''})`).join(' | ')} |`, `| --- | ---: |${' ---: |'.repeat(scene.measures.length)}`);
     for (const r of scene.results) {

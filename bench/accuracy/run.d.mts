@@ -12,10 +12,12 @@ export interface AccuracyMethod {
 }
 
 export interface AccuracyResult {
-  /** The method's id, after 'webgpu ' for the GPU's runs. */
+  /** The method's id, after 'webgpu ' for the GPU's runs; a peer engine's id. */
   key: string;
+  /** A method's id ('default' for a peer). */
   method: string;
-  backend: 'js' | 'webgpu';
+  /** 'js', 'webgpu', or a peer engine's id. */
+  backend: string;
   /** null: not timed (the GPU on a software adapter). */
   msPerSecond: number | null;
   measures: Record<string, number>;
@@ -46,6 +48,7 @@ export interface AccuracyRun {
   quick: boolean;
   machine: { cpus: number; cpuModel: string; node: string; gpu: object | null };
   methods: AccuracyMethod[];
+  peers: { id: string; name: string; version: string | null; family: string; notes: string[] }[];
   scenes: AccuracyScene[];
   limits: AccuracyLimit[];
 }
@@ -59,6 +62,7 @@ export interface GpuRunner {
 export interface AccuracyOptions {
   gpu?: GpuRunner | null;
   gpuMethods?: string[];
+  peers?: { engine: unknown; api: unknown }[];
   quick?: boolean;
   scenes?: string[];
   methods?: string[];
@@ -71,4 +75,5 @@ export const ACCURACY_SCHEMA: string;
 export function runAccuracy(b2: unknown, options?: AccuracyOptions): Promise<AccuracyRun>;
 export function stabilityLimits(b2: unknown, method: AccuracyMethod, options?: { quick?: boolean }): Promise<AccuracyLimit[]>;
 export function gpuBackend(gpuBundle: string): Promise<GpuRunner>;
+export function loadPeers(ids: string[] | null, oursBundle: string): Promise<{ engine: unknown; api: unknown }[]>;
 export function writeAccuracy(results: AccuracyRun, dir: string): string[];

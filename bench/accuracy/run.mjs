@@ -2,12 +2,14 @@
 // The accuracy study: every scene of scenes.mjs stepped by every method of methods.mjs, each a
 // point (milliseconds per simulated second, error) per measure, and the stability limits of
 // limits.mjs; docs/ACCURACY.md says what each number means.
-//   node bench/accuracy/run.mjs [--scenes a,b] [--methods a,b] [--quick] [--no-limits] [--gpu]
-//                               [--out DIR] [--ours FILE]
+//   node bench/accuracy/run.mjs [--scenes a,b] [--methods a,b] [--peers a,b] [--quick]
+//                               [--no-limits] [--gpu] [--out DIR] [--ours FILE]
 // writes accuracy.json, accuracy.md and one SVG chart per scene and measure (log axes, the Pareto
 // front highlighted) into bench/results/accuracy, or --out. `--quick` runs a small subset in a minute or
 // two (CI's tests run it). `--gpu` adds the WebGPU backend's runs of some methods (on a software
-// adapter such as SwiftShader their errors are reported and their times are not). For programs:
+// adapter such as SwiftShader their errors are reported and their times are not); the peer engines
+// of `npm run bench` run every scene at their own settings, measured where positions suffice
+// (default: all of them; --quick: none; --peers '' for none). For programs:
 // runAccuracy(b2, options) resolves to the results.
 
 import { mkdirSync, writeFileSync } from 'node:fs';
@@ -17,8 +19,9 @@ import { parseArgs } from 'node:util';
 import { fileURLToPath, pathToFileURL } from 'node:url';
 import { bisectLimit } from './limits.mjs';
 import { DEFAULT_METHOD, METHODS, REFERENCE, applyMethod, methodById, stepFrame } from './methods.mjs';
-import { jointErrors, positions, trajectoryError } from './measures.mjs';
-import { ACCURACY_SCENES, ACCURACY_SCENE_IDS, buildChain, buildPyramid, buildStack } from './scenes.mjs';
+import { jointErrors, trajectoryError } from './measures.mjs';
+import { createBox2D221World } from '../engines/box2d221.mjs';
+import { ACCURACY_SCENES, ACCURACY_SCENE_IDS, buildScene, chainData, plateData, pyramidData, scenePositions, stackData } from './scenes.mjs';
 import { accuracyMarkdown, paretoFront, paretoSvg } from './report.mjs';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
@@ -37,8 +40,9 @@ const GPU_METHODS = ['iter-4-2', 'iter-8-3', 'iter-16-6', 'dt-30', 'substeps-2']
  * WebGPU backend (each frame's steps, then world.Synchronize()): the measures, the milliseconds
  * of stepping per simulated second, the final positions.
  */
-async function runSceneOnce(b2, scene, m, gpu = null) {
-  const { world, probe } = scene.build(b2);
+async function runSceneOnce(b2, id, m, gpu = null) {
+  const scene = ACCURACY_SCENES[id];
+  const { world, data, view, probe } = buildScene(b2, id);
   applyMethod(world, m);
   const backend = gpu === null ? null : await gpu.create();
   if (backend !== null) await world.SetBackend(backend);
@@ -52,9 +56,34 @@ async function runSceneOnce(b2, scene, m, gpu = null) {
       stepping += performance.now() - t0;
       probe.sample(f / m.frameHz);
     }
-    return { measures: probe.result(), msPerSecond: stepping / scene.seconds, final: positions(world) };
+    return { measures: probe.result(), msPerSecond: stepping / scene.seconds, final: scenePositions(data, view) };
   } finally {
     await backend?.destroy();
+  }
+}
+
+/**
+ * Runs scene `id` once on peer engine `engine` (an adapter of bench/engines, its module `api`)
+ * at its own settings (1/60 s steps; 8/3 iterations where it has them, Box2D v3 and Rapier their
+ * substeps or solver iterations); the measures that need only positions.
+ */
+function runPeerOnce(engine, api, id) {
+  const scene = ACCURACY_SCENES[id];
+  const data = scene.data();
+  const instance = engine.create(api, data, { sleep: false });
+  try {
+    const probe = scene.probe({ position: instance.position, world: null, b2: null });
+    const frames = Math.round(scene.seconds * 60);
+    let stepping = 0;
+    for (let f = 1; f <= frames; ++f) {
+      const t0 = performance.now();
+      instance.step();
+      stepping += performance.now() - t0;
+      probe.sample(f / 60);
+    }
+    return { measures: probe.result(), msPerSecond: stepping / scene.seconds, final: scenePositions(data, instance) };
+  } finally {
+    instance.destroy();
   }
 }
 
@@ -74,15 +103,15 @@ export async function gpuBackend(gpuBundle) {
 }
 
 /**
- * Runs `scene` under `m` `rounds` times and keeps the fastest time (the first run of a method
- * pays for compiling its code paths); the measures are the same in every run (the engine is
+ * Runs `once` `rounds` times and keeps the fastest time (the first run of a method pays for
+ * compiling its code paths); the measures are the same in every run (the engines are
  * deterministic), which is checked.
  */
-async function runScene(b2, scene, m, rounds, gpu = null) {
-  let best = await runSceneOnce(b2, scene, m, gpu);
+async function runScene(rounds, label, once) {
+  let best = await once();
   for (let i = 1; i < rounds; ++i) {
-    const r = await runSceneOnce(b2, scene, m, gpu);
-    if (JSON.stringify(r.measures) !== JSON.stringify(best.measures)) throw new Error(`${m.id}: two runs of '${scene.title}' measured differently`);
+    const r = await once();
+    if (JSON.stringify(r.measures) !== JSON.stringify(best.measures)) throw new Error(`${label}: two runs measured differently`);
     if (r.msPerSecond < best.msPerSecond) best = r;
   }
   return best;
@@ -93,8 +122,7 @@ async function runScene(b2, scene, m, rounds, gpu = null) {
  * (settling under load moves it by up to about 0.3 m in a pyramid of base 20; a collapse, more).
  */
 function stands(top, start) {
-  const p = top.GetPosition();
-  return Math.hypot(p.x - start.x, p.y - start.y) < 0.5;
+  return Math.hypot(top[0] - start[0], top[1] - start[1]) < 0.5;
 }
 
 /** Runs a world for `seconds` of `m`'s frames; calls `check` after each frame and stops when it says false. */
@@ -108,11 +136,12 @@ function runWhile(world, m, seconds, check) {
   return true;
 }
 
-/** Standing 10 s: the stack's or pyramid's top box within half a box of where it started. */
-function standsFor(world, boxes, m, seconds = 10) {
-  const top = boxes[boxes.length - 1];
-  const start = { x: top.GetPosition().x, y: top.GetPosition().y };
-  return runWhile(world, m, seconds, () => stands(top, start));
+/** Standing 10 s: the top box (the last body) of a stack or pyramid built from `data` within half a box of where it started. */
+function standsFor(b2, data, m, seconds = 10) {
+  const built = createBox2D221World(b2, data, { sleep: false });
+  const top = data.bodies.length - 1;
+  const start = built.position(top);
+  return runWhile(built.world, m, seconds, () => stands(built.position(top), start));
 }
 
 /**
@@ -125,21 +154,14 @@ export async function stabilityLimits(b2, m, { quick = false } = {}) {
     const r = await bisectLimit(passes, lo, hi, options);
     out.push({ id, test, unit, method: m.id, range: [lo, hi], smallest: options.smallest === true, ...r });
   };
-  await limit('stack height', 'the tallest column of unit boxes whose top box stays within 0.5 m of its start for 10 s', 'boxes', 2, quick ? 16 : 80, { integer: true }, (h) => {
-    const { world, boxes } = buildStack(b2, h);
-    return standsFor(world, boxes, m);
-  });
+  await limit('stack height', 'the tallest column of unit boxes whose top box stays within 0.5 m of its start for 10 s', 'boxes', 2, quick ? 16 : 80, { integer: true }, (h) => standsFor(b2, stackData(h), m));
   const base = quick ? 12 : 20;
-  await limit('iterations', `the fewest iterations (velocity and position, n of each) that keep a pyramid of base ${base} standing 10 s (top box within 0.5 m)`, 'iterations', 1, 32, { integer: true, smallest: true }, (n) => {
-    const { world, boxes } = buildPyramid(b2, base);
-    return standsFor(world, boxes, { ...m, velocityIterations: n, positionIterations: n });
-  });
-  await limit('frame time', "the longest frame (taken in the method's substeps) with which a pyramid of base 10 stands 10 s (top box within 0.5 m)", 's', 1 / 240, 1 / 4, { tolerance: 1e-3 }, (dt) => {
-    const { world, boxes } = buildPyramid(b2, 10);
-    return standsFor(world, boxes, { ...m, frameHz: 1 / dt });
-  });
+  await limit('iterations', `the fewest iterations (velocity and position, n of each) that keep a pyramid of base ${base} standing 10 s (top box within 0.5 m)`, 'iterations', 1, 32, { integer: true, smallest: true }, (n) =>
+    standsFor(b2, pyramidData(base), { ...m, velocityIterations: n, positionIterations: n }),
+  );
+  await limit('frame time', "the longest frame (taken in the method's substeps) with which a pyramid of base 10 stands 10 s (top box within 0.5 m)", 's', 1 / 240, 1 / 4, { tolerance: 1e-3 }, (dt) => standsFor(b2, pyramidData(10), { ...m, frameHz: 1 / dt }));
   await limit('mass ratio', 'log10 of the largest weight-to-link mass ratio at the end of a 10-link chain whose joints stay within 0.1 m for 5 s', 'log10 ratio', 0, 4, { tolerance: 0.02 }, (log10Ratio) => {
-    const { world } = buildChain(b2, 10, 10 ** log10Ratio);
+    const { world } = createBox2D221World(b2, chainData(10, 10 ** log10Ratio), { sleep: false });
     return runWhile(world, m, 5, () => jointErrors(world).linear < 0.1);
   });
   // Whether a ball crossing the plate is stopped depends on where its steps fall (one landing in
@@ -147,24 +169,10 @@ export async function stabilityLimits(b2, m, { quick = false } = {}) {
   // eight starts spread over one step's travel and passes only if the plate stops all of them,
   // which makes it monotone in the speed.
   const stopped = (speed, continuous, phase) => {
-    const world = new b2.b2World(new b2.b2Vec2(0, 0));
-    world.SetContinuousPhysics(continuous);
-    const plateDef = new b2.b2BodyDef();
-    plateDef.position.Set(5, 0);
-    const plate = world.CreateBody(plateDef);
-    const plateShape = new b2.b2PolygonShape();
-    plateShape.SetAsBox(0.025, 5);
-    plate.CreateFixture(plateShape, 0);
-    const ballDef = new b2.b2BodyDef();
-    ballDef.type = b2.b2_dynamicBody;
-    ballDef.position.Set((phase * speed) / (m.frameHz * m.substeps), 0);
-    const ball = world.CreateBody(ballDef);
-    const ballShape = new b2.b2CircleShape();
-    ballShape.m_radius = 0.1;
-    ball.CreateFixture(ballShape, 1);
-    ball.SetLinearVelocity(new b2.b2Vec2(speed, 0));
-    runWhile(world, m, 1, () => true);
-    return ball.GetPosition().x < 5;
+    const built = createBox2D221World(b2, plateData(speed, (phase * speed) / (m.frameHz * m.substeps)), { sleep: false });
+    built.world.SetContinuousPhysics(continuous);
+    runWhile(built.world, m, 1, () => true);
+    return built.position(1)[0] < 5;
   };
   for (const continuous of [false, true]) {
     await limit(
@@ -195,25 +203,36 @@ export async function runAccuracy(b2, options = {}) {
   const log = options.log ?? (() => {});
   const rounds = options.rounds ?? 2;
   const gpu = options.gpu ?? null;
+  const peers = options.peers ?? [];
   const gpuMethods = gpu === null ? [] : (options.gpuMethods ?? GPU_METHODS).map(methodById);
   const scenes = [];
   for (const id of sceneIds) {
     const scene = ACCURACY_SCENES[id];
     if (!scene) throw new RangeError(`unknown scene '${id}': ${ACCURACY_SCENE_IDS.join(', ')}`);
-    const reference = scene.trajectory ? (await runSceneOnce(b2, scene, REFERENCE)).final : null;
+    const reference = scene.trajectory ? (await runSceneOnce(b2, id, REFERENCE)).final : null;
     // Untimed: the scene's code paths compiled before the first method is timed.
-    await runSceneOnce(b2, scene, DEFAULT_METHOD);
+    await runSceneOnce(b2, id, DEFAULT_METHOD);
     const results = [];
-    const record = (backend, m, r) => {
+    const record = (backend, method, r) => {
       const measures = { ...r.measures };
       if (reference) measures['trajectory error'] = trajectoryError(reference, r.final).max;
       const msPerSecond = backend === 'webgpu' && !gpu.timed ? null : r.msPerSecond;
-      results.push({ key: backend === 'js' ? m.id : `${backend} ${m.id}`, method: m.id, backend, msPerSecond, measures });
-      log(`${id} / ${backend} ${m.id}: ${msPerSecond === null ? 'untimed' : `${msPerSecond.toFixed(2)} ms per simulated second`}, ${JSON.stringify(measures)}`);
+      const key = backend === 'js' ? method : backend === 'webgpu' ? `webgpu ${method}` : backend;
+      results.push({ key, method, backend, msPerSecond, measures });
+      log(`${id} / ${key}: ${msPerSecond === null ? 'untimed' : `${msPerSecond.toFixed(2)} ms per simulated second`}, ${JSON.stringify(measures)}`);
     };
-    for (const m of methods) record('js', m, await runScene(b2, scene, m, rounds));
+    for (const m of methods) record('js', m.id, await runScene(rounds, `${id} ${m.id}`, () => runSceneOnce(b2, id, m)));
     // The GPU's runs: one each (untimed on a software adapter; deterministic either way).
-    for (const m of gpuMethods) record('webgpu', m, await runScene(b2, scene, m, gpu.timed ? rounds : 1, gpu));
+    for (const m of gpuMethods) record('webgpu', m.id, await runScene(gpu.timed ? rounds : 1, `${id} webgpu ${m.id}`, () => runSceneOnce(b2, id, m, gpu)));
+    // The peers, at their own settings, where the scene's measures need only positions.
+    for (const { engine, api } of peers) {
+      const unsupported = engine.supports(scene.data());
+      if (unsupported !== null) {
+        log(`${id} / ${engine.id}: not run (${unsupported})`);
+        continue;
+      }
+      record(engine.id, 'default', await runScene(rounds, `${id} ${engine.id}`, () => runPeerOnce(engine, api, id)));
+    }
     const measureNames = Object.keys(results[0]?.measures ?? {});
     const fronts = Object.fromEntries(measureNames.map((name) => [name, paretoFront(results, name).map((r) => r.key)]));
     scenes.push({ id, title: scene.title, seconds: scene.seconds, measures: measureNames, results, fronts });
@@ -229,6 +248,7 @@ export async function runAccuracy(b2, options = {}) {
     quick,
     machine: { cpus: cpus.length, cpuModel: cpus[0]?.model ?? 'unknown', node: process.version, gpu: gpu?.adapter ?? null },
     methods: [...new Set([...methods, ...gpuMethods]), ...(sceneIds.some((id) => ACCURACY_SCENES[id].trajectory) ? [REFERENCE] : [])],
+    peers: peers.map(({ engine }) => ({ id: engine.id, name: engine.name, version: engine.version ?? null, family: engine.family, notes: engine.notes ?? [] })),
     scenes,
     limits,
   };
@@ -250,7 +270,26 @@ export function writeAccuracy(results, dir) {
   return files;
 }
 
-const USAGE = `usage: node bench/accuracy/run.mjs [--scenes a,b] [--methods a,b] [--quick] [--no-limits] [--gpu] [--out DIR] [--ours FILE]
+/**
+ * The peer engines' adapters (bench/engines) with their modules loaded: `ids`, or null for every
+ * engine but WebPhysics; one that fails to load is left out, with a line on stderr.
+ */
+export async function loadPeers(ids, oursBundle) {
+  const { ENGINES } = await import('../harness.mjs');
+  const known = ENGINES.filter((e) => e.id !== 'webphysics');
+  for (const id of ids ?? []) if (!known.some((e) => e.id === id)) throw new RangeError(`unknown peer '${id}': ${known.map((e) => e.id).join(', ')}`);
+  const out = [];
+  for (const engine of known.filter((e) => ids === null || ids.includes(e.id))) {
+    try {
+      out.push({ engine, api: await engine.load({ oursBundle }) });
+    } catch (e) {
+      process.stderr.write(`${engine.id}: not loaded (${e instanceof Error ? e.message : e})\n`);
+    }
+  }
+  return out;
+}
+
+const USAGE = `usage: node bench/accuracy/run.mjs [--scenes a,b] [--methods a,b] [--peers a,b] [--quick] [--no-limits] [--gpu] [--out DIR] [--ours FILE]
   scenes:  ${ACCURACY_SCENE_IDS.join(', ')}
   methods: ${METHODS.map((m) => m.id).join(', ')}`;
 
@@ -262,6 +301,7 @@ async function main() {
       quick: { type: 'boolean', default: false },
       'no-limits': { type: 'boolean', default: false },
       gpu: { type: 'boolean', default: false },
+      peers: { type: 'string' },
       out: { type: 'string' },
       ours: { type: 'string' },
       help: { type: 'boolean', default: false },
@@ -279,8 +319,10 @@ async function main() {
   const b2 = await import(pathToFileURL(path.resolve(bundle)).href);
   const gpu = values.gpu ? await gpuBackend(path.join(path.dirname(bundle), 'webphysics-gpu.mjs')) : null;
   if (gpu) process.stderr.write(`WebGPU: ${gpu.adapter.description || gpu.adapter.device}${gpu.timed ? '' : ' (software: its runs are not timed)'}\n`);
+  const peers = await loadPeers(values.peers === undefined ? (values.quick ? [] : null) : values.peers === '' ? [] : values.peers.split(','), bundle);
   const results = await runAccuracy(b2, {
     gpu,
+    peers,
     quick: values.quick,
     scenes: values.scenes?.split(','),
     methods: values.methods?.split(','),

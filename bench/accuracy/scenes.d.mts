@@ -1,6 +1,13 @@
 // Types for bench/accuracy/scenes.mjs.
-import type { b2Body } from '../../src/dynamics/b2Body';
 import type { b2World } from '../../src/dynamics/b2World';
+
+/** What a probe reads: positions by body index (any engine's adapter), and a Box2D 2.2.1 world where there is one. */
+export interface SceneView {
+  position(index: number): [number, number] | null;
+  world: b2World | null;
+  /** The engine's exports, with `world`. */
+  b2: unknown;
+}
 
 /** What a scene reports while it runs: sample(t) after every frame, result() once at the end. */
 export interface AccuracyProbe {
@@ -8,17 +15,33 @@ export interface AccuracyProbe {
   result(): Record<string, number>;
 }
 
+/** A scene in the benchmark's format (bench/scenes.mjs). */
+export interface SceneData {
+  id: string;
+  title: string;
+  gravity: [number, number];
+  dt: number;
+  velocityIterations: number;
+  positionIterations: number;
+  bodies: object[];
+  joints: object[];
+}
+
 export interface AccuracySceneDef {
   title: string;
   seconds: number;
   /** Measured against the converged reference's final positions (trajectory error). */
   trajectory?: boolean;
-  /** `b2`: the engine's exports. */
-  build(b2: unknown): { world: b2World; probe: AccuracyProbe };
+  data(): SceneData;
+  probe(view: SceneView): AccuracyProbe;
 }
 
-export const ACCURACY_SCENES: Record<'stack' | 'pyramid' | 'chain' | 'pendulum' | 'bounce' | 'slide' | 'elastic' | 'drop', AccuracySceneDef>;
-export const ACCURACY_SCENE_IDS: string[];
-export function buildStack(b2: unknown, height: number): { world: b2World; boxes: b2Body[] };
-export function buildPyramid(b2: unknown, base: number): { world: b2World; boxes: b2Body[] };
-export function buildChain(b2: unknown, links: number, ratio?: number): { world: b2World; bodies: b2Body[] };
+export type AccuracySceneId = 'stack' | 'pyramid' | 'chain' | 'pendulum' | 'bounce' | 'slide' | 'elastic' | 'drop';
+export const ACCURACY_SCENES: Record<AccuracySceneId, AccuracySceneDef>;
+export const ACCURACY_SCENE_IDS: AccuracySceneId[];
+export function stackData(height: number): SceneData;
+export function pyramidData(base: number): SceneData;
+export function chainData(links: number, ratio?: number): SceneData;
+export function plateData(speed: number, x0: number): SceneData;
+export function scenePositions(data: SceneData, view: Pick<SceneView, 'position'>): Float64Array;
+export function buildScene(b2: unknown, id: AccuracySceneId): { world: b2World; data: SceneData; view: SceneView; probe: AccuracyProbe };

@@ -1,204 +1,173 @@
-// The accuracy study's scenes (docs/ACCURACY.md, "Scenes"). Each builds a world with the engine
-// it is given (`b2`: the module's exports, the working tree's bundle or src/), runs for `seconds`
-// of simulated time, and reports its measures: what it gets wrong, each in its unit, smaller is
-// better. `sample(t)` is called after every frame (1/60 s of simulated time, whatever the method's
-// step), `result()` once at the end.
+// The accuracy study's scenes (docs/ACCURACY.md, "Scenes"), each defined once as plain data in the
+// benchmark's scene format (bench/scenes.mjs), so that every engine adapter of bench/engines can
+// build it; WebPhysics builds it with createBox2D221World and is measured on its b2World too.
+// A scene runs for `seconds` of simulated time and reports its measures, what it gets wrong, each
+// in its unit, smaller is better: probe(view) takes { position(i) } (an adapter's, by body index)
+// and, for a Box2D 2.2.1 world, `world` and `b2` (the engine's exports); measures that need the
+// world are left out for other engines. `sample(t)` is called after every frame (1/60 s of
+// simulated time, whatever the method's step), `result()` once at the end.
 
+import { createBox2D221World } from '../engines/box2d221.mjs';
 import { bounceHeights, pendulumPeriod, slidingDistance } from './analytic.mjs';
-import { energyAndMomentum, jointErrors, penetration, positions, restingDrift, rmsSpeed } from './measures.mjs';
+import { energyAndMomentum, jointErrors, penetration, rmsSpeed, trajectoryError } from './measures.mjs';
 
 const G = 10;
+const SHAPE = { density: 1, friction: 0.6, restitution: 0, category: 0x0001, mask: 0xffff };
 
-function makeBody(b2, world, x, y, dynamic, angle = 0) {
-  const def = new b2.b2BodyDef();
-  if (dynamic) def.type = b2.b2_dynamicBody;
-  def.position.Set(x, y);
-  def.angle = angle;
-  return world.CreateBody(def);
+function body(type, x, y, shapes, extra = {}) {
+  return { type, x, y, angle: 0, vx: 0, vy: 0, w: 0, bullet: false, allowSleep: true, ...extra, shapes: shapes.map((s) => ({ ...SHAPE, ...s })) };
 }
 
-function addBox(b2, body, hx, hy, density = 1, friction = 0.6, restitution = 0) {
-  const shape = new b2.b2PolygonShape();
-  shape.SetAsBox(hx, hy);
-  const fd = new b2.b2FixtureDef();
-  fd.shape = shape;
-  fd.density = density;
-  fd.friction = friction;
-  fd.restitution = restitution;
-  return body.CreateFixture(fd);
+/** A scene in the benchmark's format: 1/60 s steps at 8/3 iterations (the methods change them for WebPhysics). */
+function sceneData(id, title, bodies, { joints = [], gravity = [0, -G] } = {}) {
+  return { id: `accuracy-${id}`, title, description: title, gravity, dt: 1 / 60, velocityIterations: 8, positionIterations: 3, bodies, joints };
 }
 
-function addCircle(b2, body, radius, density = 1, friction = 0.6, restitution = 0) {
-  const shape = new b2.b2CircleShape();
-  shape.m_radius = radius;
-  const fd = new b2.b2FixtureDef();
-  fd.shape = shape;
-  fd.density = density;
-  fd.friction = friction;
-  fd.restitution = restitution;
-  return body.CreateFixture(fd);
+const ground = (halfWidth = 40, shape = {}) => body('static', 0, -0.5, [{ kind: 'box', hx: halfWidth, hy: 0.5, density: 0, ...shape }]);
+
+/** The indices of a scene's dynamic bodies. */
+function dynamicIndices(data) {
+  return data.bodies.flatMap((b, i) => (b.type === 'dynamic' ? [i] : []));
 }
 
-function ground(b2, world, halfWidth = 40, friction = 0.6, restitution = 0) {
-  const g = makeBody(b2, world, 0, -0.5, false);
-  addBox(b2, g, halfWidth, 0.5, 0, friction, restitution);
-  return g;
-}
-
-/**
- * A resting scene's measures: penetration (mean and maximum over the last second), the drift of
- * every body between the end of the first second and the end, and the jitter at the end.
- */
-function restingProbe(b2, world, seconds) {
-  let settled = null;
-  let maxDepth = 0;
-  let meanDepth = 0;
-  let samples = 0;
-  return {
-    sample(t) {
-      if (settled === null && t >= 1) settled = positions(world);
-      if (t > seconds - 1) {
-        const p = penetration(b2, world);
-        if (p.max > maxDepth) maxDepth = p.max;
-        meanDepth += p.mean;
-        samples++;
-      }
-    },
-    result() {
-      return {
-        'penetration max': maxDepth,
-        'penetration mean': samples > 0 ? meanDepth / samples : 0,
-        drift: restingDrift(settled, positions(world)),
-        jitter: rmsSpeed(world),
-      };
-    },
-  };
+/** The dynamic bodies' positions through `view`, x and y interleaved. */
+function viewPositions(view, indices) {
+  const out = new Float64Array(2 * indices.length);
+  indices.forEach((index, k) => {
+    const p = view.position(index) ?? [NaN, NaN];
+    out[2 * k] = p[0];
+    out[2 * k + 1] = p[1];
+  });
+  return out;
 }
 
 /** A column of `height` unit boxes on the ground, placed touching. */
-export function buildStack(b2, height) {
-  const world = new b2.b2World(new b2.b2Vec2(0, -G));
-  ground(b2, world);
-  const boxes = [];
-  for (let i = 0; i < height; ++i) {
-    const b = makeBody(b2, world, 0, 0.5 + i, true);
-    addBox(b2, b, 0.5, 0.5);
-    boxes.push(b);
-  }
-  return { world, boxes };
+export function stackData(height) {
+  const bodies = [ground()];
+  for (let i = 0; i < height; ++i) bodies.push(body('dynamic', 0, 0.5 + i, [{ kind: 'box', hx: 0.5, hy: 0.5 }]));
+  return sceneData(`stack-${height}`, `a column of ${height} boxes at rest`, bodies);
 }
 
 /** A pyramid of unit boxes, `base` wide at the bottom. */
-export function buildPyramid(b2, base) {
-  const world = new b2.b2World(new b2.b2Vec2(0, -G));
-  ground(b2, world);
-  const boxes = [];
+export function pyramidData(base) {
+  const bodies = [ground()];
   for (let row = 0; row < base; ++row) {
-    for (let i = 0; i < base - row; ++i) {
-      const b = makeBody(b2, world, i - (base - row - 1) / 2, 0.5 + row, true);
-      addBox(b2, b, 0.5, 0.5);
-      boxes.push(b);
-    }
+    for (let i = 0; i < base - row; ++i) bodies.push(body('dynamic', i - (base - row - 1) / 2, 0.5 + row, [{ kind: 'box', hx: 0.5, hy: 0.5 }]));
   }
-  return { world, boxes };
+  return sceneData(`pyramid-${base}`, `a pyramid of ${(base * (base + 1)) / 2} boxes at rest`, bodies);
 }
 
-/** A chain of `links` capsule-like boxes hanging from a pivot, with a weight of `ratio` link masses at its end. */
-export function buildChain(b2, links, ratio = 1) {
-  const world = new b2.b2World(new b2.b2Vec2(0, -G));
-  const pivot = makeBody(b2, world, 0, 20, false);
-  let prev = pivot;
-  const bodies = [];
+/** A chain of `links` 1 x 0.2 m boxes hanging from a pivot, a disc of `ratio` times a link's mass at its end. */
+export function chainData(links, ratio = 1) {
+  const bodies = [body('static', 0, 20, [])];
+  const joints = [];
   for (let i = 0; i < links; ++i) {
-    const link = makeBody(b2, world, 0.5 + i, 20, true);
-    addBox(b2, link, 0.5, 0.1, 1);
-    const jd = new b2.b2RevoluteJointDef();
-    jd.Initialize(prev, link, new b2.b2Vec2(i, 20));
-    world.CreateJoint(jd);
-    bodies.push(link);
-    prev = link;
+    bodies.push(body('dynamic', 0.5 + i, 20, [{ kind: 'box', hx: 0.5, hy: 0.1 }]));
+    joints.push({ kind: 'revolute', a: i, b: i + 1, ax: i === 0 ? 0 : 0.5, ay: 0, bx: -0.5, by: 0, refAngle: 0, collideConnected: false, motor: null });
   }
-  // The weight: a disc of `ratio` times a link's mass (a link is 1 x 0.2 at density 1).
-  const weight = makeBody(b2, world, links + 0.25, 20, true);
-  addCircle(b2, weight, 0.25, (ratio * 0.2) / (Math.PI * 0.25 * 0.25));
-  const jd = new b2.b2RevoluteJointDef();
-  jd.Initialize(prev, weight, new b2.b2Vec2(links, 20));
-  world.CreateJoint(jd);
-  bodies.push(weight);
-  return { world, bodies };
+  // A link is 1 x 0.2 m at density 1; the weight a disc of radius 0.25 m.
+  bodies.push(body('dynamic', links + 0.25, 20, [{ kind: 'circle', r: 0.25, density: (ratio * 0.2) / (Math.PI * 0.25 * 0.25) }]));
+  joints.push({ kind: 'revolute', a: links, b: links + 1, ax: 0.5, ay: 0, bx: -0.25, by: 0, refAngle: 0, collideConnected: false, motor: null });
+  return sceneData(`chain-${links}`, `a chain of ${links} links with a weight of ${ratio} links`, bodies, { joints });
 }
 
-/** The scenes of the study, by id. */
+/** A 0.05 m plate at x = 5 and a ball of radius 0.1 m at `x0` flying at it at `speed`, without gravity. */
+export function plateData(speed, x0) {
+  return sceneData('plate', 'a ball flying at a thin plate', [body('static', 5, 0, [{ kind: 'box', hx: 0.025, hy: 5, density: 0 }]), body('dynamic', x0, 0, [{ kind: 'circle', r: 0.1 }], { vx: speed })], { gravity: [0, 0] });
+}
+
+/**
+ * A resting scene's measures: drift of every body between the end of the first second and the
+ * end (any engine); with the world, penetration (maximum and mean over the last second) and the
+ * jitter at the end.
+ */
+function restingProbe(data, seconds) {
+  return (view) => {
+    const indices = dynamicIndices(data);
+    let settled = null;
+    let maxDepth = 0;
+    let meanDepth = 0;
+    let samples = 0;
+    return {
+      sample(t) {
+        if (settled === null && t >= 1) settled = viewPositions(view, indices);
+        if (view.world && t > seconds - 1) {
+          const p = penetration(view.b2, view.world);
+          if (p.max > maxDepth) maxDepth = p.max;
+          meanDepth += p.mean;
+          samples++;
+        }
+      },
+      result() {
+        const drift = trajectoryError(settled, viewPositions(view, indices)).max;
+        if (!view.world) return { drift };
+        return { 'penetration max': maxDepth, 'penetration mean': samples > 0 ? meanDepth / samples : 0, drift, jitter: rmsSpeed(view.world) };
+      },
+    };
+  };
+}
+
+const PENDULUM = { L: 2, r: 0.1 };
+const BOUNCE = { h0: 4, r: 0.25, e: 0.5 };
+const SLIDE = { v0: 5, mu: 0.4 };
+
+/** The scenes of the study, by id: { title, seconds, trajectory?, data(), probe(view) }. */
 export const ACCURACY_SCENES = {
   stack: {
     title: 'a column of 10 boxes at rest',
     seconds: 10,
-    build(b2) {
-      const { world } = buildStack(b2, 10);
-      return { world, probe: restingProbe(b2, world, 10) };
-    },
+    data: () => stackData(10),
+    probe: restingProbe(stackData(10), 10),
   },
   pyramid: {
     title: 'a pyramid of 55 boxes at rest',
     seconds: 10,
-    build(b2) {
-      const { world } = buildPyramid(b2, 10);
-      return { world, probe: restingProbe(b2, world, 10) };
-    },
+    data: () => pyramidData(10),
+    probe: restingProbe(pyramidData(10), 10),
   },
   chain: {
     title: 'a chain of 20 links swinging, a weight of 10 links at its end',
     seconds: 5,
-    build(b2) {
-      const { world } = buildChain(b2, 20, 10);
+    data: () => chainData(20, 10),
+    probe(view) {
       let linear = 0;
       return {
-        world,
-        probe: {
-          sample() {
-            const e = jointErrors(world);
-            if (e.linear > linear) linear = e.linear;
-          },
-          result: () => ({ 'joint error': linear }),
+        sample() {
+          if (view.world) linear = Math.max(linear, jointErrors(view.world).linear);
         },
+        result: () => (view.world ? { 'joint error': linear } : {}),
       };
     },
   },
   pendulum: {
     title: 'a 2 m pendulum released at 60 degrees',
     seconds: 9,
-    build(b2) {
-      const world = new b2.b2World(new b2.b2Vec2(0, -G));
-      const pivot = makeBody(b2, world, 0, 0, false);
-      const L = 2;
-      const r = 0.1;
-      const amplitude = Math.PI / 3;
-      // The port's own sine and cosine (b2Rot), so that the start is the same bits in every JavaScript engine.
-      const q = new b2.b2Rot(amplitude);
-      const bob = makeBody(b2, world, L * q.s, -L * q.c, true);
-      addCircle(b2, bob, r);
-      const jd = new b2.b2RevoluteJointDef();
-      jd.Initialize(pivot, bob, new b2.b2Vec2(0, 0));
-      world.CreateJoint(jd);
-      const expected = pendulumPeriod((r * r) / 2 / L + L, G, amplitude);
+    data() {
+      // sin and cos of 60 degrees: sqrt is correctly rounded in every JavaScript engine.
+      const { L, r } = PENDULUM;
+      const bob = body('dynamic', (L * Math.sqrt(3)) / 2, -L / 2, [{ kind: 'circle', r }]);
+      return sceneData('pendulum', this.title, [body('static', 0, 0, []), bob], {
+        joints: [{ kind: 'revolute', a: 0, b: 1, ax: 0, ay: 0, bx: (-L * Math.sqrt(3)) / 2, by: L / 2, refAngle: 0, collideConnected: false, motor: null }],
+      });
+    },
+    probe(view) {
+      const { L, r } = PENDULUM;
+      const expected = pendulumPeriod((r * r) / 2 / L + L, G, Math.PI / 3);
       // Crossings of x = 0 moving right, interpolated within the frame.
       const crossings = [];
-      let prevX = bob.GetPosition().x;
+      let prevX = view.position(1)[0];
       let prevT = 0;
       return {
-        world,
-        probe: {
-          sample(t) {
-            const x = bob.GetPosition().x;
-            if (prevX < 0 && x >= 0) crossings.push(prevT + ((t - prevT) * -prevX) / (x - prevX));
-            prevX = x;
-            prevT = t;
-          },
-          result() {
-            if (crossings.length < 2) return { 'period error': Infinity };
-            const period = (crossings[crossings.length - 1] - crossings[0]) / (crossings.length - 1);
-            return { 'period error': Math.abs(period - expected) / expected };
-          },
+        sample(t) {
+          const x = view.position(1)[0];
+          if (prevX < 0 && x >= 0) crossings.push(prevT + ((t - prevT) * -prevX) / (x - prevX));
+          prevX = x;
+          prevT = t;
+        },
+        result() {
+          if (crossings.length < 2) return { 'period error': Infinity };
+          const period = (crossings[crossings.length - 1] - crossings[0]) / (crossings.length - 1);
+          return { 'period error': Math.abs(period - expected) / expected };
         },
       };
     },
@@ -206,92 +175,72 @@ export const ACCURACY_SCENES = {
   bounce: {
     title: 'a ball dropped from 4 m with restitution 0.5',
     seconds: 4,
-    build(b2) {
-      const world = new b2.b2World(new b2.b2Vec2(0, -G));
-      ground(b2, world, 10, 0.6, 0.5);
-      const r = 0.25;
-      const ball = makeBody(b2, world, 0, 4 + r, true);
-      addCircle(b2, ball, r, 1, 0.6, 0.5);
-      // Box2D mixes restitution as the larger of the two, so the bounce is e = 0.5.
-      const expected = bounceHeights(4, 0.5, 2)[1];
-      let falling = true;
-      let peak = -Infinity;
+    data() {
+      const { h0, r, e } = BOUNCE;
+      return sceneData('bounce', this.title, [ground(10, { restitution: e }), body('dynamic', 0, h0 + r, [{ kind: 'circle', r, restitution: e }])]);
+    },
+    probe(view) {
+      const { h0, r, e } = BOUNCE;
+      // Box2D mixes restitution as the larger of the two, so the bounce is e.
+      const expected = bounceHeights(h0, e, 2)[1];
+      let last = view.position(1)[1] - r;
+      let rising = false;
       let firstPeak = null;
       return {
-        world,
-        probe: {
-          sample() {
-            const v = ball.GetLinearVelocity().y;
-            const h = ball.GetPosition().y - r;
-            if (falling && v > 0) falling = false;
-            if (!falling && firstPeak === null) {
-              if (h > peak) peak = h;
-              else if (v <= 0) firstPeak = peak;
-            }
-          },
-          result: () => ({ 'rebound error': firstPeak === null ? Infinity : Math.abs(firstPeak - expected) / expected }),
+        sample() {
+          const h = view.position(1)[1] - r;
+          if (firstPeak === null) {
+            if (!rising && h > last) rising = true;
+            else if (rising && h < last) firstPeak = last;
+          }
+          last = h;
         },
+        result: () => ({ 'rebound error': firstPeak === null ? Infinity : Math.abs(firstPeak - expected) / expected }),
       };
     },
   },
   slide: {
     title: 'a box sliding at 5 m/s to rest on friction 0.4',
     seconds: 4,
-    build(b2) {
-      const world = new b2.b2World(new b2.b2Vec2(0, -G));
-      ground(b2, world, 40, 0.4);
-      const box = makeBody(b2, world, 0, 0.5, true);
-      addBox(b2, box, 0.5, 0.5, 1, 0.4);
-      box.SetLinearVelocity(new b2.b2Vec2(5, 0));
-      const expected = slidingDistance(5, 0.4, G);
-      return {
-        world,
-        probe: {
-          sample() {},
-          result: () => ({ 'stopping error': Math.abs(box.GetPosition().x - expected) / expected }),
-        },
-      };
+    data() {
+      const { v0, mu } = SLIDE;
+      return sceneData('slide', this.title, [ground(40, { friction: mu }), body('dynamic', 0, 0.5, [{ kind: 'box', hx: 0.5, hy: 0.5, friction: mu }], { vx: v0 })]);
+    },
+    probe(view) {
+      const { v0, mu } = SLIDE;
+      const expected = slidingDistance(v0, mu, G);
+      return { sample() {}, result: () => ({ 'stopping error': Math.abs(view.position(1)[0] - expected) / expected }) };
     },
   },
   elastic: {
     title: '40 frictionless, perfectly elastic balls in a box without gravity',
     seconds: 10,
-    build(b2) {
-      const world = new b2.b2World(new b2.b2Vec2(0, 0));
-      const walls = makeBody(b2, world, 0, 0, false);
-      for (const [x, y, hx, hy] of [
-        [0, -5.5, 6, 0.5],
-        [0, 5.5, 6, 0.5],
-        [-5.5, 0, 0.5, 6],
-        [5.5, 0, 0.5, 6],
-      ]) {
-        const shape = new b2.b2PolygonShape();
-        shape.SetAsBox(hx, hy, new b2.b2Vec2(x, y), 0);
-        const fd = new b2.b2FixtureDef();
-        fd.shape = shape;
-        fd.friction = 0;
-        fd.restitution = 1;
-        walls.CreateFixture(fd);
-      }
-      // A deterministic spread of positions and velocities (a fixed linear congruential sequence).
+    data() {
+      const wall = { density: 0, friction: 0, restitution: 1 };
+      const walls = body('static', 0, 0, [
+        { kind: 'box', hx: 6, hy: 0.5, cx: 0, cy: -5.5, angle: 0, ...wall },
+        { kind: 'box', hx: 6, hy: 0.5, cx: 0, cy: 5.5, angle: 0, ...wall },
+        { kind: 'box', hx: 0.5, hy: 6, cx: -5.5, cy: 0, angle: 0, ...wall },
+        { kind: 'box', hx: 0.5, hy: 6, cx: 5.5, cy: 0, angle: 0, ...wall },
+      ]);
+      // A deterministic spread of velocities (a fixed linear congruential sequence).
       let seed = 12345;
       const next = () => {
         seed = (seed * 1103515245 + 12345) % 2147483648;
         return seed / 2147483648;
       };
+      const balls = [];
       for (let i = 0; i < 40; ++i) {
-        const ball = makeBody(b2, world, -4 + (i % 8), -4 + 2 * Math.floor(i / 8), true);
-        addCircle(b2, ball, 0.3, 1, 0, 1);
-        ball.SetLinearVelocity(new b2.b2Vec2(6 * next() - 3, 6 * next() - 3));
+        const vx = 6 * next() - 3;
+        const vy = 6 * next() - 3;
+        balls.push(body('dynamic', -4 + (i % 8), -4 + 2 * Math.floor(i / 8), [{ kind: 'circle', r: 0.3, friction: 0, restitution: 1 }], { vx, vy }));
       }
-      const start = energyAndMomentum(world).total;
-      return {
-        world,
-        probe: {
-          sample() {},
-          result: () => ({ 'energy drift': Math.abs(energyAndMomentum(world).total - start) / start }),
-        },
-      };
+      return sceneData('elastic', this.title, [walls, ...balls], { gravity: [0, 0] });
+    },
+    probe(view) {
+      if (!view.world) return { sample() {}, result: () => ({}) };
+      const start = energyAndMomentum(view.world).total;
+      return { sample() {}, result: () => ({ 'energy drift': Math.abs(energyAndMomentum(view.world).total - start) / start }) };
     },
   },
   drop: {
@@ -299,17 +248,33 @@ export const ACCURACY_SCENES = {
     // Short enough that the run is not chaotic: the error falls as the step shrinks (at 1 s it no longer does).
     seconds: 0.5,
     trajectory: true,
-    build(b2) {
-      const world = new b2.b2World(new b2.b2Vec2(0, -G));
-      ground(b2, world);
+    data() {
+      const bodies = [ground()];
       for (let i = 0; i < 30; ++i) {
-        const b = makeBody(b2, world, -2.5 + (i % 6) + 0.1 * (i % 3), 1 + 1.2 * Math.floor(i / 6), true, 0.1 * i);
-        if (i % 2 === 0) addBox(b2, b, 0.4, 0.3);
-        else addCircle(b2, b, 0.35);
+        const shape = i % 2 === 0 ? { kind: 'box', hx: 0.4, hy: 0.3 } : { kind: 'circle', r: 0.35 };
+        bodies.push(body('dynamic', -2.5 + (i % 6) + 0.1 * (i % 3), 1 + 1.2 * Math.floor(i / 6), [shape], { angle: 0.1 * i }));
       }
-      return { world, probe: { sample() {}, result: () => ({}) } };
+      return sceneData('drop', this.title, bodies);
     },
+    probe: () => ({ sample() {}, result: () => ({}) }),
   },
 };
 
 export const ACCURACY_SCENE_IDS = Object.keys(ACCURACY_SCENES);
+
+/** The dynamic bodies' positions of a scene built from `data`, through `view` (the trajectory error's snapshot). */
+export function scenePositions(data, view) {
+  return viewPositions(view, dynamicIndices(data));
+}
+
+/**
+ * Scene `id` built in WebPhysics (`b2`, its exports), sleeping off: its b2World, the adapter view
+ * and the probe, which sees the world.
+ */
+export function buildScene(b2, id) {
+  const scene = ACCURACY_SCENES[id];
+  const data = scene.data();
+  const built = createBox2D221World(b2, data, { sleep: false });
+  const view = { position: built.position, world: built.world, b2 };
+  return { world: built.world, data, view, probe: scene.probe(view) };
+}

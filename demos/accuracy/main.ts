@@ -6,7 +6,7 @@
  * `window.webphysicsAccuracy` is the state tests read.
  */
 
-import { MEASURE_UNITS } from '../../bench/accuracy/report.mjs';
+import { MEASURE_UNITS, labelOf as resultLabel } from '../../bench/accuracy/report.mjs';
 import type { AccuracyRun, AccuracyScene } from '../../bench/accuracy/run.mjs';
 import { ParetoChart, formatNumber } from './chart';
 import { replay } from './replay';
@@ -50,10 +50,7 @@ const chart = new ParetoChart(chartCanvas);
 let run: AccuracyRun | null = null;
 let stopReplay: (() => void) | null = null;
 
-const labelOf = (method: string, backend: string) => {
-  const label = run?.methods.find((m) => m.id === method)?.label ?? method;
-  return backend === 'webgpu' ? `WebGPU, ${label}` : label;
-};
+const labelOf = (method: string, backend: string) => resultLabel(run!, { key: method, method, backend, msPerSecond: null, measures: {} });
 
 function currentScene(): AccuracyScene {
   return run!.scenes.find((s) => s.id === sceneSelect.value)!;

@@ -13,9 +13,9 @@ import type { b2CircleShape } from '../../src/collision/shapes/b2CircleShape';
 import type { b2PolygonShape } from '../../src/collision/shapes/b2PolygonShape';
 import type { b2EdgeShape } from '../../src/collision/shapes/b2EdgeShape';
 import type { b2ChainShape } from '../../src/collision/shapes/b2ChainShape';
-import { ACCURACY_SCENES } from '../../bench/accuracy/scenes.mjs';
+import { ACCURACY_SCENES, buildScene, scenePositions } from '../../bench/accuracy/scenes.mjs';
 import { REFERENCE, applyMethod, methodById, stepFrame } from '../../bench/accuracy/methods.mjs';
-import { positions, trajectoryError } from '../../bench/accuracy/measures.mjs';
+import { trajectoryError } from '../../bench/accuracy/measures.mjs';
 
 export interface ReplayState {
   scene: string;
@@ -121,20 +121,21 @@ function frameDynamic(world: b2World): { x: number; y: number; half: number } {
 export function replay(sceneId: string, methodId: string, canvas: HTMLCanvasElement, onFrame: (state: ReplayState) => void, framesPerDraw = 1): () => void {
   const scene = ACCURACY_SCENES[sceneId as keyof typeof ACCURACY_SCENES];
   if (scene === undefined) throw new RangeError(`replay: unknown scene '${sceneId}'`);
+  const id = sceneId as keyof typeof ACCURACY_SCENES;
   const method = methodById(methodId);
   // A trajectory scene is measured against the converged reference, run first (not drawn).
   let reference: Float64Array | null = null;
-  if ('trajectory' in scene && scene.trajectory) {
-    const ref = scene.build(b2);
+  if (scene.trajectory === true) {
+    const ref = buildScene(b2, id);
     applyMethod(ref.world, REFERENCE);
     const frames = Math.round(scene.seconds * REFERENCE.frameHz);
     for (let f = 1; f <= frames; ++f) stepFrame(ref.world, REFERENCE);
-    reference = positions(ref.world);
+    reference = scenePositions(ref.data, ref.view);
   }
-  const { world, probe } = scene.build(b2);
+  const { world, data, view, probe } = buildScene(b2, id);
   applyMethod(world, method);
   const frames = Math.round(scene.seconds * method.frameHz);
-  const view = frameDynamic(world);
+  const camera = frameDynamic(world);
   const state: ReplayState = { scene: sceneId, method: methodId, frame: 0, frames, done: false, measures: null };
   let handle = 0;
   const tick = () => {
@@ -143,10 +144,10 @@ export function replay(sceneId: string, methodId: string, canvas: HTMLCanvasElem
       stepFrame(world, method);
       probe.sample(state.frame / method.frameHz);
     }
-    drawWorld(canvas, world, view);
+    drawWorld(canvas, world, camera);
     if (state.frame >= frames) {
       const measures: Record<string, number> = { ...probe.result() };
-      if (reference !== null) measures['trajectory error'] = trajectoryError(reference, positions(world)).max;
+      if (reference !== null) measures['trajectory error'] = trajectoryError(reference, scenePositions(data, view)).max;
       state.measures = measures;
       state.done = true;
     } else {

@@ -17,7 +17,7 @@ import { b2RevoluteJointDef } from '../../src/dynamics/joints/b2RevoluteJoint';
 import { b2WeldJointDef } from '../../src/dynamics/joints/b2WeldJoint';
 import { agm, freeFall, pendulumPeriod } from '../../bench/accuracy/analytic.mjs';
 import { bisectLimit } from '../../bench/accuracy/limits.mjs';
-import { runAccuracy, writeAccuracy } from '../../bench/accuracy/run.mjs';
+import { loadPeers, runAccuracy, writeAccuracy } from '../../bench/accuracy/run.mjs';
 import { energyAndMomentum, jointErrors, penetration, positions, restingDrift, trajectoryError } from '../../bench/accuracy/measures.mjs';
 
 const DT = 1 / 60;
@@ -267,4 +267,20 @@ describe('runAccuracy --quick', () => {
       rmSync(dir, { recursive: true, force: true });
     }
   });
+});
+
+describe('peers in the accuracy study', () => {
+  it("measures a peer engine at its own settings where positions suffice: planck's pendulum period, and no energy for its elastic balls", async () => {
+    const peers = await loadPeers(['planck'], '');
+    const run = await runAccuracy(b2, { scenes: ['pendulum', 'elastic'], methods: ['iter-8-3'], limits: false, peers, rounds: 1 });
+    expect(run.peers.map((p) => p.id)).toEqual(['planck']);
+    const [pendulum, elastic] = run.scenes.map((s) => s.results.find((r) => r.backend === 'planck')!);
+    expect(pendulum.key).toBe('planck');
+    expect(pendulum.msPerSecond).toBeGreaterThan(0);
+    // planck is Box2D 2.x too: its period is short by about what WebPhysics' is at 60 Hz.
+    expect(pendulum.measures['period error']).toBeGreaterThan(0.001);
+    expect(pendulum.measures['period error']).toBeLessThan(0.05);
+    expect(elastic.measures).toEqual({});
+    expect(run.scenes[1].fronts['energy drift']).toEqual(['iter-8-3']);
+  }, 120_000);
 });
