@@ -93,14 +93,23 @@ export function paretoSvg(scene, measure, run) {
   if (frontPoints.length > 1) {
     parts.push(`<polyline fill="none" stroke="#f28e2b" stroke-width="2" points="${frontPoints.map((r) => `${px(r.msPerSecond).toFixed(1)},${py(r.measures[measure]).toFixed(1)}`).join(' ')}"/>`);
   }
-  for (const r of points) {
+  // Front points first, cheapest first, so that their labels win where labels would overlap (a
+  // skipped label's point still names its method in its tooltip).
+  const placed = [];
+  const ordered = [...points].sort((a, b) => Number(front.has(b.key)) - Number(front.has(a.key)) || a.msPerSecond - b.msPerSecond);
+  for (const r of ordered) {
     const on = front.has(r.key);
+    parts.push(
+      `<circle cx="${px(r.msPerSecond).toFixed(1)}" cy="${py(r.measures[measure]).toFixed(1)}" r="${on ? 5 : 4}" fill="${on ? '#f28e2b' : r.backend === 'webgpu' ? '#59a14f' : r.backend === 'js' ? '#4e79a7' : '#b07aa1'}"><title>${esc(`${labelOf(run, r)}: ${fmt(r.msPerSecond)} ms per simulated second, ${measure} ${fmt(r.measures[measure])}`)}</title></circle>`,
+    );
+  }
+  for (const r of ordered) {
     const cx = px(r.msPerSecond);
     const cy = py(r.measures[measure]);
-    parts.push(
-      `<circle cx="${cx.toFixed(1)}" cy="${cy.toFixed(1)}" r="${on ? 5 : 4}" fill="${on ? '#f28e2b' : r.backend === 'webgpu' ? '#59a14f' : r.backend === 'js' ? '#4e79a7' : '#b07aa1'}"><title>${esc(`${labelOf(run, r)}: ${fmt(r.msPerSecond)} ms per simulated second, ${measure} ${fmt(r.measures[measure])}`)}</title></circle>`,
-      `<text x="${(cx + 7).toFixed(1)}" y="${(cy + 4).toFixed(1)}" fill="#333" font-size="10">${esc(r.key)}</text>`,
-    );
+    const box = { x: cx + 7, y: cy - 8, w: 6 * r.key.length, h: 11 };
+    if (placed.some((b) => box.x < b.x + b.w && b.x < box.x + box.w && box.y < b.y + b.h && b.y < box.y + box.h)) continue;
+    placed.push(box);
+    parts.push(`<text x="${(cx + 7).toFixed(1)}" y="${(cy + 4).toFixed(1)}" fill="#333" font-size="10">${esc(r.key)}</text>`);
   }
   // Notes at the right: failed runs, exact answers, and the GPU's untimed points with their errors.
   const notes = [];
@@ -134,7 +143,7 @@ export function accuracyMarkdown(run) {
       // Outside the range: not even the safe end passes ('below'), or the far end passes too ('above').
       const [safe, far] = l.smallest ? [`above ${fmt(l.range[1])}`, `at most ${fmt(l.range[0])}`] : [`below ${fmt(l.range[0])}`, `at least ${fmt(l.range[1])}`];
       const value = l.outside === 'below' ? safe : l.outside === 'above' ? far : fmt(l.limit);
-      lines.push(`| ${l.id} | ${labels[l.method] ?? l.method} | ${value} ${l.unit} | ${l.test} | ${l.tests} |`);
+      lines.push(`| ${l.id} | ${labels[l.method] ?? labelOf(run, { backend: l.method, method: 'default' })} | ${value} ${l.unit} | ${l.test} | ${l.tests} |`);
     }
     lines.push('');
   }

@@ -74,6 +74,7 @@ export interface AccuracyOptions {
 export const ACCURACY_SCHEMA: string;
 export function runAccuracy(b2: unknown, options?: AccuracyOptions): Promise<AccuracyRun>;
 export function stabilityLimits(b2: unknown, method: AccuracyMethod, options?: { quick?: boolean }): Promise<AccuracyLimit[]>;
+export function peerLimits(engine: unknown, api: unknown): Promise<AccuracyLimit[]>;
 export function gpuBackend(gpuBundle: string): Promise<GpuRunner>;
 export function loadPeers(ids: string[] | null, oursBundle: string): Promise<{ engine: unknown; api: unknown }[]>;
 export function writeAccuracy(results: AccuracyRun, dir: string): string[];

@@ -192,6 +192,56 @@ export async function stabilityLimits(b2, m, { quick = false } = {}) {
 }
 
 /**
+ * The stability limits a peer engine's adapter can be tested on (positions only, its own
+ * settings): stack height, frame time (the scene's step) and tunnelling speed with its own
+ * continuous collision, by the same tests as stabilityLimits.
+ */
+export async function peerLimits(engine, api) {
+  const out = [];
+  const limit = async (id, test, unit, lo, hi, options, passes) => {
+    const r = await bisectLimit(passes, lo, hi, options);
+    out.push({ id, test, unit, method: engine.id, range: [lo, hi], smallest: false, ...r });
+  };
+  /** Steps a world built from `data` for `seconds`; false as soon as `check(instance)` is. */
+  const runPeer = (data, seconds, check) => {
+    const instance = engine.create(api, data, { sleep: false });
+    try {
+      const steps = Math.round(seconds / data.dt);
+      for (let k = 0; k < steps; ++k) {
+        instance.step();
+        if (!check(instance)) return false;
+      }
+      return true;
+    } finally {
+      instance.destroy();
+    }
+  };
+  const standsPeer = (data) => {
+    const top = data.bodies.length - 1;
+    const start = [data.bodies[top].x, data.bodies[top].y];
+    return runPeer(data, 10, (instance) => {
+      const p = instance.position(top);
+      return p !== null && stands(p, start);
+    });
+  };
+  await limit('stack height', 'the tallest column of unit boxes whose top box stays within 0.5 m of its start for 10 s', 'boxes', 2, 80, { integer: true }, (h) => standsPeer(stackData(h)));
+  await limit('frame time', 'the longest step with which a pyramid of base 10 stands 10 s (top box within 0.5 m)', 's', 1 / 240, 1 / 4, { tolerance: 1e-3 }, (dt) => standsPeer({ ...pyramidData(10), dt }));
+  await limit('tunnelling speed', "the fastest ball (radius 0.1 m) that a static plate 0.05 m thick stops from any of 8 starts over one step, with the engine's own continuous collision", 'm/s', 1, 120, { tolerance: 0.5 }, (speed) => {
+    for (let k = 0; k < 8; ++k) {
+      const data = plateData(speed, (k / 8) * (speed / 60));
+      let x = 0;
+      runPeer(data, 1, (instance) => {
+        x = instance.position(1)?.[0] ?? Infinity;
+        return true;
+      });
+      if (!(x < 5)) return false;
+    }
+    return true;
+  });
+  return out;
+}
+
+/**
  * The study with engine module `b2` (the exports of webphysics): each scene under each method,
  * the trajectory scenes against REFERENCE, the Pareto front per scene and measure, and each
  * method's stability limits.
@@ -239,7 +289,10 @@ export async function runAccuracy(b2, options = {}) {
   }
   // Every method's limits; --quick: the default method's only.
   const limits = [];
-  if (options.limits !== false) for (const m of quick ? [DEFAULT_METHOD] : methods) limits.push(...(await stabilityLimits(b2, m, { quick })));
+  if (options.limits !== false) {
+    for (const m of quick ? [DEFAULT_METHOD] : methods) limits.push(...(await stabilityLimits(b2, m, { quick })));
+    for (const { engine, api } of peers) limits.push(...(await peerLimits(engine, api)));
+  }
   for (const l of limits) log(`limit ${l.id}: ${l.limit} ${l.unit}${l.outside ? ` (${l.outside} the range)` : ''} after ${l.tests} tests`);
   const cpus = os.cpus();
   return {

@@ -11,6 +11,7 @@ const FLOOR = 1e-12;
 const FRONT = '#f28e2b';
 const JS = '#4e79a7';
 const GPU = '#59a14f';
+const PEER = '#b07aa1';
 
 /** A point as drawn, in CSS pixels of the canvas. */
 export interface DrawnPoint {
@@ -99,13 +100,21 @@ export class ParetoChart {
     ctx.beginPath();
     onFront.forEach((p, i) => (i === 0 ? ctx.moveTo(p.x, p.y) : ctx.lineTo(p.x, p.y)));
     ctx.stroke();
-    for (const p of this.points) {
-      ctx.fillStyle = p.front ? FRONT : p.result.backend === 'webgpu' ? GPU : JS;
+    // Front points first, cheapest first, so that their labels win where labels would overlap (hover names the rest).
+    const placed: { x: number; y: number; w: number; h: number }[] = [];
+    ctx.font = '10px system-ui, sans-serif';
+    const ordered = [...this.points].sort((a, b) => Number(b.front) - Number(a.front) || a.x - b.x);
+    for (const p of ordered) {
+      ctx.fillStyle = p.front ? FRONT : p.result.backend === 'webgpu' ? GPU : p.result.backend === 'js' ? JS : PEER;
       ctx.beginPath();
       ctx.arc(p.x, p.y, p.front ? 5 : 4, 0, 2 * Math.PI);
       ctx.fill();
+    }
+    for (const p of ordered) {
+      const box = { x: p.x + 7, y: p.y - 8, w: ctx.measureText(p.result.key).width, h: 11 };
+      if (placed.some((b) => box.x < b.x + b.w && b.x < box.x + box.w && box.y < b.y + b.h && b.y < box.y + box.h)) continue;
+      placed.push(box);
       ctx.fillStyle = '#bbb';
-      ctx.font = '10px system-ui, sans-serif';
       ctx.fillText(p.result.key, p.x + 7, p.y + 3);
     }
     ctx.font = '11px system-ui, sans-serif';
