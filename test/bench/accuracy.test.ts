@@ -17,7 +17,7 @@ import { b2RevoluteJointDef } from '../../src/dynamics/joints/b2RevoluteJoint';
 import { b2WeldJointDef } from '../../src/dynamics/joints/b2WeldJoint';
 import { agm, freeFall, pendulumPeriod } from '../../bench/accuracy/analytic.mjs';
 import { bisectLimit } from '../../bench/accuracy/limits.mjs';
-import { loadPeers, runAccuracy, writeAccuracy } from '../../bench/accuracy/run.mjs';
+import { loadPeers, peerLimits, runAccuracy, writeAccuracy } from '../../bench/accuracy/run.mjs';
 import { energyAndMomentum, jointErrors, penetration, positions, restingDrift, trajectoryError } from '../../bench/accuracy/measures.mjs';
 
 const DT = 1 / 60;
@@ -282,5 +282,11 @@ describe('peers in the accuracy study', () => {
     expect(pendulum.measures['period error']).toBeLessThan(0.05);
     expect(elastic.measures).toEqual({});
     expect(run.scenes[1].fronts['energy drift']).toEqual(['iter-8-3']);
+    // Its limits, by the same tests: Box2D 2.x stacks, and stops a ball at any speed with its continuous collision.
+    const limits = await peerLimits(peers[0].engine, peers[0].api);
+    expect(limits.map((l) => l.id)).toEqual(['stack height', 'frame time', 'tunnelling speed']);
+    expect(limits[0].limit).toBeGreaterThan(10);
+    expect(limits[0].outside).toBeNull();
+    expect(limits[2].outside).toBe('above');
   }, 120_000);
 });
