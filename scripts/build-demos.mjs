@@ -59,7 +59,7 @@ const kEntries = {
   'compare-worker': path.join(repoRoot, 'demos', 'compare', 'worker.ts'),
   accuracy: path.join(repoRoot, 'demos', 'accuracy', 'main.ts'),
 };
-const kStatic = ['index.html', 'page.css', 'testbed.css', 'compare.html', 'compare.css', 'accuracy.html', 'accuracy.css'];
+const kStatic = ['index.html', 'page.css', 'testbed.css', 'header.css', 'compare.html', 'compare.css', 'accuracy.html', 'accuracy.css'];
 /** The accuracy study's results, which the accuracy page draws (bench/accuracy/run.mjs writes them). */
 const kAccuracyResults = path.join(repoRoot, 'bench', 'results', 'accuracy', 'accuracy.json');
 

@@ -5,6 +5,7 @@
  */
 
 import type { AccuracyResult, AccuracyScene } from '../../bench/accuracy/run.mjs';
+import { fitCanvas } from '../canvas';
 
 /** Errors below this are drawn at it (an exact answer has no logarithm), as in the SVG charts. */
 const FLOOR = 1e-12;
@@ -44,13 +45,7 @@ export class ParetoChart {
 
   /** Draws `measure` of `scene`; the GPU's untimed results are listed, not placed. */
   draw(scene: AccuracyScene, measure: string, unit: string): void {
-    const canvas = this.canvas;
-    const dpr = window.devicePixelRatio || 1;
-    const rect = canvas.getBoundingClientRect();
-    const w = Math.max(1, rect.width);
-    const h = Math.max(1, rect.height);
-    canvas.width = Math.round(w * dpr);
-    canvas.height = Math.round(h * dpr);
+    const { width: w, height: h, dpr } = fitCanvas(this.canvas);
     const ctx = this.ctx;
     ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
     ctx.fillStyle = '#161616';

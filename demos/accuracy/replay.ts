@@ -16,6 +16,7 @@ import type { b2ChainShape } from '../../src/collision/shapes/b2ChainShape';
 import { ACCURACY_SCENES, buildScene, scenePositions } from '../../bench/accuracy/scenes.mjs';
 import { REFERENCE, applyMethod, methodById, stepFrame } from '../../bench/accuracy/methods.mjs';
 import { trajectoryError } from '../../bench/accuracy/measures.mjs';
+import { fitCanvas } from '../canvas';
 
 export interface ReplayState {
   scene: string;
@@ -28,14 +29,7 @@ export interface ReplayState {
 
 /** Draws a world's fixtures (static green, dynamic pink, as the Testbed colours them) to fit the canvas. */
 function drawWorld(canvas: HTMLCanvasElement, world: b2World, view: { x: number; y: number; half: number }): void {
-  const dpr = window.devicePixelRatio || 1;
-  const rect = canvas.getBoundingClientRect();
-  const w = Math.max(1, rect.width);
-  const h = Math.max(1, rect.height);
-  if (canvas.width !== Math.round(w * dpr) || canvas.height !== Math.round(h * dpr)) {
-    canvas.width = Math.round(w * dpr);
-    canvas.height = Math.round(h * dpr);
-  }
+  const { width: w, height: h, dpr } = fitCanvas(canvas);
   const ctx = canvas.getContext('2d')!;
   ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
   ctx.fillStyle = '#000';
@@ -48,6 +42,14 @@ function drawWorld(canvas: HTMLCanvasElement, world: b2World, view: { x: number;
     const xf = body.m_xf;
     const px = (x: number, y: number) => sx(xf.q.c * x - xf.q.s * y + xf.p.x);
     const py = (x: number, y: number) => sy(xf.q.s * x + xf.q.c * y + xf.p.y);
+    /** A path through the first `count` local vertices. */
+    const path = (vertices: readonly { x: number; y: number }[], count: number) => {
+      for (let i = 0; i < count; ++i) {
+        const v = vertices[i];
+        if (i === 0) ctx.moveTo(px(v.x, v.y), py(v.x, v.y));
+        else ctx.lineTo(px(v.x, v.y), py(v.x, v.y));
+      }
+    };
     ctx.strokeStyle = body.GetType() === b2.b2_staticBody ? '#7fe57f' : '#e5b2b2';
     ctx.fillStyle = body.GetType() === b2.b2_staticBody ? 'rgba(127,229,127,0.25)' : 'rgba(229,178,178,0.25)';
     for (let f = body.GetFixtureList(); f; f = f.GetNext()) {
@@ -65,11 +67,7 @@ function drawWorld(canvas: HTMLCanvasElement, world: b2World, view: { x: number;
         }
         case b2.b2Shape.e_polygon: {
           const p = shape as b2PolygonShape;
-          for (let i = 0; i < p.m_vertexCount; ++i) {
-            const v = p.m_vertices[i];
-            if (i === 0) ctx.moveTo(px(v.x, v.y), py(v.x, v.y));
-            else ctx.lineTo(px(v.x, v.y), py(v.x, v.y));
-          }
+          path(p.m_vertices, p.m_vertexCount);
           ctx.closePath();
           break;
         }
@@ -81,11 +79,7 @@ function drawWorld(canvas: HTMLCanvasElement, world: b2World, view: { x: number;
         }
         case b2.b2Shape.e_chain: {
           const c = shape as b2ChainShape;
-          for (let i = 0; i < c.m_count; ++i) {
-            const v = c.m_vertices[i];
-            if (i === 0) ctx.moveTo(px(v.x, v.y), py(v.x, v.y));
-            else ctx.lineTo(px(v.x, v.y), py(v.x, v.y));
-          }
+          path(c.m_vertices, c.m_count);
           break;
         }
       }

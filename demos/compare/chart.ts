@@ -4,6 +4,8 @@
  * wherever the scene was rebuilt.
  */
 
+import { fitCanvas } from '../canvas';
+
 export interface ChartSeries {
   label: string;
   colour: string;
@@ -39,15 +41,7 @@ export class StepChart {
   }
 
   draw(now: number): void {
-    const canvas = this.canvas;
-    const dpr = window.devicePixelRatio || 1;
-    const rect = canvas.getBoundingClientRect();
-    const w = Math.max(1, rect.width);
-    const h = Math.max(1, rect.height);
-    if (canvas.width !== Math.round(w * dpr) || canvas.height !== Math.round(h * dpr)) {
-      canvas.width = Math.round(w * dpr);
-      canvas.height = Math.round(h * dpr);
-    }
+    const { width: w, height: h, dpr } = fitCanvas(this.canvas);
     const ctx = this.ctx;
     ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
     ctx.fillStyle = '#161616';

@@ -8,6 +8,7 @@
 
 import { GEOMETRY_CIRCLE, TRANSFORM_STRIDE } from './config';
 import type { SceneGeometry, SceneView } from './config';
+import { fitCanvas } from '../canvas';
 
 /** The view shared by both panes: a centre in metres and a scale in CSS pixels per metre. */
 export class Camera {
@@ -73,16 +74,9 @@ export class PaneView {
 
   /** Matches the backing store to the element's CSS size and the device pixel ratio. */
   resize(): void {
-    const rect = this.canvas.getBoundingClientRect();
-    const dpr = window.devicePixelRatio || 1;
-    this.width = Math.max(1, rect.width);
-    this.height = Math.max(1, rect.height);
-    const w = Math.round(this.width * dpr);
-    const h = Math.round(this.height * dpr);
-    if (this.canvas.width !== w || this.canvas.height !== h) {
-      this.canvas.width = w;
-      this.canvas.height = h;
-    }
+    const { width, height } = fitCanvas(this.canvas);
+    this.width = width;
+    this.height = height;
   }
 
   clear(): void {
