@@ -118,7 +118,7 @@ export function paretoSvg(scene, measure, run) {
   if (ys.some((v) => v === FLOOR)) notes.push([`0 drawn at ${fmt(FLOOR)}`, '#555']);
   if (untimed.length > 0) notes.push(['untimed (software adapter):', '#59a14f'], ...untimed.map((r) => [`${r.key}: ${fmt(r.measures[measure])}`, '#59a14f']));
   const unmeasured = scene.results.filter((r) => r.measures[measure] === undefined);
-  if (unmeasured.length > 0) notes.push([`not measurable: ${unmeasured.map((r) => r.key).join(', ')}`, '#999']);
+  if (unmeasured.length > 0) notes.push(['not measured (needs a b2World):', '#999'], ...unmeasured.map((r) => [r.key, '#999']));
   notes.forEach(([text, colour], i) => parts.push(`<text x="${width - right + 10}" y="${top + 10 + 16 * i}" fill="${colour}" font-size="11">${esc(text)}</text>`));
   parts.push('</svg>');
   return parts.join('\n') + '\n';
@@ -138,12 +138,24 @@ export function accuracyMarkdown(run) {
     lines.push('');
   }
   if (run.limits.length > 0) {
-    lines.push('## Stability limits', '', '| limit | method | value | test | tests run |', '| --- | --- | ---: | --- | ---: |');
-    for (const l of run.limits) {
+    // One row per method or peer, one column per limit; the tests below.
+    const ids = [...new Set(run.limits.map((l) => l.id))];
+    const owners = [...new Set(run.limits.map((l) => l.method))];
+    const value = (l) => {
+      if (l === undefined) return '–';
       // Outside the range: not even the safe end passes ('below'), or the far end passes too ('above').
-      const [safe, far] = l.smallest ? [`above ${fmt(l.range[1])}`, `at most ${fmt(l.range[0])}`] : [`below ${fmt(l.range[0])}`, `at least ${fmt(l.range[1])}`];
-      const value = l.outside === 'below' ? safe : l.outside === 'above' ? far : fmt(l.limit);
-      lines.push(`| ${l.id} | ${labels[l.method] ?? labelOf(run, { backend: l.method, method: 'default' })} | ${value} ${l.unit} | ${l.test} | ${l.tests} |`);
+      const [safe, far] = l.smallest ? [`> ${fmt(l.range[1])}`, `≤ ${fmt(l.range[0])}`] : [`< ${fmt(l.range[0])}`, `≥ ${fmt(l.range[1])}`];
+      return l.outside === 'below' ? safe : l.outside === 'above' ? far : fmt(l.limit);
+    };
+    lines.push('## Stability limits', '', `| method | ${ids.map((id) => `${id} (${run.limits.find((l) => l.id === id).unit})`).join(' | ')} |`, `| --- |${' ---: |'.repeat(ids.length)}`);
+    for (const owner of owners) {
+      const label = labels[owner] ?? labelOf(run, { backend: owner, method: 'default' });
+      lines.push(`| ${label} | ${ids.map((id) => value(run.limits.find((l) => l.method === owner && l.id === id))).join(' | ')} |`);
+    }
+    lines.push('', 'The tests (each limit found by bisection; – : not tested for that engine):', '');
+    for (const id of ids) {
+      const tests = [...new Set(run.limits.filter((l) => l.id === id).map((l) => l.test))];
+      for (const test of tests) lines.push(`- ${id}: ${test}`);
     }
     lines.push('');
   }
