@@ -140,8 +140,8 @@ export class GpuPipeline {
   }
 
   /**
-   * Records stages `first` to `last` into `pass`, each reading the buffers named here. The
-   * broad phase's stage needs its beginUpdate() and the narrow phase's its beginUpdate() before.
+   * Records stages `first` to `last` into `pass`, each reading the buffers named here, after the
+   * broad phase's and the narrow phase's beginUpdate().
    */
   private record(pass: PassRecorder, mirror: GpuWorld, first: GpuStage, last: GpuStage): void {
     const bp = this.broadPhase;
