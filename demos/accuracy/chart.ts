@@ -121,7 +121,7 @@ export class ParetoChart {
     };
     if (ys.some((v) => v === FLOOR)) note(`0 drawn at ${formatNumber(FLOOR)}`, '#999');
     if (untimed.length > 0) {
-      note('WebGPU, untimed (software adapter):', GPU);
+      note('WebGPU (untimed: software):', GPU);
       for (const r of untimed) note(`${r.key}: ${formatNumber(r.measures[measure])}`, GPU);
     }
   }

@@ -56,14 +56,19 @@ function currentScene(): AccuracyScene {
   return run!.scenes.find((s) => s.id === sceneSelect.value)!;
 }
 
+/** The results the page can replay: the JavaScript engine's, and the WebGPU backend's where this browser has WebGPU. */
+function replayable(scene: AccuracyScene) {
+  const gpu = 'gpu' in navigator && navigator.gpu !== undefined;
+  return scene.results.filter((r) => r.backend === 'js' || (gpu && r.backend === 'webgpu'));
+}
+
 function fillMeasures(scene: AccuracyScene, wanted: string | null): void {
   measureSelect.replaceChildren(...scene.measures.map((m) => new Option(m, m)));
   if (wanted !== null && scene.measures.includes(wanted)) measureSelect.value = wanted;
-  // The replay runs on this page's JavaScript engine: its methods only.
-  const methods = [...new Set(scene.results.filter((r) => r.backend === 'js').map((r) => r.method))];
+  const results = replayable(scene);
   const previous = methodSelect.value;
-  methodSelect.replaceChildren(...methods.map((m) => new Option(labelOf(m, 'js'), m)));
-  if (methods.includes(previous)) methodSelect.value = previous;
+  methodSelect.replaceChildren(...results.map((r) => new Option(labelOf(r.method, r.backend), r.key)));
+  if (results.some((r) => r.key === previous)) methodSelect.value = previous;
 }
 
 function drawChart(): void {
@@ -97,21 +102,32 @@ function showTip(event: MouseEvent): void {
 
 function startReplay(): void {
   stopReplay?.();
+  stopReplay = null;
   const scene = currentScene();
-  const method = methodSelect.value;
-  state.expected = scene.results.find((r) => r.backend === 'js' && r.method === method)?.measures ?? null;
+  const result = scene.results.find((r) => r.key === methodSelect.value)!;
+  const gpu = result.backend === 'webgpu';
+  const label = labelOf(result.method, result.backend);
+  state.expected = result.measures;
+  state.replay = null;
   replayResult.textContent = 'Running…';
-  stopReplay = replay(scene.id, method, worldCanvas, (s) => {
+  const onFrame = (s: ReplayState) => {
     state.replay = { ...s, measures: s.measures === null ? null : { ...s.measures } };
     if (!s.done) {
-      replayResult.textContent = `${labelOf(method, 'js')}: ${(s.frame / s.frames * 100).toFixed(0)} % of ${scene.seconds} s`;
+      replayResult.textContent = `${label}: ${((s.frame / s.frames) * 100).toFixed(0)} % of ${scene.seconds} s`;
       return;
     }
-    const same = state.expected !== null && Object.entries(s.measures!).every(([k, v]) => Object.is(v, state.expected![k]));
-    replayResult.textContent = `${labelOf(method, 'js')}: ${Object.entries(s.measures!)
+    const same = Object.entries(s.measures!).every(([k, v]) => Object.is(v, result.measures[k]));
+    // The GPU's numbers are this device's; the study's came from Dawn's SwiftShader in Node.
+    const verdict = same ? 'the same as the study, bit for bit' : gpu ? 'on this device; the study measured it on SwiftShader' : "NOT the study's numbers";
+    replayResult.textContent = `${label}: ${Object.entries(s.measures!)
       .map(([k, v]) => `${k} ${formatNumber(v)}`)
-      .join(', ')}; ${same ? 'the same as the study, bit for bit' : 'NOT the study\'s numbers'}`;
-  });
+      .join(', ')}; ${verdict}`;
+  };
+  const onError = (e: unknown) => {
+    state.error = e instanceof Error ? e.message : String(e);
+    replayResult.textContent = `The replay stopped: ${state.error}`;
+  };
+  replay(scene.id, result.method, gpu, worldCanvas, onFrame, onError).then((stop) => (stopReplay = stop), onError);
 }
 
 async function main(): Promise<void> {

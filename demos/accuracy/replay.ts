@@ -1,9 +1,10 @@
 /*
  * Replaying one run of the accuracy study in the page: the scene built and stepped exactly as
- * bench/accuracy/run.mjs steps it (the same scene, method and probe code, on the JavaScript engine
- * of this page), one frame of simulated time per display frame, drawn as it goes; at the end the
- * measures, which equal the study's bit for bit (the engine computes the same bits in every
- * JavaScript engine).
+ * bench/accuracy/run.mjs steps it (the same scene, method and probe code), one frame of simulated
+ * time per display frame, drawn as it goes; at the end the measures. On the JavaScript engine they
+ * equal the study's bit for bit (the engine computes the same bits in every JavaScript engine);
+ * on the WebGPU backend (`gpu`) the world is synchronised after every frame as in the study, and
+ * the numbers are this device's.
  */
 
 import * as b2 from '../../src/index';
@@ -17,10 +18,13 @@ import { ACCURACY_SCENES, buildScene, scenePositions } from '../../bench/accurac
 import { REFERENCE, applyMethod, methodById, stepFrame } from '../../bench/accuracy/methods.mjs';
 import { trajectoryError } from '../../bench/accuracy/measures.mjs';
 import { fitCanvas } from '../canvas';
+import { WebGPUBackend } from '../../src-gpu/backend/backend';
 
 export interface ReplayState {
   scene: string;
   method: string;
+  /** Stepped by the WebGPU backend. */
+  gpu: boolean;
   frame: number;
   frames: number;
   done: boolean;
@@ -34,6 +38,8 @@ function drawWorld(canvas: HTMLCanvasElement, world: b2World, view: { x: number;
   ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
   ctx.fillStyle = '#000';
   ctx.fillRect(0, 0, w, h);
+  // On the WebGPU backend, every body brought to the last synchronisation first (a no-op on the engine).
+  world.PullState();
   const scale = Math.min(w, h) / (2 * view.half);
   const sx = (x: number) => w / 2 + (x - view.x) * scale;
   const sy = (y: number) => h / 2 - (y - view.y) * scale;
@@ -87,6 +93,20 @@ function drawWorld(canvas: HTMLCanvasElement, world: b2World, view: { x: number;
       ctx.stroke();
     }
   }
+  // Joints as the Testbed draws them: body A's origin to its anchor, body B's anchor to its origin.
+  ctx.strokeStyle = '#80cccc';
+  ctx.beginPath();
+  for (let joint = world.GetJointList(); joint; joint = joint.GetNext()) {
+    const pA = joint.GetBodyA().GetPosition();
+    const pB = joint.GetBodyB().GetPosition();
+    const a = joint.GetAnchorA(new b2.b2Vec2());
+    const b = joint.GetAnchorB(new b2.b2Vec2());
+    ctx.moveTo(sx(pA.x), sy(pA.y));
+    ctx.lineTo(sx(a.x), sy(a.y));
+    ctx.moveTo(sx(b.x), sy(b.y));
+    ctx.lineTo(sx(pB.x), sy(pB.y));
+  }
+  ctx.stroke();
 }
 
 /** The view that frames the dynamic bodies (at least 6 m across), centred on them. */
@@ -108,16 +128,24 @@ function frameDynamic(world: b2World): { x: number; y: number; half: number } {
 }
 
 /**
- * Replays `sceneId` with method `methodId` on `canvas`, `framesPerDraw` frames of simulated time
- * per display frame; `onFrame` sees the state after each drawing, the last with the measures.
- * Returns a function that stops the replay.
+ * Replays `sceneId` with method `methodId` on `canvas` (on the WebGPU backend with `gpu`), one
+ * frame of simulated time per display frame; `onFrame` sees the state after each drawing, the last
+ * with the measures, `onError` what stopped it. Resolves, once the replay has started, with a
+ * function that stops it.
  */
-export function replay(sceneId: string, methodId: string, canvas: HTMLCanvasElement, onFrame: (state: ReplayState) => void, framesPerDraw = 1): () => void {
+export async function replay(
+  sceneId: string,
+  methodId: string,
+  gpu: boolean,
+  canvas: HTMLCanvasElement,
+  onFrame: (state: ReplayState) => void,
+  onError: (error: unknown) => void,
+): Promise<() => void> {
   const scene = ACCURACY_SCENES[sceneId as keyof typeof ACCURACY_SCENES];
   if (scene === undefined) throw new RangeError(`replay: unknown scene '${sceneId}'`);
   const id = sceneId as keyof typeof ACCURACY_SCENES;
   const method = methodById(methodId);
-  // A trajectory scene is measured against the converged reference, run first (not drawn).
+  // A trajectory scene is measured against the converged reference, run first on the engine (not drawn).
   let reference: Float64Array | null = null;
   if (scene.trajectory === true) {
     const ref = buildScene(b2, id);
@@ -128,27 +156,40 @@ export function replay(sceneId: string, methodId: string, canvas: HTMLCanvasElem
   }
   const { world, data, view, probe } = buildScene(b2, id);
   applyMethod(world, method);
+  const backend = gpu ? await WebGPUBackend.create() : null;
+  if (backend !== null) await world.SetBackend(backend);
   const frames = Math.round(scene.seconds * method.frameHz);
   const camera = frameDynamic(world);
-  const state: ReplayState = { scene: sceneId, method: methodId, frame: 0, frames, done: false, measures: null };
+  const state: ReplayState = { scene: sceneId, method: methodId, gpu, frame: 0, frames, done: false, measures: null };
   let handle = 0;
-  const tick = () => {
-    for (let k = 0; k < framesPerDraw && state.frame < frames; ++k) {
-      state.frame++;
-      stepFrame(world, method);
-      probe.sample(state.frame / method.frameHz);
-    }
+  let stopped = false;
+  const tick = async () => {
+    if (stopped) return;
+    state.frame++;
+    stepFrame(world, method);
+    if (backend !== null) await world.Synchronize();
+    probe.sample(state.frame / method.frameHz);
     drawWorld(canvas, world, camera);
     if (state.frame >= frames) {
       const measures: Record<string, number> = { ...probe.result() };
       if (reference !== null) measures['trajectory error'] = trajectoryError(reference, scenePositions(data, view)).max;
       state.measures = measures;
       state.done = true;
-    } else {
-      handle = requestAnimationFrame(tick);
+      await backend?.destroy();
+    } else if (!stopped) {
+      handle = requestAnimationFrame(() => void tick().catch(fail));
     }
     onFrame(state);
   };
-  handle = requestAnimationFrame(tick);
-  return () => cancelAnimationFrame(handle);
+  const fail = (e: unknown) => {
+    stopped = true;
+    void backend?.destroy().catch(() => undefined);
+    onError(e);
+  };
+  handle = requestAnimationFrame(() => void tick().catch(fail));
+  return () => {
+    stopped = true;
+    cancelAnimationFrame(handle);
+    if (!state.done) void backend?.destroy().catch(() => undefined);
+  };
 }

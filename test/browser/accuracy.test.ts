@@ -2,7 +2,8 @@
  * The accuracy page (accuracy.html) in headless Chromium: it draws the study's points of the
  * chosen scene and measure with the Pareto front, names the method under the pointer, replays a
  * method's run in the page to the study's numbers bit for bit (a trajectory scene with its
- * converged reference too), and says so when the results cannot be loaded. Screenshots go to
+ * converged reference too) and a WebGPU method's on the WebGPU backend, and says so when the
+ * results cannot be loaded. Screenshots go to
  * test-artifacts/browser/.
  */
 
@@ -91,6 +92,27 @@ describe('the accuracy page (Chromium)', () => {
     await page.screenshot({ path: path.join(artifacts, 'accuracy-drop-replay.png') });
     expect(errors).toEqual([]);
     await page.close();
+  }, 300_000);
+
+  it("replays a WebGPU method's run on the WebGPU backend where the browser has WebGPU (Chromium, SwiftShader), to the study's numbers", async () => {
+    const gpuChromium = await launchChromium({ webgpu: true });
+    try {
+      const page = await gpuChromium.browser.newPage();
+      await page.setViewport({ width: 1280, height: 720 });
+      const errors = collectErrors(page);
+      await page.goto(`${testbed.url}accuracy.html?scene=pendulum&measure=period%20error&method=webgpu%20iter-8-3`, { waitUntil: 'load' });
+      await page.waitForFunction(() => window.webphysicsAccuracy.ready, { timeout: 60_000 });
+      expect(await page.$eval('#method', (e) => (e as HTMLSelectElement).value)).toBe('webgpu iter-8-3');
+      const state = await replayed(page);
+      expect(state.replay!.gpu).toBe(true);
+      const expected = study.scenes.find((s) => s.id === 'pendulum')!.results.find((r) => r.key === 'webgpu iter-8-3')!.measures;
+      // The study measured it with Dawn's SwiftShader in Node; this is Chromium's.
+      expect(state.replay!.measures!['period error']).toBeCloseTo(expected['period error'], 5);
+      await page.screenshot({ path: path.join(artifacts, 'accuracy-pendulum-webgpu-replay.png') });
+      expect(errors).toEqual([]);
+    } finally {
+      await gpuChromium.close();
+    }
   }, 300_000);
 
   it('says what is missing when the results cannot be loaded', async () => {
