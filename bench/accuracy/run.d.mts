@@ -62,6 +62,8 @@ export interface GpuRunner {
 export interface AccuracyOptions {
   gpu?: GpuRunner | null;
   gpuMethods?: string[];
+  /** With `gpu`: the default method's stability limits on the GPU too (default true). */
+  gpuLimits?: boolean;
   peers?: { engine: unknown; api: unknown }[];
   quick?: boolean;
   scenes?: string[];
@@ -73,7 +75,7 @@ export interface AccuracyOptions {
 
 export const ACCURACY_SCHEMA: string;
 export function runAccuracy(b2: unknown, options?: AccuracyOptions): Promise<AccuracyRun>;
-export function stabilityLimits(b2: unknown, method: AccuracyMethod, options?: { quick?: boolean }): Promise<AccuracyLimit[]>;
+export function stabilityLimits(b2: unknown, method: AccuracyMethod, options?: { quick?: boolean; gpu?: GpuRunner | null }): Promise<AccuracyLimit[]>;
 export function peerLimits(engine: unknown, api: unknown): Promise<AccuracyLimit[]>;
 export function gpuBackend(gpuBundle: string): Promise<GpuRunner>;
 export function loadPeers(ids: string[] | null, oursBundle: string): Promise<{ engine: unknown; api: unknown }[]>;

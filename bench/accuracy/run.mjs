@@ -125,54 +125,67 @@ function stands(top, start) {
   return Math.hypot(top[0] - start[0], top[1] - start[1]) < 0.5;
 }
 
-/** Runs a world for `seconds` of `m`'s frames; calls `check` after each frame and stops when it says false. */
-function runWhile(world, m, seconds, check) {
+/**
+ * Runs a world for `seconds` of `m`'s frames, on the WebGPU backend given `gpu` (synchronised
+ * after every frame); calls `check` after each frame and stops when it says false.
+ */
+async function runWhile(world, m, seconds, check, gpu = null) {
   applyMethod(world, m);
-  const frames = Math.round(seconds * m.frameHz);
-  for (let f = 1; f <= frames; ++f) {
-    stepFrame(world, m);
-    if (!check()) return false;
+  const backend = gpu === null ? null : await gpu.create();
+  if (backend !== null) await world.SetBackend(backend);
+  try {
+    const frames = Math.round(seconds * m.frameHz);
+    for (let f = 1; f <= frames; ++f) {
+      stepFrame(world, m);
+      if (backend !== null) await world.Synchronize();
+      if (!check()) return false;
+    }
+    return true;
+  } finally {
+    await backend?.destroy();
   }
-  return true;
 }
 
 /** Standing 10 s: the top box (the last body) of a stack or pyramid built from `data` within half a box of where it started. */
-function standsFor(b2, data, m, seconds = 10) {
+function standsFor(b2, data, m, gpu, seconds = 10) {
   const built = createBox2D221World(b2, data, { sleep: false });
   const top = data.bodies.length - 1;
   const start = built.position(top);
-  return runWhile(built.world, m, seconds, () => stands(built.position(top), start));
+  return runWhile(built.world, m, seconds, () => stands(built.position(top), start), gpu);
 }
 
 /**
  * The stability limits (docs/ACCURACY.md, "Stability limits"), each the limit of a stated test
- * found by bisection, for method `m` (the time-step and iteration limits vary that one setting of it).
+ * found by bisection, for method `m` (the time-step and iteration limits vary that one setting of
+ * it), on the JavaScript engine or, given `gpu` (gpuBackend()), on the WebGPU backend.
  */
-export async function stabilityLimits(b2, m, { quick = false } = {}) {
+export async function stabilityLimits(b2, m, { quick = false, gpu = null } = {}) {
   const out = [];
+  const owner = gpu === null ? m.id : `webgpu ${m.id}`;
   const limit = async (id, test, unit, lo, hi, options, passes) => {
     const r = await bisectLimit(passes, lo, hi, options);
-    out.push({ id, test, unit, method: m.id, range: [lo, hi], smallest: options.smallest === true, ...r });
+    out.push({ id, test, unit, method: owner, range: [lo, hi], smallest: options.smallest === true, ...r });
   };
-  await limit('stack height', 'the tallest column of unit boxes whose top box stays within 0.5 m of its start for 10 s', 'boxes', 2, quick ? 16 : 80, { integer: true }, (h) => standsFor(b2, stackData(h), m));
+  await limit('stack height', 'the tallest column of unit boxes whose top box stays within 0.5 m of its start for 10 s', 'boxes', 2, quick ? 16 : 80, { integer: true }, (h) => standsFor(b2, stackData(h), m, gpu));
   const base = quick ? 12 : 20;
   await limit('iterations', `the fewest iterations (velocity and position, n of each) that keep a pyramid of base ${base} standing 10 s (top box within 0.5 m)`, 'iterations', 1, 32, { integer: true, smallest: true }, (n) =>
-    standsFor(b2, pyramidData(base), { ...m, velocityIterations: n, positionIterations: n }),
+    standsFor(b2, pyramidData(base), { ...m, velocityIterations: n, positionIterations: n }, gpu),
   );
-  await limit('frame time', "the longest frame (taken in the method's substeps) with which a pyramid of base 10 stands 10 s (top box within 0.5 m)", 's', 1 / 240, 1 / 4, { tolerance: 1e-3 }, (dt) => standsFor(b2, pyramidData(10), { ...m, frameHz: 1 / dt }));
+  await limit('frame time', "the longest frame (taken in the method's substeps) with which a pyramid of base 10 stands 10 s (top box within 0.5 m)", 's', 1 / 240, 1 / 4, { tolerance: 1e-3 }, (dt) => standsFor(b2, pyramidData(10), { ...m, frameHz: 1 / dt }, gpu));
   await limit('mass ratio', 'log10 of the largest weight-to-link mass ratio at the end of a 10-link chain whose joints stay within 0.1 m for 5 s', 'log10 ratio', 0, 4, { tolerance: 0.02 }, (log10Ratio) => {
     const { world } = createBox2D221World(b2, chainData(10, 10 ** log10Ratio), { sleep: false });
-    return runWhile(world, m, 5, () => jointErrors(world).linear < 0.1);
+    return runWhile(world, m, 5, () => jointErrors(world).linear < 0.1, gpu);
   });
   // Whether a ball crossing the plate is stopped depends on where its steps fall (one landing in
   // the plate's near half is pushed back, one past the middle out the far side): the test takes
   // eight starts spread over one step's travel and passes only if the plate stops all of them,
   // which makes it monotone in the speed.
-  const stopped = (speed, continuous, phase) => {
+  const stopped = async (speed, continuous, phase) => {
     const built = createBox2D221World(b2, plateData(speed, (phase * speed) / (m.frameHz * m.substeps)), { sleep: false });
     built.world.SetContinuousPhysics(continuous);
-    runWhile(built.world, m, 1, () => true);
-    return built.position(1)[0] < 5;
+    let x = 0;
+    await runWhile(built.world, m, 1, () => ((x = built.position(1)[0]), true), gpu);
+    return x < 5;
   };
   for (const continuous of [false, true]) {
     await limit(
@@ -182,8 +195,8 @@ export async function stabilityLimits(b2, m, { quick = false } = {}) {
       1,
       2 * m.frameHz * m.substeps,
       { tolerance: 0.5 },
-      (speed) => {
-        for (let k = 0; k < 8; ++k) if (!stopped(speed, continuous, k / 8)) return false;
+      async (speed) => {
+        for (let k = 0; k < 8; ++k) if (!(await stopped(speed, continuous, k / 8))) return false;
         return true;
       },
     );
@@ -292,6 +305,8 @@ export async function runAccuracy(b2, options = {}) {
   if (options.limits !== false) {
     for (const m of quick ? [DEFAULT_METHOD] : methods) limits.push(...(await stabilityLimits(b2, m, { quick })));
     for (const { engine, api } of peers) limits.push(...(await peerLimits(engine, api)));
+    // The GPU's, of the default method (a test is seconds of simulated time, frame by frame synchronised).
+    if (gpu !== null && options.gpuLimits !== false) limits.push(...(await stabilityLimits(b2, DEFAULT_METHOD, { quick, gpu })));
   }
   for (const l of limits) log(`limit ${l.id}: ${l.limit} ${l.unit}${l.outside ? ` (${l.outside} the range)` : ''} after ${l.tests} tests`);
   const cpus = os.cpus();
