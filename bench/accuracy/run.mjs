@@ -4,13 +4,13 @@
 // limits.mjs; docs/ACCURACY.md says what each number means.
 //   node bench/accuracy/run.mjs [--scenes a,b] [--methods a,b] [--peers a,b] [--quick]
 //                               [--no-limits] [--gpu] [--out DIR] [--ours FILE]
-// writes accuracy.json, accuracy.md and one SVG chart per scene and measure (log axes, the Pareto
-// front highlighted) into bench/results/accuracy, or --out. `--quick` runs a small subset in a minute or
-// two (CI's tests run it). `--gpu` adds the WebGPU backend's runs of some methods (on a software
-// adapter such as SwiftShader their errors are reported and their times are not); the peer engines
-// of `npm run bench` run every scene at their own settings, measured where positions suffice
-// (default: all of them; --quick: none; --peers '' for none). For programs:
-// runAccuracy(b2, options) resolves to the results.
+// writes accuracy.json, accuracy.md and one SVG chart per scene and measure (log axes, the
+// Pareto front highlighted) into bench/results/accuracy, or --out. `--quick` runs a small subset
+// in seconds (CI's tests run it). `--gpu` adds the WebGPU backend's runs of some methods and the
+// default method's stability limits (on a software adapter such as SwiftShader their errors are
+// reported and their times are not); the peer engines of `npm run bench` run every scene at their
+// own settings, measured where positions suffice (default: all of them; --quick: none; --peers ''
+// for none). For programs: runAccuracy(b2, options) resolves to the results.
 
 import { mkdirSync, writeFileSync } from 'node:fs';
 import os from 'node:os';
@@ -36,7 +36,7 @@ const QUICK_METHODS = ['iter-2-1', 'iter-8-3', 'substeps-2'];
 const GPU_METHODS = ['iter-4-2', 'iter-8-3', 'iter-16-6', 'dt-30', 'substeps-2'];
 
 /**
- * Runs `scene` under `m` once, on the JavaScript engine or, given `gpu` (gpuBackend()), on the
+ * Runs scene `id` under `m` once, on the JavaScript engine or, given `gpu` (gpuBackend()), on the
  * WebGPU backend (each frame's steps, then world.Synchronize()): the measures, the milliseconds
  * of stepping per simulated second, the final positions.
  */
