@@ -422,18 +422,7 @@ export class GpuPipeline {
     entry.settled = rb.read(this.ctx, TIMER_OFFSET + this.timer.bytes).then((bytes) => {
       const state = new Uint32Array(bytes, 0, STATE_WORDS).slice();
       const counts = new Uint32Array(bytes, NP_STATE_OFFSET, NP_STATE_WORDS);
-      const broad: BroadPhaseResult = {
-        pairCount: state[STATE.PAIR_COUNT],
-        axis: state[STATE.AXIS],
-        strips: state[STATE.STRIPS],
-        entries: state[STATE.ENTRIES],
-        workItems: state[STATE.WORK_TOTAL],
-        regrows: 0,
-        pairCapacity: bp.pairCapacity,
-        dispatches,
-        gpuTime: null,
-      };
-      const r = this.result(broad, counts, 0, dispatches, null, { encode: t1 - t0, submit: t2 - t1, wait: performance.now() - t2 }, false);
+      const r = this.result(bp.resultOf(state, 0, dispatches, null), counts, 0, dispatches, null, { encode: t1 - t0, submit: t2 - t1, wait: performance.now() - t2 }, false);
       r.contactCapacity = capacity;
       r.overflowed = r.overflowed || (state[STATE.OVERFLOW] & (OVERFLOW_PAIRS | OVERFLOW_ENTRIES)) !== 0;
       entry.state = state;

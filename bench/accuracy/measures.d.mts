@@ -18,6 +18,5 @@ export function energyAndMomentum(world: MeasuredWorld): {
   angular: number;
 };
 export function rmsSpeed(world: MeasuredWorld): number;
-export function positions(world: MeasuredWorld): Float64Array;
 export function trajectoryError(a: Float64Array, b: Float64Array): { max: number; rms: number };
 export function restingDrift(before: Float64Array, after: Float64Array): number;

@@ -259,21 +259,9 @@ export function rmsSpeed(world) {
   return Math.sqrt(sum / bodies.length);
 }
 
-/** The dynamic bodies' centres, x and y interleaved. */
-export function positions(world) {
-  world.PullState();
-  const bodies = dynamicBodies(world);
-  const out = new Float64Array(2 * bodies.length);
-  bodies.forEach((b, i) => {
-    out[2 * i] = b.m_sweep.c.x;
-    out[2 * i + 1] = b.m_sweep.c.y;
-  });
-  return out;
-}
-
 /**
  * Trajectory error (metres) between two runs of one scene: the largest and the root mean square
- * distance between the same body's centres in two `positions()` snapshots.
+ * distance between the same body's centres in two snapshots (x and y interleaved, in body order).
  */
 export function trajectoryError(a, b) {
   if (a.length !== b.length) throw new RangeError(`trajectoryError: snapshots of ${a.length / 2} and ${b.length / 2} bodies`);
@@ -289,8 +277,8 @@ export function trajectoryError(a, b) {
 }
 
 /**
- * Resting drift (metres): the largest distance any body's centre moved between two `positions()`
- * snapshots of a scene that should stay still.
+ * Resting drift (metres): the largest distance any body's centre moved between two snapshots of
+ * a scene that should stay still.
  */
 export function restingDrift(before, after) {
   return trajectoryError(before, after).max;

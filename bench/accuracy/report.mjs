@@ -16,7 +16,15 @@ export const MEASURE_UNITS = {
 };
 
 /** Errors below this are drawn at it on the log axis (an exact answer has no logarithm). */
-const FLOOR = 1e-12;
+export const LOG_FLOOR = 1e-12;
+
+/** The charts' colours: the Pareto front (line and points), then points by backend. */
+export const COLOURS = { front: '#f28e2b', js: '#4e79a7', webgpu: '#59a14f', peer: '#b07aa1' };
+
+/** A point's colour: the front's, else its backend's (the engine, WebGPU, a peer). */
+export function pointColour(r, onFront) {
+  return onFront ? COLOURS.front : r.backend === 'webgpu' ? COLOURS.webgpu : r.backend === 'js' ? COLOURS.js : COLOURS.peer;
+}
 
 /** A result's name: its method's label (after 'WebGPU, ' on the GPU), or a peer's name and version. */
 export function labelOf(run, r) {
@@ -47,10 +55,16 @@ export function paretoFront(results, measure) {
 }
 
 const esc = (s) => String(s).replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;').replace(/"/g, '&quot;');
-const fmt = (v) => (v === undefined ? '–' : v === 0 ? '0' : !Number.isFinite(v) ? String(v) : Math.abs(v) >= 0.01 && Math.abs(v) < 1000 ? v.toPrecision(3) : v.toExponential(2));
+/** A number in three significant figures ('–' for a measure not taken). */
+export function formatNumber(v) {
+  if (v === undefined) return '–';
+  if (v === 0) return '0';
+  if (!Number.isFinite(v)) return String(v);
+  return Math.abs(v) >= 0.01 && Math.abs(v) < 1000 ? v.toPrecision(3) : v.toExponential(2);
+}
 
 /** Decades covering [lo, hi] (log10 bounds, at least one decade wide). */
-function decades(lo, hi) {
+export function decades(lo, hi) {
   const a = Math.floor(Math.log10(lo));
   const b = Math.max(a + 1, Math.ceil(Math.log10(hi)));
   return [a, b];
@@ -68,11 +82,11 @@ export function paretoSvg(scene, measure, run) {
   const top = 72;
   const bottom = 60;
   const xs = points.map((r) => r.msPerSecond);
-  const ys = points.map((r) => Math.max(FLOOR, r.measures[measure]));
+  const ys = points.map((r) => Math.max(LOG_FLOOR, r.measures[measure]));
   const [x0, x1] = decades(Math.min(...xs, 1), Math.max(...xs, 1));
   const [y0, y1] = decades(Math.min(...ys, 1), Math.max(...ys, 1e-3));
   const px = (v) => left + ((Math.log10(v) - x0) / (x1 - x0)) * (width - left - right);
-  const py = (v) => height - bottom - ((Math.log10(Math.max(FLOOR, v)) - y0) / (y1 - y0)) * (height - top - bottom);
+  const py = (v) => height - bottom - ((Math.log10(Math.max(LOG_FLOOR, v)) - y0) / (y1 - y0)) * (height - top - bottom);
   const parts = [
     `<svg xmlns="http://www.w3.org/2000/svg" width="${width}" height="${height}" viewBox="0 0 ${width} ${height}" font-family="Helvetica, Arial, sans-serif" font-size="12">`,
     `<rect width="100%" height="100%" fill="#ffffff"/>`,
@@ -82,16 +96,16 @@ export function paretoSvg(scene, measure, run) {
   ];
   for (let d = x0; d <= x1; ++d) {
     const gx = px(10 ** d);
-    parts.push(`<line x1="${gx.toFixed(1)}" y1="${top}" x2="${gx.toFixed(1)}" y2="${height - bottom}" stroke="#e3e3e3"/>`, `<text x="${gx.toFixed(1)}" y="${height - bottom + 16}" text-anchor="middle" fill="#555">${esc(fmt(10 ** d))}</text>`);
+    parts.push(`<line x1="${gx.toFixed(1)}" y1="${top}" x2="${gx.toFixed(1)}" y2="${height - bottom}" stroke="#e3e3e3"/>`, `<text x="${gx.toFixed(1)}" y="${height - bottom + 16}" text-anchor="middle" fill="#555">${esc(formatNumber(10 ** d))}</text>`);
   }
   for (let d = y0; d <= y1; ++d) {
     const gy = py(10 ** d);
-    parts.push(`<line x1="${left}" y1="${gy.toFixed(1)}" x2="${width - right}" y2="${gy.toFixed(1)}" stroke="#e3e3e3"/>`, `<text x="${left - 6}" y="${(gy + 4).toFixed(1)}" text-anchor="end" fill="#555">${esc(fmt(10 ** d))}</text>`);
+    parts.push(`<line x1="${left}" y1="${gy.toFixed(1)}" x2="${width - right}" y2="${gy.toFixed(1)}" stroke="#e3e3e3"/>`, `<text x="${left - 6}" y="${(gy + 4).toFixed(1)}" text-anchor="end" fill="#555">${esc(formatNumber(10 ** d))}</text>`);
   }
   parts.push(`<text x="${(left + width - right) / 2}" y="${height - 20}" text-anchor="middle" fill="#555">ms of stepping per simulated second (log)</text>`);
   const frontPoints = scene.fronts[measure].map((key) => points.find((r) => r.key === key)).filter(Boolean);
   if (frontPoints.length > 1) {
-    parts.push(`<polyline fill="none" stroke="#f28e2b" stroke-width="2" points="${frontPoints.map((r) => `${px(r.msPerSecond).toFixed(1)},${py(r.measures[measure]).toFixed(1)}`).join(' ')}"/>`);
+    parts.push(`<polyline fill="none" stroke="${COLOURS.front}" stroke-width="2" points="${frontPoints.map((r) => `${px(r.msPerSecond).toFixed(1)},${py(r.measures[measure]).toFixed(1)}`).join(' ')}"/>`);
   }
   // Front points first, cheapest first, so that their labels win where labels would overlap (a
   // skipped label's point still names its method in its tooltip).
@@ -100,7 +114,7 @@ export function paretoSvg(scene, measure, run) {
   for (const r of ordered) {
     const on = front.has(r.key);
     parts.push(
-      `<circle cx="${px(r.msPerSecond).toFixed(1)}" cy="${py(r.measures[measure]).toFixed(1)}" r="${on ? 5 : 4}" fill="${on ? '#f28e2b' : r.backend === 'webgpu' ? '#59a14f' : r.backend === 'js' ? '#4e79a7' : '#b07aa1'}"><title>${esc(`${labelOf(run, r)}: ${fmt(r.msPerSecond)} ms per simulated second, ${measure} ${fmt(r.measures[measure])}`)}</title></circle>`,
+      `<circle cx="${px(r.msPerSecond).toFixed(1)}" cy="${py(r.measures[measure]).toFixed(1)}" r="${on ? 5 : 4}" fill="${pointColour(r, on)}"><title>${esc(`${labelOf(run, r)}: ${formatNumber(r.msPerSecond)} ms per simulated second, ${measure} ${formatNumber(r.measures[measure])}`)}</title></circle>`,
     );
   }
   for (const r of ordered) {
@@ -115,8 +129,8 @@ export function paretoSvg(scene, measure, run) {
   const notes = [];
   const failed = scene.results.filter((r) => r.measures[measure] !== undefined && !Number.isFinite(r.measures[measure]));
   if (failed.length > 0) notes.push([`no answer: ${failed.map((r) => r.key).join(', ')}`, '#a00']);
-  if (ys.some((v) => v === FLOOR)) notes.push([`0 drawn at ${fmt(FLOOR)}`, '#555']);
-  if (untimed.length > 0) notes.push(['untimed (software adapter):', '#59a14f'], ...untimed.map((r) => [`${r.key}: ${fmt(r.measures[measure])}`, '#59a14f']));
+  if (ys.some((v) => v === LOG_FLOOR)) notes.push([`0 drawn at ${formatNumber(LOG_FLOOR)}`, '#555']);
+  if (untimed.length > 0) notes.push(['untimed (software adapter):', COLOURS.webgpu], ...untimed.map((r) => [`${r.key}: ${formatNumber(r.measures[measure])}`, COLOURS.webgpu]));
   const unmeasured = scene.results.filter((r) => r.measures[measure] === undefined);
   if (unmeasured.length > 0) notes.push(['not measured (needs a b2World):', '#999'], ...unmeasured.map((r) => [r.key, '#999']));
   notes.forEach(([text, colour], i) => parts.push(`<text x="${width - right + 10}" y="${top + 10 + 16 * i}" fill="${colour}" font-size="11">${esc(text)}</text>`));
@@ -133,7 +147,7 @@ export function accuracyMarkdown(run) {
   for (const scene of run.scenes) {
     lines.push(`## ${scene.title} (${scene.seconds} s)`, '', `| method | ms per simulated second | ${scene.measures.map((m) => `${m} (${MEASURE_UNITS[m] ?? ''})`).join(' | ')} |`, `| --- | ---: |${' ---: |'.repeat(scene.measures.length)}`);
     for (const r of scene.results) {
-      lines.push(`| ${labelOf(run, r)} | ${r.msPerSecond === null ? 'untimed' : fmt(r.msPerSecond)} | ${scene.measures.map((m) => `${fmt(r.measures[m])}${scene.fronts[m].includes(r.key) ? ' *' : ''}`).join(' | ')} |`);
+      lines.push(`| ${labelOf(run, r)} | ${r.msPerSecond === null ? 'untimed' : formatNumber(r.msPerSecond)} | ${scene.measures.map((m) => `${formatNumber(r.measures[m])}${scene.fronts[m].includes(r.key) ? ' *' : ''}`).join(' | ')} |`);
     }
     lines.push('');
   }
@@ -144,8 +158,8 @@ export function accuracyMarkdown(run) {
     const value = (l) => {
       if (l === undefined) return '–';
       // Outside the range: not even the safe end passes ('below'), or the far end passes too ('above').
-      const [safe, far] = l.smallest ? [`> ${fmt(l.range[1])}`, `≤ ${fmt(l.range[0])}`] : [`< ${fmt(l.range[0])}`, `≥ ${fmt(l.range[1])}`];
-      return l.outside === 'below' ? safe : l.outside === 'above' ? far : fmt(l.limit);
+      const [safe, far] = l.smallest ? [`> ${formatNumber(l.range[1])}`, `≤ ${formatNumber(l.range[0])}`] : [`< ${formatNumber(l.range[0])}`, `≥ ${formatNumber(l.range[1])}`];
+      return l.outside === 'below' ? safe : l.outside === 'above' ? far : formatNumber(l.limit);
     };
     lines.push('## Stability limits', '', `| method | ${ids.map((id) => `${id} (${run.limits.find((l) => l.id === id).unit})`).join(' | ')} |`, `| --- |${' ---: |'.repeat(ids.length)}`);
     for (const owner of owners) {

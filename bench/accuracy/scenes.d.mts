@@ -45,3 +45,4 @@ export function chainData(links: number, ratio?: number): SceneData;
 export function plateData(speed: number, x0: number): SceneData;
 export function scenePositions(data: SceneData, view: Pick<SceneView, 'position'>): Float64Array;
 export function buildScene(b2: unknown, id: AccuracySceneId): { world: b2World; data: SceneData; view: SceneView; probe: AccuracyProbe };
+export function referencePositions(b2: unknown, id: AccuracySceneId): Float64Array;

@@ -9,7 +9,8 @@
 
 import { createBox2D221World } from '../engines/box2d221.mjs';
 import { bounceHeights, pendulumPeriod, slidingDistance } from './analytic.mjs';
-import { energyAndMomentum, jointErrors, penetration, rmsSpeed, trajectoryError } from './measures.mjs';
+import { energyAndMomentum, jointErrors, penetration, restingDrift, rmsSpeed } from './measures.mjs';
+import { REFERENCE, applyMethod, stepFrame } from './methods.mjs';
 
 const G = 10;
 const SHAPE = { density: 1, friction: 0.6, restitution: 0, category: 0x0001, mask: 0xffff };
@@ -99,7 +100,7 @@ function restingProbe(data, seconds) {
         }
       },
       result() {
-        const drift = trajectoryError(settled, viewPositions(view, indices)).max;
+        const drift = restingDrift(settled, viewPositions(view, indices));
         if (!view.world) return { drift };
         return { 'penetration max': maxDepth, 'penetration mean': samples > 0 ? meanDepth / samples : 0, drift, jitter: rmsSpeed(view.world) };
       },
@@ -277,4 +278,16 @@ export function buildScene(b2, id) {
   const built = createBox2D221World(b2, data, { sleep: false });
   const view = { position: built.position, world: built.world, b2 };
   return { world: built.world, data, view, probe: scene.probe(view) };
+}
+
+/**
+ * The final positions of scene `id` under the converged reference (REFERENCE, on WebPhysics `b2`):
+ * what the trajectory error of a trajectory scene is measured against.
+ */
+export function referencePositions(b2, id) {
+  const { world, data, view } = buildScene(b2, id);
+  applyMethod(world, REFERENCE);
+  const frames = Math.round(ACCURACY_SCENES[id].seconds * REFERENCE.frameHz);
+  for (let f = 1; f <= frames; ++f) stepFrame(world, REFERENCE);
+  return scenePositions(data, view);
 }

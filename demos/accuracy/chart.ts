@@ -4,15 +4,9 @@
  * front joined in orange. pointAt() finds the point under the pointer for the tooltip.
  */
 
+import { COLOURS, LOG_FLOOR, decades, formatNumber, pointColour } from '../../bench/accuracy/report.mjs';
 import type { AccuracyResult, AccuracyScene } from '../../bench/accuracy/run.mjs';
 import { fitCanvas } from '../canvas';
-
-/** Errors below this are drawn at it (an exact answer has no logarithm), as in the SVG charts. */
-const FLOOR = 1e-12;
-const FRONT = '#f28e2b';
-const JS = '#4e79a7';
-const GPU = '#59a14f';
-const PEER = '#b07aa1';
 
 /** A point as drawn, in CSS pixels of the canvas. */
 export interface DrawnPoint {
@@ -20,17 +14,6 @@ export interface DrawnPoint {
   x: number;
   y: number;
   front: boolean;
-}
-
-function decades(lo: number, hi: number): [number, number] {
-  const a = Math.floor(Math.log10(lo));
-  return [a, Math.max(a + 1, Math.ceil(Math.log10(hi)))];
-}
-
-export function formatNumber(v: number): string {
-  if (v === 0) return '0';
-  if (!Number.isFinite(v)) return String(v);
-  return Math.abs(v) >= 0.01 && Math.abs(v) < 1000 ? v.toPrecision(3) : v.toExponential(2);
 }
 
 export class ParetoChart {
@@ -57,11 +40,11 @@ export class ParetoChart {
     const top = 30;
     const bottom = h - 40;
     const xs = timed.map((r) => r.msPerSecond!);
-    const ys = timed.map((r) => Math.max(FLOOR, r.measures[measure]));
+    const ys = timed.map((r) => Math.max(LOG_FLOOR, r.measures[measure]));
     const [x0, x1] = decades(Math.min(...xs, 1), Math.max(...xs, 1));
     const [y0, y1] = decades(Math.min(...ys, 1), Math.max(...ys, 1e-3));
     const px = (v: number) => left + ((Math.log10(v) - x0) / (x1 - x0)) * (right - left);
-    const py = (v: number) => bottom - ((Math.log10(Math.max(FLOOR, v)) - y0) / (y1 - y0)) * (bottom - top);
+    const py = (v: number) => bottom - ((Math.log10(Math.max(LOG_FLOOR, v)) - y0) / (y1 - y0)) * (bottom - top);
     ctx.font = '12px system-ui, sans-serif';
     ctx.strokeStyle = '#333';
     ctx.fillStyle = '#999';
@@ -90,7 +73,7 @@ export class ParetoChart {
     const front = scene.fronts[measure] ?? [];
     this.points = timed.map((r) => ({ result: r, x: px(r.msPerSecond!), y: py(r.measures[measure]), front: front.includes(r.key) }));
     const onFront = front.map((key) => this.points.find((p) => p.result.key === key)).filter((p): p is DrawnPoint => p !== undefined);
-    ctx.strokeStyle = FRONT;
+    ctx.strokeStyle = COLOURS.front;
     ctx.lineWidth = 2;
     ctx.beginPath();
     onFront.forEach((p, i) => (i === 0 ? ctx.moveTo(p.x, p.y) : ctx.lineTo(p.x, p.y)));
@@ -100,7 +83,7 @@ export class ParetoChart {
     ctx.font = '10px system-ui, sans-serif';
     const ordered = [...this.points].sort((a, b) => Number(b.front) - Number(a.front) || a.x - b.x);
     for (const p of ordered) {
-      ctx.fillStyle = p.front ? FRONT : p.result.backend === 'webgpu' ? GPU : p.result.backend === 'js' ? JS : PEER;
+      ctx.fillStyle = pointColour(p.result, p.front);
       ctx.beginPath();
       ctx.arc(p.x, p.y, p.front ? 5 : 4, 0, 2 * Math.PI);
       ctx.fill();
@@ -119,10 +102,10 @@ export class ParetoChart {
       ctx.fillText(text, right + 14, noteY);
       noteY += 15;
     };
-    if (ys.some((v) => v === FLOOR)) note(`0 drawn at ${formatNumber(FLOOR)}`, '#999');
+    if (ys.some((v) => v === LOG_FLOOR)) note(`0 drawn at ${formatNumber(LOG_FLOOR)}`, '#999');
     if (untimed.length > 0) {
-      note('WebGPU (untimed: software):', GPU);
-      for (const r of untimed) note(`${r.key}: ${formatNumber(r.measures[measure])}`, GPU);
+      note('WebGPU (untimed: software):', COLOURS.webgpu);
+      for (const r of untimed) note(`${r.key}: ${formatNumber(r.measures[measure])}`, COLOURS.webgpu);
     }
   }
 

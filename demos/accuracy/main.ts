@@ -6,9 +6,9 @@
  * `window.webphysicsAccuracy` is the state tests read.
  */
 
-import { MEASURE_UNITS, labelOf as resultLabel } from '../../bench/accuracy/report.mjs';
+import { MEASURE_UNITS, formatNumber, labelOf as resultLabel } from '../../bench/accuracy/report.mjs';
 import type { AccuracyRun, AccuracyScene } from '../../bench/accuracy/run.mjs';
-import { ParetoChart, formatNumber } from './chart';
+import { ParetoChart } from './chart';
 import { replay } from './replay';
 import type { ReplayState } from './replay';
 

@@ -14,8 +14,8 @@ import type { b2CircleShape } from '../../src/collision/shapes/b2CircleShape';
 import type { b2PolygonShape } from '../../src/collision/shapes/b2PolygonShape';
 import type { b2EdgeShape } from '../../src/collision/shapes/b2EdgeShape';
 import type { b2ChainShape } from '../../src/collision/shapes/b2ChainShape';
-import { ACCURACY_SCENES, buildScene, scenePositions } from '../../bench/accuracy/scenes.mjs';
-import { REFERENCE, applyMethod, methodById, stepFrame } from '../../bench/accuracy/methods.mjs';
+import { ACCURACY_SCENES, buildScene, referencePositions, scenePositions } from '../../bench/accuracy/scenes.mjs';
+import { applyMethod, methodById, stepFrame } from '../../bench/accuracy/methods.mjs';
 import { trajectoryError } from '../../bench/accuracy/measures.mjs';
 import { fitCanvas } from '../canvas';
 import { WebGPUBackend } from '../../src-gpu/backend/backend';
@@ -146,14 +146,7 @@ export async function replay(
   const id = sceneId as keyof typeof ACCURACY_SCENES;
   const method = methodById(methodId);
   // A trajectory scene is measured against the converged reference, run first on the engine (not drawn).
-  let reference: Float64Array | null = null;
-  if (scene.trajectory === true) {
-    const ref = buildScene(b2, id);
-    applyMethod(ref.world, REFERENCE);
-    const frames = Math.round(scene.seconds * REFERENCE.frameHz);
-    for (let f = 1; f <= frames; ++f) stepFrame(ref.world, REFERENCE);
-    reference = scenePositions(ref.data, ref.view);
-  }
+  const reference = scene.trajectory === true ? referencePositions(b2, id) : null;
   const { world, data, view, probe } = buildScene(b2, id);
   applyMethod(world, method);
   const backend = gpu ? await WebGPUBackend.create() : null;

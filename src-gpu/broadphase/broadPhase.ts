@@ -284,8 +284,13 @@ export class GpuBroadPhase {
   finishUpdate(state: Uint32Array, regrows: number, dispatches: number, gpuTime: Record<string, number> | null): BroadPhaseResult {
     this.pairCount = state[STATE.PAIR_COUNT];
     this.lastState = state.slice();
+    return this.resultOf(state, regrows, dispatches, gpuTime);
+  }
+
+  /** The result an update's state words (layout.ts STATE) describe, at the pair capacity now. */
+  resultOf(state: Uint32Array, regrows: number, dispatches: number, gpuTime: Record<string, number> | null): BroadPhaseResult {
     return {
-      pairCount: this.pairCount,
+      pairCount: state[STATE.PAIR_COUNT],
       axis: state[STATE.AXIS],
       strips: state[STATE.STRIPS],
       entries: state[STATE.ENTRIES],
