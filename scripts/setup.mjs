@@ -1,6 +1,7 @@
 // npm run setup: install the npm dependencies, then the system packages that the browser and
 // WebGPU tests need (Chromium for headless browser tests, and its SwiftShader Vulkan driver that
-// Dawn uses as a software adapter; libvulkan1 is the Vulkan loader). Safe to run repeatedly.
+// Dawn uses as a software adapter; libvulkan1 is the Vulkan loader; Firefox ESR for SpiderMonkey).
+// Safe to run repeatedly.
 import { execFileSync, spawnSync } from 'node:child_process';
 import { existsSync, readFileSync } from 'node:fs';
 
@@ -15,7 +16,7 @@ function has(cmd) {
 
 run('npm', ['ci']);
 
-const systemPackages = ['chromium', 'libvulkan1'];
+const systemPackages = ['chromium', 'libvulkan1', 'firefox-esr'];
 const isDebianLike =
   process.platform === 'linux' &&
   existsSync('/etc/os-release') &&
@@ -28,6 +29,7 @@ if (!isDebianLike) {
     `\nNot a Debian/Ubuntu system: install these yourself for the browser and WebGPU tests:\n` +
       `  - Chromium or Chrome (headless browser tests, and its SwiftShader Vulkan driver)\n` +
       `  - the Vulkan loader (libvulkan1 or your distribution's vulkan-loader)\n` +
+      `  - Firefox (the golden suite and the testbed in SpiderMonkey; set FIREFOX_PATH if it is not found)\n` +
       `Set WEBPHYSICS_VK_ICD to a SwiftShader ICD json if it is not in a standard location.`,
   );
   process.exit(0);

@@ -9,7 +9,11 @@ import type { b2Body } from '../../src/dynamics/b2Body';
 import type { b2World } from '../../src/dynamics/b2World';
 import { b2dJsonRead } from '../../src/io/b2dJsonRead';
 import type { b2dJsonScene } from '../../src/io/b2dJsonScene';
+import { bodyState, stateDigest } from '../../demos/determinism';
 import { goldenDir, readGoldenJson } from './golden';
+
+/** The digest and the body state it hashes are the testbed's, so Node and every browser hash alike. */
+export { bodyState, stateDigest };
 
 /** One entry of a trajectory's `samples`: six values per body plus world counts. */
 export interface GoldenSample {
@@ -50,37 +54,6 @@ export function loadGoldenScene(name: string): b2dJsonScene {
 
 export function readTrajectory(name: string): GoldenTrajectory {
   return readGoldenJson<GoldenTrajectory>(`trajectories/${name}.trajectory.json`);
-}
-
-/** GetPosition().x, .y, GetAngle(), GetLinearVelocity().x, .y, GetAngularVelocity(). */
-export function bodyState(body: b2Body): number[] {
-  return [
-    body.m_xf.p.x,
-    body.m_xf.p.y,
-    body.m_sweep.a,
-    body.m_linearVelocity.x,
-    body.m_linearVelocity.y,
-    body.m_angularVelocity,
-  ];
-}
-
-const s_digestBytes = new DataView(new ArrayBuffer(8));
-
-/**
- * 32-bit FNV-1a over the six doubles of every body (creation order), each as 8 little-endian
- * IEEE-754 bytes; 8 lowercase hex digits.
- */
-export function stateDigest(bodies: readonly b2Body[]): string {
-  let h = 2166136261;
-  for (const body of bodies) {
-    for (const value of bodyState(body)) {
-      s_digestBytes.setFloat64(0, value, true);
-      for (let i = 0; i < 8; ++i) {
-        h = Math.imul(h ^ s_digestBytes.getUint8(i), 16777619) >>> 0;
-      }
-    }
-  }
-  return h.toString(16).padStart(8, '0');
 }
 
 /** Contact count, touching contacts and awake bodies, as in the trajectory samples. */
