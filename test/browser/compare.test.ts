@@ -2,13 +2,15 @@
  * The comparison page (compare.html) in headless Chromium: with WebGPU on SwiftShader both panes
  * build the same scene and advance, the WebGPU pane draws, the adapter is named, the slider
  * rebuilds both panes at another body count and the URL selects scene and size; without an adapter
- * the page says so and runs the JavaScript pane alone. Screenshots go to test-artifacts/browser/.
+ * the page says so and runs the JavaScript pane alone, in Chromium and in Firefox (which has no
+ * WebGPU here). Screenshots go to test-artifacts/browser/.
  */
 
 import path from 'node:path';
 import type { Page } from 'puppeteer-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { collectErrors, ensureArtifactsDir, launchChromium, serveTestbed } from './chromium';
+import { launchFirefox } from './firefox';
 import type { LaunchedBrowser, Testbed } from './chromium';
 import type { WebPhysicsDemo } from '../../demos/framework/demo';
 
@@ -162,24 +164,29 @@ describe('the comparison page with WebGPU (Chromium, SwiftShader)', () => {
   }, 300_000);
 });
 
-describe('the comparison page without WebGPU', () => {
-  let chromium: LaunchedBrowser;
+for (const [name, launch, prefix] of [
+  ['Chromium without a GPU', () => launchChromium({ webgpu: false }), ''],
+  ['Firefox', launchFirefox, 'firefox-'],
+] as const) {
+  describe(`the comparison page without WebGPU (${name})`, () => {
+    let browser: LaunchedBrowser;
 
-  beforeAll(async () => {
-    chromium = await launchChromium({ webgpu: false });
-  }, 120_000);
+    beforeAll(async () => {
+      browser = await launch();
+    }, 120_000);
 
-  afterAll(async () => {
-    await chromium?.close();
+    afterAll(async () => {
+      await browser?.close();
+    });
+
+    it('says there is no WebGPU and runs the JavaScript pane alone', async () => {
+      const { page, errors } = await open(browser, '?scene=tumbler&bodies=500');
+      const state = await stepped(page, 3);
+      expect(state.panes.map((p) => p.backend)).toEqual(['js']);
+      expect(await page.$eval('#adapter', (e) => e.textContent)).toMatch(/^This browser (lacks WebGPU|has WebGPU but no adapter).*: the JavaScript engine runs alone\.$/);
+      expect(await drawnPixels(page, 'js')).toBeGreaterThan(1000);
+      await page.screenshot({ path: path.join(artifacts, `${prefix}compare-no-webgpu.png`) });
+      expect(errors).toEqual([]);
+    }, 300_000);
   });
-
-  it('says there is no WebGPU and runs the JavaScript pane alone', async () => {
-    const { page, errors } = await open(chromium, '?scene=tumbler&bodies=500');
-    const state = await stepped(page, 3);
-    expect(state.panes.map((p) => p.backend)).toEqual(['js']);
-    expect(await page.$eval('#adapter', (e) => e.textContent)).toMatch(/^This browser (lacks WebGPU|has WebGPU but no adapter).*: the JavaScript engine runs alone\.$/);
-    expect(await drawnPixels(page, 'js')).toBeGreaterThan(1000);
-    await page.screenshot({ path: path.join(artifacts, 'compare-no-webgpu.png') });
-    expect(errors).toEqual([]);
-  }, 300_000);
-});
+}
