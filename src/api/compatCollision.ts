@@ -22,6 +22,8 @@ import { b2EdgeShape } from '../collision/shapes/b2EdgeShape';
 import { b2PolygonShape } from '../collision/shapes/b2PolygonShape';
 import { b2Shape } from '../collision/shapes/b2Shape';
 import type { b2Transform } from '../common/b2Math';
+import type { b2Contact } from '../dynamics/contacts/b2Contact';
+import { b2EdgeAndCircleContact } from '../dynamics/contacts/b2EdgeAndCircleContact';
 import { b2Vec2 } from '../common/b2Math';
 import {
   acceptingArguments,
@@ -451,17 +453,48 @@ defineStatics(b2PolygonShape, {
 });
 
 /**
+ * The b2EdgeShape a 2.1a two-vertex polygon (SetAsEdge) becomes in a fixture. It collides as an
+ * edge except with circles, which 2.1a collided with the two-vertex polygon itself: see the
+ * b2EdgeAndCircleContact.Evaluate wrapper below.
+ */
+class b2PolygonEdgeShape extends b2EdgeShape {
+  override Clone(): b2EdgeShape {
+    // The class adds no fields: the edge's clone with this class's prototype is a full copy.
+    return Object.setPrototypeOf(super.Clone(), b2PolygonEdgeShape.prototype) as b2PolygonEdgeShape;
+  }
+}
+
+/**
  * The shape a fixture gets for a 2.1a shape: a two-vertex polygon (SetAsEdge) becomes the
  * b2EdgeShape between its vertices; every other shape is itself.
  */
 export function fixtureShapeFor2_1a(shape: b2Shape): b2Shape {
   if (shape instanceof b2PolygonShape && shape.m_vertexCount === 2) {
-    const edge = new b2EdgeShape().Set(shape.m_vertices[0], shape.m_vertices[1]);
+    const edge = new b2PolygonEdgeShape().Set(shape.m_vertices[0], shape.m_vertices[1]);
     edge.m_radius = shape.m_radius;
     return edge;
   }
   return shape;
 }
+
+const s_edgePolygon = new b2PolygonShape();
+
+// A circle against a SetAsEdge fixture collides with the two-vertex polygon, as in 2.1a. The two
+// agree but for one case that apps hit: a circle centred exactly on the segment's line. 2.1a's
+// polygon test then takes the first normal, cross(v2 - v1, 1), and the edge the other side, so a
+// player spawned on a floor line fell through it. Other edges keep 2.2.1's edge collision.
+wrapMethod(b2EdgeAndCircleContact, 'Evaluate', (evaluate) =>
+  function (contact: b2Contact, manifold: b2Manifold, xfA: b2Transform, xfB: b2Transform) {
+    const edge = contact.m_fixtureA.m_shape;
+    if (!(edge instanceof b2PolygonEdgeShape)) {
+      evaluate(contact, manifold, xfA, xfB);
+      return;
+    }
+    s_edgePolygon.SetAsEdge(edge.m_vertex1, edge.m_vertex2);
+    s_edgePolygon.m_radius = edge.m_radius;
+    b2CollidePolygonAndCircle(manifold, s_edgePolygon, xfA, contact.m_fixtureB.m_shape as b2CircleShape, xfB);
+  },
+);
 
 /** 2.1a's b2Collision statics, over the 2.2.1 functions (same arguments). */
 export const b2Collision = {

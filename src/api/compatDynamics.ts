@@ -10,6 +10,8 @@ import { b2AABB, b2RayCastOutput } from '../collision/b2Collision';
 import type { b2RayCastInput } from '../collision/b2Collision';
 import { b2TestOverlapShapes } from '../collision/b2Collision';
 import { b2MassData, b2Shape } from '../collision/shapes/b2Shape';
+import { b2ArgumentError, b2DescribeNumber, b2DestroyedError } from '../common/b2ArgumentError';
+import { b2Color } from '../common/b2Draw';
 import { b2Transform, b2Vec2 } from '../common/b2Math';
 import { b2_linearSlop } from '../common/b2Settings';
 import { b2Body, b2BodyDef, b2BodyType } from '../dynamics/b2Body';
@@ -80,7 +82,8 @@ declare module '../dynamics/b2World' {
     GetGravity(out?: b2Vec2): b2Vec2;
     /**
      * 2.1a: the world's ground body, a static body at the origin with no fixtures, often used as
-     * a mouse joint's bodyA. Box2D 2.2 worlds have none: the first call creates it.
+     * a mouse joint's bodyA. Box2D 2.2 worlds have none: the first call creates it, and so does
+     * the first call after it was destroyed.
      */
     GetGroundBody(): b2Body;
     /** 2.1a: check the broad phase's dynamic tree (throws if it is inconsistent). */
@@ -330,6 +333,30 @@ wrapMethod(b2World.prototype, 'DrawDebugData', (drawDebugData) =>
   },
 );
 
+// DrawShape is 2.1a's public DrawShape(shape, xf, color); a fixture also stands for its shape (the
+// C++ form). Accepted at run time only: a TypeScript overload cannot merge into the class's method.
+wrapMethod(b2World.prototype, 'DrawShape', (drawShape) =>
+  function (this: b2World, shape: b2Shape | b2Fixture, xf: Readonly<b2Transform>, color: b2Color) {
+    const method = 'b2World.DrawShape';
+    if (this.m_debugDraw === null) {
+      throw new b2ArgumentError(method, 'the world', 'has no debug draw (call SetDebugDraw first)');
+    }
+    if (shape instanceof b2Fixture) {
+      if (shape.m_destroyed) throw b2DestroyedError(method, 'fixture');
+      shape = shape.GetShape();
+    } else if (!(shape instanceof b2Shape)) {
+      throw new b2ArgumentError(method, 'shape', `must be a b2Shape or a b2Fixture, got ${b2DescribeNumber(shape)}`);
+    }
+    if (!(xf instanceof b2Transform)) {
+      throw new b2ArgumentError(method, 'xf', `must be a b2Transform, got ${b2DescribeNumber(xf)}`);
+    }
+    if (!(color instanceof b2Color)) {
+      throw new b2ArgumentError(method, 'color', `must be a b2Color, got ${b2DescribeNumber(color)}`);
+    }
+    drawShape.call(this, shape, xf, color);
+  },
+);
+
 const s_groundBodies = new WeakMap<b2World, b2Body>();
 const s_identity: Readonly<b2Transform> = new b2Transform();
 
@@ -401,7 +428,9 @@ defineMethods(b2World.prototype, {
   },
   GetGroundBody() {
     let ground = s_groundBodies.get(this);
-    if (ground === undefined) {
+    // 2.1a kept handing back its ground body after an app destroyed it (walking the body list
+    // to clear a level), and its CreateJoint took the dead body; here a joint needs a live one.
+    if (ground === undefined || ground.m_destroyed) {
       ground = this.CreateBody(new b2BodyDef());
       s_groundBodies.set(this, ground);
     }

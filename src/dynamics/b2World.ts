@@ -33,7 +33,7 @@ import { b2CheckBodyOf, b2CheckJointDef, b2CheckJointOf } from './b2DefValidatio
 import { b2Body, type b2BodyDef } from './b2Body';
 import { b2ContactManager } from './b2ContactManager';
 import { b2WorldBackendEngineFunctions, type b2WorldBackend } from './b2WorldBackend';
-import type { b2Fixture, b2FixtureProxy } from './b2Fixture';
+import type { b2FixtureProxy } from './b2Fixture';
 import { b2Island } from './b2Island';
 import { b2Profile, b2TimeStep } from './b2TimeStep';
 import type {
@@ -410,10 +410,10 @@ export class b2World {
 
     --this.m_bodyCount;
 
-    // The C++ frees the body; here it is marked, so later calls on it throw.
+    // The C++ frees the body; here it is marked, so later calls on it throw. Its list links stay:
+    // the engine never reads them again, and Box2DWeb apps that destroy bodies while walking the
+    // list read GetNext() of the body just destroyed to carry on (2.1a kept the links too).
     b.m_destroyed = true;
-    b.m_prev = null;
-    b.m_next = null;
     this.m_changeListener?.StructureChanged();
   }
 
@@ -560,10 +560,9 @@ export class b2World {
     b2Assert(this.m_jointCount > 0);
     --this.m_jointCount;
 
-    // The C++ frees the joint; here it is marked, so later calls on it throw.
+    // The C++ frees the joint; here it is marked, so later calls on it throw. Its list links stay,
+    // as a body's do (see DestroyBody).
     j.m_destroyed = true;
-    j.m_prev = null;
-    j.m_next = null;
 
     // If the joint prevents collisions, then flag any contacts for filtering.
     if (collideConnected === false) {
@@ -762,15 +761,15 @@ export class b2World {
         const xf = b.GetTransform();
         for (let f = b.GetFixtureList(); f; f = f.GetNext()) {
           if (b.IsActive() === false) {
-            this.DrawShape(f, xf, s_inactiveColor);
+            this.DrawShape(f.GetShape(), xf, s_inactiveColor);
           } else if (b.GetType() === b2BodyType.b2_staticBody) {
-            this.DrawShape(f, xf, s_staticColor);
+            this.DrawShape(f.GetShape(), xf, s_staticColor);
           } else if (b.GetType() === b2BodyType.b2_kinematicBody) {
-            this.DrawShape(f, xf, s_kinematicColor);
+            this.DrawShape(f.GetShape(), xf, s_kinematicColor);
           } else if (b.IsAwake() === false) {
-            this.DrawShape(f, xf, s_sleepingColor);
+            this.DrawShape(f.GetShape(), xf, s_sleepingColor);
           } else {
-            this.DrawShape(f, xf, s_awakeColor);
+            this.DrawShape(f.GetShape(), xf, s_awakeColor);
           }
         }
       }
@@ -1745,11 +1744,15 @@ export class b2World {
     }
   }
 
-  private DrawShape(fixture: b2Fixture, xf: Readonly<b2Transform>, color: b2Color): void {
+  /**
+   * Draw a shape at a transform with the debug draw. The C++ takes the fixture, only to reach its
+   * shape; taking the shape makes this Box2DWeb 2.1a's public DrawShape(shape, xf, color).
+   */
+  DrawShape(shape: b2Shape, xf: Readonly<b2Transform>, color: b2Color): void {
     const debugDraw = this.m_debugDraw as b2Draw;
-    switch (fixture.GetType()) {
+    switch (shape.GetType()) {
       case b2Shape.e_circle: {
-        const circle = fixture.GetShape() as b2CircleShape;
+        const circle = shape as b2CircleShape;
 
         const center = b2MulXV(xf, circle.m_p, this.m_drawCenter);
         const radius = circle.m_radius;
@@ -1760,7 +1763,7 @@ export class b2World {
       }
 
       case b2Shape.e_edge: {
-        const edge = fixture.GetShape() as b2EdgeShape;
+        const edge = shape as b2EdgeShape;
         const v1 = b2MulXV(xf, edge.m_vertex1, this.m_drawV1);
         const v2 = b2MulXV(xf, edge.m_vertex2, this.m_drawV2);
         debugDraw.DrawSegment(v1, v2, color);
@@ -1768,7 +1771,7 @@ export class b2World {
       }
 
       case b2Shape.e_chain: {
-        const chain = fixture.GetShape() as b2ChainShape;
+        const chain = shape as b2ChainShape;
         const count = chain.m_count;
         const vertices = chain.m_vertices;
 
@@ -1783,7 +1786,7 @@ export class b2World {
       }
 
       case b2Shape.e_polygon: {
-        const poly = fixture.GetShape() as b2PolygonShape;
+        const poly = shape as b2PolygonShape;
         const vertexCount = poly.m_vertexCount;
         b2Assert(vertexCount <= b2_maxPolygonVertices);
         const vertices = this.m_drawVertices;

@@ -1,0 +1,329 @@
+/*
+ * What public Box2DWeb programs do that Box2D 2.2.1 alone does not take, run beside Box2DWeb 2.1a
+ * itself (node_modules/box2dweb, loaded as the benchmarks load it): each app below is one function
+ * run on both libraries' Box2D namespaces, and the results must agree where 2.1a's behaviour is
+ * what the app relies on.
+ */
+
+import { describe, expect, it } from 'vitest';
+import { loadBox2DWeb } from '../../bench/engines/box2dweb.mjs';
+import * as wp from '../../src/index';
+
+/** A library's Box2D namespace, as an app written for Box2DWeb sees it (untyped JavaScript). */
+type Lib = any;
+
+const box2dweb: Lib = loadBox2DWeb();
+const webphysics: Lib = wp.Box2D;
+
+/** Run `app` on Box2DWeb 2.1a and on WebPhysics. */
+function both<T>(app: (Box2D: Lib) => T): { box2dweb: T; webphysics: T } {
+  return { box2dweb: app(box2dweb), webphysics: app(webphysics) };
+}
+
+function thrown(fn: () => unknown): Error {
+  try {
+    fn();
+  } catch (e) {
+    return e as Error;
+  }
+  throw new Error('expected a throw');
+}
+
+describe('destroying while walking the lists', () => {
+  /** A chain of six balls joined by revolute joints, then walks that destroy as they go. */
+  function destroyWhileWalking(Box2D: Lib) {
+    const { b2Vec2 } = Box2D.Common.Math;
+    const { b2World, b2BodyDef, b2Body } = Box2D.Dynamics;
+    const { b2CircleShape } = Box2D.Collision.Shapes;
+    const { b2RevoluteJointDef } = Box2D.Dynamics.Joints;
+    const world = new b2World(new b2Vec2(0, 10), true);
+    const bd = new b2BodyDef();
+    bd.type = b2Body.b2_dynamicBody;
+    const bodies = [];
+    for (let i = 0; i < 6; i++) {
+      bd.position.Set(3 * i, 0);
+      const body = world.CreateBody(bd);
+      body.CreateFixture2(new b2CircleShape(1), 1);
+      body.SetUserData(`body${i}`);
+      bodies.push(body);
+    }
+    for (let i = 0; i < 5; i++) {
+      const jd = new b2RevoluteJointDef();
+      jd.Initialize(bodies[i], bodies[i + 1], new b2Vec2(3 * i + 1.5, 0));
+      jd.userData = `joint${i}`;
+      world.CreateJoint(jd);
+    }
+    world.Step(1 / 60, 8, 3);
+
+    // The walks read the next link of the object just destroyed, as the apps do.
+    const jointsSeen: string[] = [];
+    let doomedJoint = null;
+    for (let j = world.GetJointList(); j; j = j.GetNext()) {
+      jointsSeen.push(j.GetUserData());
+      if (jointsSeen.length % 2 === 1) {
+        world.DestroyJoint(j);
+        doomedJoint = j;
+      }
+    }
+    const bodiesSeen: string[] = [];
+    let doomedBody = null;
+    for (let b = world.GetBodyList(); b; b = b.m_next) {
+      if (b.GetUserData() === null) continue; // 2.1a's own ground body
+      bodiesSeen.push(b.GetUserData());
+      if (bodiesSeen.length % 3 !== 0) {
+        world.DestroyBody(b);
+        doomedBody = b;
+      }
+    }
+    const left: string[] = [];
+    for (let b = world.GetBodyList(); b; b = b.GetNext()) if (b.GetUserData() !== null) left.push(b.GetUserData());
+    world.Step(1 / 60, 8, 3);
+    return { jointsSeen, bodiesSeen, left, jointCount: world.GetJointCount(), world, doomedBody, doomedJoint };
+  }
+
+  it('reaches every body and joint after the one destroyed, through GetNext() and m_next, as in 2.1a', () => {
+    const r = both(destroyWhileWalking);
+    expect(r.webphysics.jointsSeen).toEqual(['joint4', 'joint3', 'joint2', 'joint1', 'joint0']);
+    expect(r.webphysics.jointsSeen).toEqual(r.box2dweb.jointsSeen);
+    expect(r.webphysics.bodiesSeen).toEqual(['body5', 'body4', 'body3', 'body2', 'body1', 'body0']);
+    expect(r.webphysics.bodiesSeen).toEqual(r.box2dweb.bodiesSeen);
+    expect(r.webphysics.left).toEqual(['body3', 'body0']);
+    expect(r.webphysics.left).toEqual(r.box2dweb.left);
+    expect(r.webphysics.jointCount).toBe(0);
+    expect(r.box2dweb.jointCount).toBe(0);
+  });
+
+  it('leaves the destroyed body and joint unusable, and the world consistent', () => {
+    const { world, doomedBody, doomedJoint } = destroyWhileWalking(webphysics);
+    expect(thrown(() => doomedBody.ApplyForce(new wp.b2Vec2(1, 0), new wp.b2Vec2(0, 0))).message).toBe(
+      'b2Body.ApplyForce: this body has been destroyed',
+    );
+    expect(thrown(() => world.DestroyBody(doomedBody)).message).toBe('b2World.DestroyBody: body has been destroyed');
+    expect(thrown(() => world.DestroyJoint(doomedJoint)).message).toBe('b2World.DestroyJoint: joint has been destroyed');
+    let count = 0;
+    for (let b = world.GetBodyList(); b; b = b.GetNext()) ++count;
+    expect(count).toBe(world.GetBodyCount());
+    expect(count).toBe(2);
+    world.Validate();
+  });
+});
+
+describe('the ground body', () => {
+  /** Clear the level by destroying every body in the list (the ground too), then drag a new box. */
+  function clearThenDrag(Box2D: Lib) {
+    const { b2Vec2 } = Box2D.Common.Math;
+    const { b2World, b2BodyDef, b2Body, b2FixtureDef } = Box2D.Dynamics;
+    const { b2PolygonShape } = Box2D.Collision.Shapes;
+    const { b2MouseJointDef } = Box2D.Dynamics.Joints;
+    const world = new b2World(new b2Vec2(0, 0), true);
+    const firstGround = world.GetGroundBody();
+    const bd = new b2BodyDef();
+    bd.type = b2Body.b2_dynamicBody;
+    const fd = new b2FixtureDef();
+    fd.density = 1;
+    fd.shape = new b2PolygonShape();
+    fd.shape.SetAsBox(0.5, 0.5);
+    world.CreateBody(bd).CreateFixture(fd);
+    for (let b = world.GetBodyList(); b; b = b.GetNext()) world.DestroyBody(b);
+    const emptied = world.GetBodyCount();
+
+    bd.position.Set(5, 5);
+    const box = world.CreateBody(bd);
+    box.CreateFixture(fd);
+    const md = new b2MouseJointDef();
+    md.bodyA = world.GetGroundBody();
+    md.bodyB = box;
+    md.target.Set(5, 5);
+    md.maxForce = 1000 * box.GetMass();
+    const mouse = world.CreateJoint(md);
+    mouse.SetTarget(new b2Vec2(8, 4));
+    for (let i = 0; i < 120; i++) {
+      world.Step(1 / 60, 8, 3);
+      world.ClearForces();
+    }
+    return { world, firstGround, emptied, x: box.GetPosition().x, y: box.GetPosition().y };
+  }
+
+  it('GetGroundBody after the ground was destroyed gives a body a mouse joint can hold, as 2.1a let apps do', () => {
+    const r = both(clearThenDrag);
+    expect(r.webphysics.emptied).toBe(0);
+    expect(r.box2dweb.emptied).toBe(0);
+    for (const result of [r.box2dweb, r.webphysics]) {
+      expect(result.x).toBeCloseTo(8, 1);
+      expect(result.y).toBeCloseTo(4, 1);
+    }
+  });
+
+  it('the new ground body is live, static, at the origin, and handed back again until destroyed', () => {
+    const { world, firstGround } = clearThenDrag(webphysics);
+    const ground = world.GetGroundBody();
+    expect(ground).not.toBe(firstGround);
+    expect(world.GetGroundBody()).toBe(ground);
+    expect(ground.GetType()).toBe(wp.b2_staticBody);
+    expect([ground.GetPosition().x, ground.GetPosition().y, ground.GetFixtureList()]).toEqual([0, 0, null]);
+    expect(world.GetBodyCount()).toBe(2);
+  });
+});
+
+describe('world.DrawShape', () => {
+  /** A circle and a box drawn by the app itself with 2.1a's public DrawShape(shape, xf, color). */
+  function drawShapes(Box2D: Lib) {
+    const { b2Vec2, b2Transform, b2Mat22 } = Box2D.Common.Math;
+    const { b2World, b2DebugDraw } = Box2D.Dynamics;
+    const { b2PolygonShape, b2CircleShape } = Box2D.Collision.Shapes;
+    const world = new b2World(new b2Vec2(0, 10), true);
+    const context = new RecordingContext();
+    const debugDraw = new b2DebugDraw();
+    debugDraw.SetSprite(context);
+    debugDraw.SetDrawScale(30);
+    debugDraw.SetFlags(b2DebugDraw.e_shapeBit);
+    world.SetDebugDraw(debugDraw);
+    const xf = new b2Transform(new b2Vec2(2, 3), b2Mat22.FromAngle(0.5));
+    const circle = new b2CircleShape(0.75);
+    circle.SetLocalPosition(new b2Vec2(0.5, 0));
+    const box = new b2PolygonShape();
+    box.SetAsBox(1, 0.5);
+    const color = new Box2D.Common.b2Color(0.9, 0.7, 0.7);
+    world.DrawShape(circle, xf, color);
+    world.DrawShape(box, xf, color);
+    return { world, context, xf, circle, box, color };
+  }
+
+  it('draws a shape at a transform where 2.1a draws it', () => {
+    const r = both(drawShapes);
+    expect(geometry(r.webphysics.context)).toEqual(geometry(r.box2dweb.context));
+    expect(geometry(r.webphysics.context).arcs).toHaveLength(1);
+    expect(geometry(r.webphysics.context).points.length).toBeGreaterThan(4);
+  });
+
+  it('takes a fixture for its shape, and rejects anything else naming the argument', () => {
+    const { world, context, xf, circle, color } = drawShapes(webphysics);
+    const body = world.CreateBody(new wp.b2BodyDef());
+    const fixture = body.CreateFixture(circle, 0);
+    const before = context.calls.length;
+    world.DrawShape(fixture, xf, color);
+    const viaFixture = context.calls.slice(before);
+    world.DrawShape(circle, xf, color);
+    expect(context.calls.slice(before + viaFixture.length)).toEqual(viaFixture);
+
+    const shapeError = thrown(() => world.DrawShape({}, xf, color));
+    expect(shapeError).toBeInstanceOf(wp.b2ArgumentError);
+    expect(shapeError.message).toBe('b2World.DrawShape: shape must be a b2Shape or a b2Fixture, got an object');
+    expect(thrown(() => world.DrawShape(circle, null, color)).message).toBe('b2World.DrawShape: xf must be a b2Transform, got null');
+    expect(thrown(() => world.DrawShape(circle, xf, undefined)).message).toBe(
+      'b2World.DrawShape: color must be a b2Color, got undefined',
+    );
+    body.DestroyFixture(fixture);
+    expect(thrown(() => world.DrawShape(fixture, xf, color)).message).toBe('b2World.DrawShape: fixture has been destroyed');
+    world.SetDebugDraw(null);
+    expect(thrown(() => world.DrawShape(circle, xf, color)).message).toBe(
+      'b2World.DrawShape: the world has no debug draw (call SetDebugDraw first)',
+    );
+    // The world is untouched.
+    world.Step(1 / 60, 8, 3);
+    expect(world.GetBodyCount()).toBe(1);
+  });
+});
+
+describe('SetAsEdge under a circle', () => {
+  /** A circle centred exactly on a SetAsEdge segment's line, then a second on the reversed segment. */
+  function circleOnEdgeLine(Box2D: Lib, reversed: boolean, shape: 'circle' | 'box') {
+    const { b2Vec2 } = Box2D.Common.Math;
+    const { b2World, b2BodyDef, b2Body, b2FixtureDef } = Box2D.Dynamics;
+    const { b2PolygonShape, b2CircleShape } = Box2D.Collision.Shapes;
+    const world = new b2World(new b2Vec2(0, 10), true);
+    const floor = new b2PolygonShape();
+    const left = new b2Vec2(-5, 5);
+    const right = new b2Vec2(5, 5);
+    if (reversed) floor.SetAsEdge(right, left);
+    else floor.SetAsEdge(left, right);
+    const fd = new b2FixtureDef();
+    fd.shape = floor;
+    world.CreateBody(new b2BodyDef()).CreateFixture(fd);
+    const bd = new b2BodyDef();
+    bd.type = b2Body.b2_dynamicBody;
+    bd.position.Set(0.3, 5);
+    const player = world.CreateBody(bd);
+    fd.density = 1;
+    if (shape === 'circle') {
+      fd.shape = new b2CircleShape(0.5);
+    } else {
+      fd.shape = new b2PolygonShape();
+      fd.shape.SetAsBox(0.5, 0.5);
+    }
+    player.CreateFixture(fd);
+    for (let i = 0; i < 60; i++) {
+      world.Step(1 / 60, 10, 10);
+      world.ClearForces();
+    }
+    return player.GetPosition().y;
+  }
+
+  it('pushes the circle to the side 2.1a does, for either vertex order', () => {
+    for (const reversed of [false, true]) {
+      const r = both((Box2D) => circleOnEdgeLine(Box2D, reversed, 'circle'));
+      // Standing on the floor (centre 0.5 above it) or fallen through it.
+      const side = (y: number) => (y < 5 ? 'on top' : 'fell through');
+      expect(side(r.webphysics)).toBe(reversed ? 'fell through' : 'on top');
+      expect(side(r.webphysics)).toBe(side(r.box2dweb));
+      if (!reversed) expect(r.webphysics).toBeCloseTo(r.box2dweb, 1);
+    }
+  });
+
+  it('leaves a box on a SetAsEdge floor where 2.1a does', () => {
+    const r = both((Box2D) => circleOnEdgeLine(Box2D, false, 'box'));
+    expect(r.webphysics).toBeLessThan(5);
+    expect(r.box2dweb).toBeLessThan(5);
+  });
+
+  it("keeps 2.2.1's edge collision for a b2EdgeShape: the circle goes to the edge's other side", () => {
+    const world = new wp.b2World(new wp.b2Vec2(0, 10), true);
+    world.CreateBody(new wp.b2BodyDef()).CreateFixture(new wp.b2EdgeShape(new wp.b2Vec2(-5, 5), new wp.b2Vec2(5, 5)), 0);
+    const bd = new wp.b2BodyDef();
+    bd.type = wp.b2_dynamicBody;
+    bd.position.Set(0.3, 5);
+    const ball = world.CreateBody(bd);
+    ball.CreateFixture(new wp.b2CircleShape(0.5), 1);
+    for (let i = 0; i < 60; i++) world.Step(1 / 60, 10, 10);
+    expect(ball.GetPosition().y).toBeGreaterThan(5);
+  });
+
+  it("the SetAsEdge fixture's shape stays an edge, and so does its clone", () => {
+    const floor = new wp.b2PolygonShape();
+    floor.SetAsEdge(new wp.b2Vec2(-5, 5), new wp.b2Vec2(5, 5));
+    const world = new wp.b2World(new wp.b2Vec2(0, 10), true);
+    const shape = world.CreateBody(new wp.b2BodyDef()).CreateFixture(floor, 0).GetShape();
+    for (const edge of [shape, shape.Clone()]) {
+      expect(edge).toBeInstanceOf(wp.b2EdgeShape);
+      expect(edge.GetType()).toBe(wp.b2Shape.e_edge);
+      const e = edge as wp.b2EdgeShape;
+      expect([e.m_vertex1.x, e.m_vertex1.y, e.m_vertex2.x, e.m_vertex2.y, e.m_radius]).toEqual([-5, 5, 5, 5, floor.m_radius]);
+    }
+  });
+});
+
+/** A canvas 2D context that records its calls, as [name, ...arguments]. */
+class RecordingContext {
+  readonly canvas = { width: 600, height: 400 };
+  readonly calls: unknown[][] = [];
+  strokeStyle = '';
+  fillStyle = '';
+  lineWidth = 1;
+  globalAlpha = 1;
+}
+for (const name of ['beginPath', 'closePath', 'moveTo', 'lineTo', 'arc', 'stroke', 'fill', 'clearRect', 'save', 'restore']) {
+  Object.defineProperty(RecordingContext.prototype, name, {
+    value(this: RecordingContext, ...args: unknown[]) {
+      this.calls.push([name, ...args]);
+    },
+  });
+}
+
+/** What a drawing puts on the canvas: circles (centre, radius) and the distinct path points. */
+function geometry(context: RecordingContext): { arcs: number[][]; points: string[] } {
+  const arcs = context.calls.filter((c) => c[0] === 'arc').map((c) => c.slice(1, 4) as number[]);
+  const points = context.calls
+    .filter((c) => (c[0] === 'moveTo' || c[0] === 'lineTo') && !(c[1] === 0 && c[2] === 0))
+    .map((c) => `${c[1]},${c[2]}`);
+  return { arcs, points: [...new Set(points)].sort() };
+}
