@@ -32,16 +32,36 @@ const explicitPort = port !== undefined && port !== '';
 const firstPort = explicitPort ? Number(port) : 8080;
 if (!Number.isInteger(firstPort) || firstPort < 0 || firstPort > 65535) usage(`bad port ${port}`);
 
+// Stop on Ctrl+C, SIGTERM or SIGHUP, and when the process that started this one is gone: npm runs
+// this script through `sh -c`, and a SIGTERM or SIGINT sent to npm alone stops that shell, not
+// this process. Stopping ends the server's connections, the esbuild watcher (a child process) and
+// this process, with status 0.
+let served = null;
+let watcher = null;
+let stopping = false;
+async function stop(why) {
+  if (stopping) return;
+  stopping = true;
+  console.log(`npm start: stopping (${why})`);
+  served?.server.closeAllConnections();
+  await Promise.all([served?.close(), watcher?.dispose()]);
+  process.exit(0);
+}
+for (const signal of ['SIGINT', 'SIGTERM', 'SIGHUP']) process.on(signal, () => stop(signal));
+const parent = process.ppid;
+setInterval(() => {
+  if (process.ppid !== parent) stop('its parent process exited');
+}, 250).unref();
+
 const started = Date.now();
 try {
-  await buildDemos(defaultOutDir, { watch });
+  watcher = await buildDemos(defaultOutDir, { watch });
 } catch (error) {
   console.error(`npm start: the demo pages did not build: ${error.message}`);
   process.exit(1);
 }
 console.log(`Built the demo pages into ${path.relative(repoRoot, defaultOutDir)} in ${Date.now() - started} ms${watch ? ' (watching for changes)' : ''}`);
 
-let served = null;
 for (let candidate = firstPort; served === null; ++candidate) {
   try {
     served = await startServer({ root: defaultOutDir, port: candidate, host });
@@ -56,4 +76,3 @@ for (let candidate = firstPort; served === null; ++candidate) {
   }
 }
 console.log(`WebPhysics testbed: ${served.url}   side by side: ${served.url}compare.html   (Ctrl+C to stop)`);
-for (const signal of ['SIGINT', 'SIGTERM']) process.on(signal, () => served.close().then(() => process.exit(0)));
