@@ -122,6 +122,24 @@ function describeFsError(e: unknown): string {
   }
 }
 
+/**
+ * What makes a JSON object a b2dJson scene: its `body` array or one of the world's fields. b2dJson
+ * gives every field a default, so any other JSON object (a package.json, a settings file) would
+ * otherwise load as an empty world and run.
+ */
+const kSceneKeys = [
+  'body',
+  'gravity',
+  'allowSleep',
+  'autoClearForces',
+  'continuousPhysics',
+  'subStepping',
+  'warmStarting',
+  'stepsPerSecond',
+  'velocityIterations',
+  'positionIterations',
+] as const;
+
 function loadScene(scenePath: string): b2dJsonScene {
   let text: string;
   try {
@@ -129,8 +147,20 @@ function loadScene(scenePath: string): b2dJsonScene {
   } catch (e) {
     throw new CliError(`cannot read scene ${scenePath}: ${describeFsError(e)}`);
   }
+  // b2dJsonRead reports where text that is not JSON breaks, so such text goes to it as it is.
+  let document: unknown;
   try {
-    return b2dJsonRead(text);
+    document = JSON.parse(text);
+  } catch {
+    document = text;
+  }
+  if (typeof document === 'object' && document !== null && !Array.isArray(document) && !kSceneKeys.some((key) => key in document)) {
+    throw new CliError(
+      `${scenePath}: not a b2dJson scene: a scene has a "body" array or the world's fields (${kSceneKeys.slice(1).join(', ')}), and this JSON has none of them`,
+    );
+  }
+  try {
+    return b2dJsonRead(document);
   } catch (e) {
     if (e instanceof b2dJsonError) {
       throw new CliError(`${scenePath}: ${e.message}`);

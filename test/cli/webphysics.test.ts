@@ -94,6 +94,14 @@ describe('webphysics run', () => {
     expect(reloaded.bodies[1].GetPosition().y).toBeLessThan(0.75);
   });
 
+  it('runs a scene that has the world\'s fields and no bodies', () => {
+    writeFileSync(path.join(tmp, 'world-only.json'), '{"gravity": {"x": 0, "y": -10}, "allowSleep": true}');
+    const run = webphysics(['run', 'world-only.json', '--steps', '5']);
+    expect(run.stderr).toBe('');
+    expect(run.status).toBe(0);
+    expect(report(run.stdout).get('bodies')).toBe('0');
+  });
+
   it('--steps 0 only loads the scene (and can convert it)', () => {
     const run = webphysics(['run', '--steps', '0', '--out', 'copy.json']);
     expect(run.status).toBe(0);
@@ -103,11 +111,20 @@ describe('webphysics run', () => {
     expect(stateDigest(copy.bodies)).toBe(stateDigest(original.bodies));
   });
 
+  /** The refusal of a JSON file with neither bodies nor world fields, which would run an empty world. */
+  const kNotAScene = (file: string) =>
+    new RegExp(
+      `^webphysics run: .*${file.replace('.', '\\.')}: not a b2dJson scene: a scene has a "body" array or the world's fields ` +
+        String.raw`\(gravity, allowSleep, autoClearForces, continuousPhysics, subStepping, warmStarting, stepsPerSecond, velocityIterations, positionIterations\), and this JSON has none of them$`,
+    );
+
   const errors: [string, string[], number, RegExp][] = [
     ['a missing scene file', ['run', 'missing.json'], 1, /^webphysics run: cannot read scene .*missing\.json: no such file$/],
     ['a folder as the scene', ['run', '.'], 1, /^webphysics run: cannot read scene .*: it is a folder$/],
     ['a file that is not JSON', ['run', 'bad.json'], 1, /^webphysics run: .*bad\.json: \(root\): not valid JSON \(.*\)$/],
     ['a scene with a bad field', ['run', 'bad-field.json'], 1, /^webphysics run: .*bad-field\.json: body\[0\]\.type: expected an integer in \[0, 2\], got number 7$/],
+    ['a JSON file that is not a scene', ['run', 'package.json'], 1, kNotAScene('package.json')],
+    ['an empty JSON object', ['run', 'empty.json'], 1, kNotAScene('empty.json')],
     ['an unknown option', ['run', '--fast'], 2, /^webphysics run: unknown option --fast \(see webphysics run --help\)$/],
     ['a bad --steps', ['run', '--steps', 'ten'], 2, /^webphysics run: --steps expects a whole number >= 0, got "ten" \(see webphysics run --help\)$/],
     ['a negative --steps', ['run', '--steps', '-5'], 2, /^webphysics run: --steps expects a whole number >= 0, got "-5"/],
@@ -124,6 +141,8 @@ describe('webphysics run', () => {
     it(`reports ${what} in one line on stderr and exits with ${status}`, () => {
       writeFileSync(path.join(tmp, 'bad.json'), '{"body": [}');
       writeFileSync(path.join(tmp, 'bad-field.json'), '{"body": [{"type": 7}]}');
+      writeFileSync(path.join(tmp, 'package.json'), '{"name": "app", "version": "1.0.0", "dependencies": {}}');
+      writeFileSync(path.join(tmp, 'empty.json'), '{}');
       const run = webphysics(args);
       expect(run.status).toBe(status);
       expect(run.stdout).toBe('');
