@@ -88,7 +88,7 @@ function runPeerOnce(engine, api, id) {
 }
 
 /**
- * The WebGPU backend of webphysics-gpu.mjs beside the engine bundle, on one device: `create()`
+ * The WebGPU backend of webphysics-gpu.node.mjs beside the engine bundle, on one device: `create()`
  * makes a backend for a world, `timed` says whether its times mean anything (not on a software
  * adapter such as SwiftShader, which the study still uses for the GPU's accuracy).
  */
@@ -386,7 +386,7 @@ async function main() {
     bundle = buildOurs((s) => process.stderr.write(s + '\n')).bundle;
   }
   const b2 = await import(pathToFileURL(path.resolve(bundle)).href);
-  const gpu = values.gpu ? await gpuBackend(path.join(path.dirname(bundle), 'webphysics-gpu.mjs')) : null;
+  const gpu = values.gpu ? await gpuBackend(path.join(path.dirname(bundle), 'webphysics-gpu.node.mjs')) : null;
   if (gpu) process.stderr.write(`WebGPU: ${gpu.adapter.description || gpu.adapter.device}${gpu.timed ? '' : ' (software: its runs are not timed)'}\n`);
   const peers = await loadPeers(values.peers === undefined ? (values.quick ? [] : null) : values.peers === '' ? [] : values.peers.split(','), bundle);
   const results = await runAccuracy(b2, {

@@ -8,8 +8,11 @@
  * newer VK_DRIVER_FILES) at that file in process.env before a Dawn instance is created makes the
  * loader offer it, from inside the running process.
  *
- * Everything Node-specific is imported dynamically, so a browser bundle of src-gpu never loads it.
+ * The Node modules themselves are loaded in ./nodeImports.ts, which the browser build of
+ * webphysics/gpu replaces (scripts/build.mjs), so a bundler never meets them on a browser's path.
  */
+
+import { importPackage, nodeSearchEnv } from './nodeImports';
 
 /** What `import('webgpu')` gives: Dawn's `create(toggles)` and the WebGPU globals. */
 export interface DawnModule {
@@ -40,7 +43,7 @@ export function isNode(): boolean {
 /** Loads the `webgpu` package, or throws GpuUnavailableError saying how to install it. */
 export async function loadDawn(name = 'webgpu'): Promise<DawnModule> {
   try {
-    const mod = (await import(/* @vite-ignore */ name)) as DawnModule & { default?: DawnModule };
+    const mod = (await importPackage(name)) as DawnModule & { default?: DawnModule };
     const dawn = typeof mod.create === 'function' ? mod : mod.default;
     if (!dawn || typeof dawn.create !== 'function') {
       throw new Error("the module has no 'create' export");
@@ -76,23 +79,6 @@ export interface IcdSearchEnv {
   /** Subfolder names of a folder ([] when it does not exist). */
   list(path: string): string[];
   home: string;
-}
-
-async function realSearchEnv(): Promise<IcdSearchEnv> {
-  const fs = await import('node:fs');
-  const os = await import('node:os');
-  return {
-    env: process.env,
-    exists: (p) => fs.existsSync(p),
-    list: (p) => {
-      try {
-        return fs.readdirSync(p);
-      } catch {
-        return [];
-      }
-    },
-    home: os.homedir(),
-  };
 }
 
 /**
@@ -203,7 +189,7 @@ export async function requestNodeAdapter(options: NodeAdapterOptions = {}): Prom
   for (const [k, v] of Object.entries(dawn.globals)) {
     if (!(k in globalThis)) (globalThis as Record<string, unknown>)[k] = v;
   }
-  const search = options.search ?? (await realSearchEnv());
+  const search = options.search ?? (await nodeSearchEnv());
   const platform = options.platform ?? process.platform;
   const request: GPURequestAdapterOptions = {};
   if (options.powerPreference) request.powerPreference = options.powerPreference;

@@ -1,9 +1,10 @@
 /*
- * The published type declarations: tsc emits dist/types into a temporary package (with the
- * repository's package.json, so its `exports` and `types` are the ones resolved), and small
- * TypeScript apps in test/api/fixtures/types compile against it: one on the ES module, one on
- * the Box2D namespace object, and one page script on the classic bundle's global Box2D. Each
- * has @ts-expect-error lines, so the declarations must be real types, not `any`.
+ * The published type declarations: scripts/build-types.mjs writes dist/types into a temporary
+ * package (with the repository's package.json, so its `exports` and `types` are the ones
+ * resolved), and small TypeScript apps in test/api/fixtures/types compile against it: one on the
+ * ES module, one on the Box2D namespace object, and one page script on the classic bundle's
+ * global Box2D. Each has @ts-expect-error lines, so the declarations must be real types, not
+ * `any`. test/build/package.test.ts checks the packed package under other module settings.
  */
 
 import { execFileSync } from 'node:child_process';
@@ -21,9 +22,7 @@ beforeAll(() => {
   const pkg = path.join(root, 'node_modules/webphysics');
   mkdirSync(pkg, { recursive: true });
   copyFileSync(path.join(repoRoot, 'package.json'), path.join(pkg, 'package.json'));
-  execFileSync(process.execPath, [tsc, '-p', path.join(repoRoot, 'tsconfig.build.json'), '--outDir', path.join(pkg, 'dist/types')], {
-    cwd: repoRoot,
-  });
+  execFileSync(process.execPath, [path.join(repoRoot, 'scripts/build-types.mjs'), path.join(pkg, 'dist')], { cwd: repoRoot });
   const app = path.join(root, 'app');
   mkdirSync(app);
   symlinkSync(path.join(root, 'node_modules'), path.join(app, 'node_modules'), 'dir');
