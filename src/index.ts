@@ -72,6 +72,7 @@ export {
   b2Math,
   b2Settings,
   b2Collision,
+  b2Segment,
   b2FilterData,
   b2EdgeChainDef,
   b2LineJoint,

@@ -83,6 +83,7 @@ export namespace Collision {
   export import b2RayCastInput = compat.b2RayCastInput;
   export import b2RayCastOutput = collision.b2RayCastOutput;
   export import b2Collision = compat.b2Collision;
+  export import b2Segment = compat.b2Segment;
   export import b2Distance = distance.b2Distance;
   export import b2DistanceInput = distance.b2DistanceInput;
   export import b2DistanceOutput = distance.b2DistanceOutput;

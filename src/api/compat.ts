@@ -6,8 +6,9 @@
  *   b2CircleShape(radius), b2EdgeShape(v1, v2), b2RayCastInput(p1, p2, maxFraction),
  *   b2Transform(position, R)). They are the engine classes behind a constructor proxy:
  *   `instanceof`, statics and subclassing are the engine class's;
- * - 2.1a's own names: b2Math, b2Settings, b2Collision, b2FilterData, b2DebugDraw;
- * - 2.1a classes Box2D 2.2 removed, whose constructors throw (b2LineJoint, the controllers...).
+ * - 2.1a's own names: b2Math, b2Settings, b2Collision, b2Segment, b2FilterData, b2DebugDraw;
+ * - 2.1a's line joint, which becomes a wheel joint (b2LineJointDef, b2LineJoint);
+ * - 2.1a classes Box2D 2.2 removed, whose constructors throw (the controllers...).
  */
 
 import type { b2RayCastInput as b2RayCastInputEngine } from '../collision/b2Collision';
@@ -24,7 +25,7 @@ export { b2DebugDraw } from './b2DebugDraw';
 export type { b2DebugDrawContext } from './b2DebugDraw';
 export { b2Math } from './compatMath';
 export { b2Settings } from './compatSettings';
-export { b2Collision, b2EdgeChainDef } from './compatCollision';
+export { b2Collision, b2EdgeChainDef, b2Segment } from './compatCollision';
 export {
   b2BuoyancyController,
   b2ConstantAccelController,

@@ -21,6 +21,7 @@ import { b2CircleShape } from '../collision/shapes/b2CircleShape';
 import { b2EdgeShape } from '../collision/shapes/b2EdgeShape';
 import { b2PolygonShape } from '../collision/shapes/b2PolygonShape';
 import { b2Shape } from '../collision/shapes/b2Shape';
+import { b2ArgumentError, b2CheckObject, b2CheckVec2, b2DescribeNumber } from '../common/b2ArgumentError';
 import type { b2Transform } from '../common/b2Math';
 import type { b2Contact } from '../dynamics/contacts/b2Contact';
 import { b2EdgeAndCircleContact } from '../dynamics/contacts/b2EdgeAndCircleContact';
@@ -495,6 +496,94 @@ wrapMethod(b2EdgeAndCircleContact, 'Evaluate', (evaluate) =>
     b2CollidePolygonAndCircle(manifold, s_edgePolygon, xfA, contact.m_fixtureB.m_shape as b2CircleShape, xfB);
   },
 );
+
+/**
+ * 2.1a's line segment (Box2D.Collision.b2Segment), which Box2D 2.2 dropped with the shapes'
+ * TestSegment: a segment p1-p2 that apps intersect with others and clip to boxes. The arithmetic
+ * is 2.1a's, so the results are its own to the bit.
+ */
+export class b2Segment {
+  /** The start point. */
+  readonly p1 = new b2Vec2();
+  /** The end point. */
+  readonly p2 = new b2Vec2();
+
+  /**
+   * Does `segment` cross this one, at no more than maxLambda of its length from its p1? If so,
+   * lambda[0] is that fraction and `normal` this segment's unit normal (on the side `segment`
+   * comes from).
+   */
+  TestSegment(lambda: number[], normal: b2Vec2, segment: Readonly<b2Segment>, maxLambda = 0.0): boolean {
+    const method = 'b2Segment.TestSegment';
+    if (!Array.isArray(lambda)) {
+      const got = b2DescribeNumber(lambda);
+      throw new b2ArgumentError(method, 'lambda', `must be an array (the fraction goes to lambda[0]), got ${got}`);
+    }
+    b2CheckObject(method, 'normal', normal);
+    b2CheckObject(method, 'segment', segment);
+    b2CheckVec2(method, 'segment.p1', segment.p1);
+    b2CheckVec2(method, 'segment.p2', segment.p2);
+    const s = segment.p1;
+    const rX = segment.p2.x - s.x;
+    const rY = segment.p2.y - s.y;
+    const dX = this.p2.x - this.p1.x;
+    const dY = this.p2.y - this.p1.y;
+    let nX = dY;
+    let nY = -dX;
+    const k_slop = 100.0 * Number.MIN_VALUE;
+    const denom = -(rX * nX + rY * nY);
+    if (denom > k_slop) {
+      const bX = s.x - this.p1.x;
+      const bY = s.y - this.p1.y;
+      let a = bX * nX + bY * nY;
+      if (0.0 <= a && a <= maxLambda * denom) {
+        const mu2 = -rX * bY + rY * bX;
+        if (-k_slop * denom <= mu2 && mu2 <= denom * (1.0 + k_slop)) {
+          a /= denom;
+          const nLen = Math.sqrt(nX * nX + nY * nY);
+          nX /= nLen;
+          nY /= nLen;
+          lambda[0] = a;
+          normal.Set(nX, nY);
+          return true;
+        }
+      }
+    }
+    return false;
+  }
+
+  /** Extend the segment both ways to the boundary of the box. */
+  Extend(aabb: Readonly<b2AABB>): void {
+    this.ExtendForward(aabb);
+    this.ExtendBackward(aabb);
+  }
+
+  /** Move p2 along the segment's direction to the boundary of the box. */
+  ExtendForward(aabb: Readonly<b2AABB>): void {
+    b2CheckObject('b2Segment.ExtendForward', 'aabb', aabb);
+    const dX = this.p2.x - this.p1.x;
+    const dY = this.p2.y - this.p1.y;
+    const lambda = Math.min(
+      dX > 0 ? (aabb.upperBound.x - this.p1.x) / dX : dX < 0 ? (aabb.lowerBound.x - this.p1.x) / dX : Number.POSITIVE_INFINITY,
+      dY > 0 ? (aabb.upperBound.y - this.p1.y) / dY : dY < 0 ? (aabb.lowerBound.y - this.p1.y) / dY : Number.POSITIVE_INFINITY,
+    );
+    this.p2.x = this.p1.x + dX * lambda;
+    this.p2.y = this.p1.y + dY * lambda;
+  }
+
+  /** Move p1 against the segment's direction to the boundary of the box. */
+  ExtendBackward(aabb: Readonly<b2AABB>): void {
+    b2CheckObject('b2Segment.ExtendBackward', 'aabb', aabb);
+    const dX = -this.p2.x + this.p1.x;
+    const dY = -this.p2.y + this.p1.y;
+    const lambda = Math.min(
+      dX > 0 ? (aabb.upperBound.x - this.p2.x) / dX : dX < 0 ? (aabb.lowerBound.x - this.p2.x) / dX : Number.POSITIVE_INFINITY,
+      dY > 0 ? (aabb.upperBound.y - this.p2.y) / dY : dY < 0 ? (aabb.lowerBound.y - this.p2.y) / dY : Number.POSITIVE_INFINITY,
+    );
+    this.p1.x = this.p2.x + dX * lambda;
+    this.p1.y = this.p2.y + dY * lambda;
+  }
+}
 
 /** 2.1a's b2Collision statics, over the 2.2.1 functions (same arguments). */
 export const b2Collision = {

@@ -2,15 +2,23 @@
  * Box2DWeb 2.1a compatibility for Box2D.Dynamics, Box2D.Dynamics.Contacts and
  * Box2D.Dynamics.Joints: `new b2World(gravity, doSleep)`, queries and ray casts with plain
  * functions, QueryPoint/QueryShape/RayCastOne/RayCastAll, the ground body, b2Body's 2.1a setters,
- * b2FilterData, listeners with default methods, and the joints' 2.1a accessors. What Box2D 2.2
- * removed without an equivalent throws an Error naming the call and what to use instead.
+ * b2FilterData, listeners with default methods, the joints' 2.1a accessors, and the line joint as
+ * a wheel joint without a spring. What Box2D 2.2 removed without an equivalent throws an Error
+ * naming the call and what to use instead.
  */
 
 import { b2AABB, b2RayCastOutput } from '../collision/b2Collision';
 import type { b2RayCastInput } from '../collision/b2Collision';
 import { b2TestOverlapShapes } from '../collision/b2Collision';
 import { b2MassData, b2Shape } from '../collision/shapes/b2Shape';
-import { b2ArgumentError, b2DescribeNumber, b2DestroyedError } from '../common/b2ArgumentError';
+import {
+  b2ArgumentError,
+  b2CheckFinite,
+  b2CheckLimits,
+  b2CheckNonNegative,
+  b2DescribeNumber,
+  b2DestroyedError,
+} from '../common/b2ArgumentError';
 import { b2Color } from '../common/b2Draw';
 import { b2Transform, b2Vec2 } from '../common/b2Math';
 import { b2_linearSlop } from '../common/b2Settings';
@@ -24,14 +32,16 @@ import { b2Contact } from '../dynamics/contacts/b2Contact';
 import { b2DistanceJoint } from '../dynamics/joints/b2DistanceJoint';
 import { b2FrictionJoint } from '../dynamics/joints/b2FrictionJoint';
 import { b2GearJoint } from '../dynamics/joints/b2GearJoint';
-import { b2Joint, b2JointType, b2LimitState } from '../dynamics/joints/b2Joint';
+import { b2CheckJointAlive, b2Joint, b2JointType, b2LimitState } from '../dynamics/joints/b2Joint';
+import type { b2JointDef } from '../dynamics/joints/b2Joint';
+import { b2JointFactory } from '../dynamics/joints/b2JointFactory';
 import { b2MouseJoint } from '../dynamics/joints/b2MouseJoint';
 import { b2PrismaticJoint } from '../dynamics/joints/b2PrismaticJoint';
 import { b2PulleyJoint, b2PulleyJointDef } from '../dynamics/joints/b2PulleyJoint';
 import { b2RevoluteJoint } from '../dynamics/joints/b2RevoluteJoint';
 import { b2RopeJoint } from '../dynamics/joints/b2RopeJoint';
 import { b2WeldJoint } from '../dynamics/joints/b2WeldJoint';
-import { b2WheelJoint } from '../dynamics/joints/b2WheelJoint';
+import { b2WheelJoint, b2WheelJointDef } from '../dynamics/joints/b2WheelJoint';
 import { b2DebugDraw } from './b2DebugDraw';
 import { fixtureShapeFor2_1a } from './compatCollision';
 import {
@@ -150,6 +160,8 @@ declare module '../dynamics/joints/b2Joint' {
     const e_mouseJoint: b2JointType;
     const e_gearJoint: b2JointType;
     const e_wheelJoint: b2JointType;
+    /** 2.1a's line joint type: the wheel joint's, the joint a b2LineJointDef makes. */
+    const e_lineJoint: b2JointType;
     const e_weldJoint: b2JointType;
     const e_frictionJoint: b2JointType;
     const e_ropeJoint: b2JointType;
@@ -670,15 +682,148 @@ defineStatics(b2Joint, {
   e_atLowerLimit: b2LimitState.e_atLowerLimit,
   e_atUpperLimit: b2LimitState.e_atUpperLimit,
   e_equalLimits: b2LimitState.e_equalLimits,
+  e_lineJoint: b2JointType.e_wheelJoint,
 });
-const lineJointGone =
-  'Use b2WheelJointDef (a point on a line with a spring; frequencyHz = 0 leaves the axis free; its motor turns bodyB) ' +
-  'or b2PrismaticJointDef (translation limits and a linear motor, but it also locks the rotation).';
-defineRemovedProperty(b2Joint, 'e_lineJoint', 'b2Joint.e_lineJoint', lineJointGone);
+/**
+ * 2.1a's line joint definition. Box2D 2.2 replaced the line joint by the wheel joint: the same
+ * point-on-a-line constraint with the rotation free, plus a spring along the axis, and a motor
+ * that turns bodyB instead of pushing along the axis, and no translation limits. So a line joint
+ * is a wheel joint without a spring (frequencyHz 0) as long as its limits and its motor stay off;
+ * CreateJoint refuses the definition otherwise, naming the field. The world makes a b2LineJoint.
+ */
+export class b2LineJointDef extends b2WheelJointDef {
+  /** 2.1a's translation limits: the wheel joint has none, so they must stay disabled. */
+  enableLimit = false;
+  lowerTranslation = 0.0;
+  upperTranslation = 0.0;
+  /** 2.1a's linear motor force: kept, but the motor must stay disabled (see the class comment). */
+  maxMotorForce = 0.0;
 
-/** 2.1a's line joint and its definition: gone in Box2D 2.2. */
-export const b2LineJoint = removedClass('b2LineJoint', lineJointGone);
-export const b2LineJointDef = removedClass('b2LineJointDef', lineJointGone);
+  constructor() {
+    super();
+    // No spring: the body slides freely along the axis, as on 2.1a's line joint.
+    this.frequencyHz = 0.0;
+  }
+}
+
+const prismaticInstead = 'use b2PrismaticJointDef, which also locks the rotation';
+
+/** What a b2LineJointDef must leave off to be a wheel joint (see b2LineJointDef). */
+function checkLineJointDef(def: b2LineJointDef): void {
+  const method = 'b2World.CreateJoint';
+  if (def.enableLimit) {
+    throw new b2ArgumentError(
+      method,
+      'def.enableLimit',
+      "must be false for a b2LineJointDef: Box2D 2.2's wheel joint, which the line joint became, has no translation " +
+        `limits (${prismaticInstead})`,
+    );
+  }
+  if (def.enableMotor) {
+    throw new b2ArgumentError(
+      method,
+      'def.enableMotor',
+      "must be false for a b2LineJointDef: 2.1a's line motor pushes along the axis, Box2D 2.2's wheel joint motor turns bodyB " +
+        `(for a driven wheel use b2WheelJointDef with maxMotorTorque; for a linear motor ${prismaticInstead})`,
+    );
+  }
+  b2CheckFinite(method, 'def.lowerTranslation', def.lowerTranslation);
+  b2CheckFinite(method, 'def.upperTranslation', def.upperTranslation);
+  b2CheckNonNegative(method, 'def.maxMotorForce', def.maxMotorForce);
+}
+
+/**
+ * The joint a b2LineJointDef makes: a wheel joint (GetType() is e_wheelJoint, which 2.1a's
+ * e_lineJoint names here) with 2.1a's line joint calls. Limits and the linear motor can be set
+ * but not enabled, as in the definition.
+ */
+export class b2LineJoint extends b2WheelJoint {
+  m_lowerTranslation: number;
+  m_upperTranslation: number;
+  m_maxMotorForce: number;
+
+  constructor(def: b2LineJointDef) {
+    super(def);
+    this.m_lowerTranslation = def.lowerTranslation;
+    this.m_upperTranslation = def.upperTranslation;
+    this.m_maxMotorForce = def.maxMotorForce;
+  }
+
+  /**
+   * 2.1a: the speed along the axis (the wheel joint's GetJointSpeed is bodyB's rotation speed).
+   * The prismatic joint's speed is the same quantity over the same anchors and axis fields.
+   */
+  override GetJointSpeed(): number {
+    return b2PrismaticJoint.prototype.GetJointSpeed.call(this as unknown as b2PrismaticJoint);
+  }
+
+  /** 2.1a: the limits are never enabled (see b2LineJointDef). */
+  IsLimitEnabled(): boolean {
+    return false;
+  }
+
+  /** 2.1a: enabling the limits throws, the wheel joint has none; disabling them does nothing. */
+  EnableLimit(flag: boolean): void {
+    b2CheckJointAlive(this, 'b2LineJoint.EnableLimit');
+    if (flag) {
+      throw new b2ArgumentError(
+        'b2LineJoint.EnableLimit',
+        'flag',
+        `must be false: Box2D 2.2's wheel joint, which the line joint became, has no translation limits (${prismaticInstead})`,
+      );
+    }
+  }
+
+  /** 2.1a: the lower translation limit, kept though it cannot be enabled. */
+  GetLowerLimit(): number {
+    return this.m_lowerTranslation;
+  }
+
+  /** 2.1a: the upper translation limit, kept though it cannot be enabled. */
+  GetUpperLimit(): number {
+    return this.m_upperTranslation;
+  }
+
+  /** 2.1a: set the translation limits (kept; they cannot be enabled). */
+  SetLimits(lower: number, upper: number): void {
+    b2CheckJointAlive(this, 'b2LineJoint.SetLimits');
+    b2CheckLimits('b2LineJoint.SetLimits', 'lower', 'upper', lower, upper);
+    this.m_lowerTranslation = lower;
+    this.m_upperTranslation = upper;
+  }
+
+  /** 2.1a: enabling the linear motor throws (see b2LineJointDef); disabling it does nothing. */
+  override EnableMotor(flag: boolean): void {
+    b2CheckJointAlive(this, 'b2LineJoint.EnableMotor');
+    if (flag) {
+      throw new b2ArgumentError(
+        'b2LineJoint.EnableMotor',
+        'flag',
+        "must be false: 2.1a's line motor pushes along the axis, and Box2D 2.2's wheel joint, which the line joint became, " +
+          `has a motor that turns bodyB (for a linear motor ${prismaticInstead})`,
+      );
+    }
+  }
+
+  /** 2.1a: set the linear motor's maximum force (kept; the motor cannot be enabled). */
+  SetMaxMotorForce(force: number): void {
+    b2CheckJointAlive(this, 'b2LineJoint.SetMaxMotorForce');
+    b2CheckNonNegative('b2LineJoint.SetMaxMotorForce', 'force', force);
+    this.m_maxMotorForce = force;
+  }
+
+  /** 2.1a: the linear motor's maximum force. */
+  GetMaxMotorForce(): number {
+    return this.m_maxMotorForce;
+  }
+}
+
+// The world makes the line joint itself; b2World.CreateJoint has checked the wheel joint's rules.
+wrapMethod(b2JointFactory, 'Create', (create) => (def: b2JointDef) => {
+  if (!(def instanceof b2LineJointDef)) return create(def);
+  checkLineJointDef(def);
+  return new b2LineJoint(def);
+});
 
 for (const joint of [
   b2DistanceJoint,

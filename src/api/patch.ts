@@ -84,7 +84,7 @@ export function defineRemovedProperty(target: object, name: string, call: string
   });
 }
 
-/** A class (2.1a's b2LineJoint, the controllers...) whose constructor throws removedError. */
+/** A class (2.1a's controllers, b2EdgeChainDef) whose constructor throws removedError. */
 export function removedClass(name: string, instead: string): new (...args: unknown[]) => never {
   const cls = class {
     constructor() {

@@ -235,9 +235,6 @@ describe('Box2DWeb calls that Box2D 2.2 removed', () => {
   });
 
   const cases: [string, string, RegExp][] = [
-    ['new Box2D.Dynamics.Joints.b2LineJointDef()', 'new b2LineJointDef()', /b2WheelJointDef/],
-    ['new Box2D.Dynamics.Joints.b2LineJoint()', 'new b2LineJoint()', /b2PrismaticJointDef/],
-    ['Box2D.Dynamics.Joints.b2Joint.e_lineJoint', 'b2Joint.e_lineJoint', /b2WheelJointDef/],
     ['world.SetBroadPhase({})', 'b2World.SetBroadPhase', /dynamic-tree broad phase/],
     ['world.AddController({})', 'b2World.AddController', /ApplyForce/],
     ['world.CreateController({})', 'b2World.CreateController', /ApplyForce/],

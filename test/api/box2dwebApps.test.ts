@@ -302,6 +302,184 @@ describe('SetAsEdge under a circle', () => {
   });
 });
 
+describe('b2LineJointDef', () => {
+  /**
+   * A two-wheeled car as iforce2d's Box2DWeb R.U.B.E. loader builds a wheel joint: a zero-length
+   * distance joint for the spring, then a b2LineJointDef (limits and motor off) for the axis.
+   * The wheels are driven by setting their spin, as that loader's demo does.
+   */
+  function rubeCar(Box2D: Lib) {
+    const { b2Vec2 } = Box2D.Common.Math;
+    const { b2World, b2BodyDef, b2Body, b2FixtureDef } = Box2D.Dynamics;
+    const { b2PolygonShape, b2CircleShape } = Box2D.Collision.Shapes;
+    const { b2DistanceJointDef, b2LineJointDef } = Box2D.Dynamics.Joints;
+    const world = new b2World(new b2Vec2(0, -10), true);
+    const fd = new b2FixtureDef();
+    fd.friction = 0.9;
+    fd.density = 1;
+    fd.shape = new b2PolygonShape();
+    fd.shape.SetAsBox(50, 0.5);
+    const gd = new b2BodyDef();
+    gd.position.Set(0, -0.5);
+    world.CreateBody(gd).CreateFixture(fd);
+    const bd = new b2BodyDef();
+    bd.type = b2Body.b2_dynamicBody;
+    bd.position.Set(0, 1.5);
+    const chassis = world.CreateBody(bd);
+    fd.shape = new b2PolygonShape();
+    fd.shape.SetAsBox(1.5, 0.25);
+    chassis.CreateFixture(fd);
+    const wheels = [];
+    const lines = [];
+    for (const x of [-1, 1]) {
+      bd.position.Set(x, 0.6);
+      const wheel = world.CreateBody(bd);
+      fd.shape = new b2CircleShape(0.4);
+      wheel.CreateFixture(fd);
+      wheels.push(wheel);
+      const spring = new b2DistanceJointDef();
+      spring.bodyA = chassis;
+      spring.bodyB = wheel;
+      spring.localAnchorA.SetV({ x, y: -0.9 });
+      spring.length = 0;
+      spring.frequencyHz = 4;
+      spring.dampingRatio = 0.7;
+      world.CreateJoint(spring);
+      const line = new b2LineJointDef();
+      line.bodyA = chassis;
+      line.bodyB = wheel;
+      line.localAnchorA.SetV({ x, y: -0.9 });
+      line.localAxisA.SetV({ x: 0, y: 1 });
+      lines.push(world.CreateJoint(line));
+    }
+    for (let i = 0; i < 180; i++) {
+      for (const wheel of wheels) wheel.SetAngularVelocity(-10);
+      world.Step(1 / 60, 8, 3);
+      world.ClearForces();
+    }
+    return {
+      world,
+      lines,
+      x: chassis.GetPosition().x,
+      y: chassis.GetPosition().y,
+      angle: chassis.GetAngle(),
+      wheelY: wheels[0].GetPosition().y,
+      translation: lines[0].GetJointTranslation(),
+      jointCount: world.GetJointCount(),
+    };
+  }
+
+  it("builds a R.U.B.E. loader's wheel joint, and the car drives as in 2.1a", () => {
+    const r = both(rubeCar);
+    expect(r.webphysics.jointCount).toBe(4);
+    // Three seconds at 10 rad/s on wheels of radius 0.4: about 10.7 m in both.
+    expect(r.webphysics.x).toBeGreaterThan(10);
+    expect(Math.abs(r.webphysics.x - r.box2dweb.x)).toBeLessThan(0.1);
+    for (const key of ['y', 'angle', 'wheelY', 'translation'] as const) {
+      expect(Math.abs(r.webphysics[key] - r.box2dweb[key])).toBeLessThan(0.01);
+    }
+  });
+
+  it('makes a wheel joint without a spring, with the line joint calls of 2.1a', () => {
+    const { world, lines } = rubeCar(webphysics);
+    const line = lines[0];
+    const { b2Joint, b2WheelJoint, b2LineJoint } = webphysics.Dynamics.Joints;
+    expect(line).toBeInstanceOf(b2WheelJoint);
+    expect(line).toBeInstanceOf(b2LineJoint);
+    expect(line.GetType()).toBe(b2Joint.e_lineJoint);
+    expect(line.GetType()).toBe(b2Joint.e_wheelJoint);
+    expect(line.GetSpringFrequencyHz()).toBe(0);
+    expect([line.IsLimitEnabled(), line.IsMotorEnabled()]).toEqual([false, false]);
+    line.SetLimits(-0.5, 0.25);
+    line.SetMaxMotorForce(40);
+    expect([line.GetLowerLimit(), line.GetUpperLimit(), line.GetMaxMotorForce()]).toEqual([-0.5, 0.25, 40]);
+    line.EnableLimit(false);
+    line.EnableMotor(false);
+
+    // GetJointSpeed is the speed along the axis, as 2.1a's: the wheel rises at 1 m/s.
+    const chassis = line.GetBodyA();
+    const wheel = line.GetBodyB();
+    chassis.SetLinearVelocity(new wp.b2Vec2(0, 0));
+    chassis.SetAngularVelocity(0);
+    wheel.SetLinearVelocity(new wp.b2Vec2(0, 1));
+    wheel.SetAngularVelocity(3);
+    expect(line.GetJointSpeed()).toBeCloseTo(Math.cos(chassis.GetAngle()), 9);
+    world.Step(1 / 60, 8, 3);
+  });
+
+  it('refuses what a wheel joint cannot do, naming the field, and leaves the world as it was', () => {
+    const { world, lines } = rubeCar(webphysics);
+    const line = lines[0];
+    const { b2LineJointDef } = webphysics.Dynamics.Joints;
+    const def = new b2LineJointDef();
+    def.Initialize(line.GetBodyA(), line.GetBodyB(), new wp.b2Vec2(0, 0), new wp.b2Vec2(1, 0));
+    def.enableLimit = true;
+    const limitError = thrown(() => world.CreateJoint(def));
+    expect(limitError).toBeInstanceOf(wp.b2ArgumentError);
+    expect(limitError.message).toMatch(/^b2World\.CreateJoint: def\.enableLimit must be false for a b2LineJointDef: .*no translation limits .*b2PrismaticJointDef/);
+    def.enableLimit = false;
+    def.enableMotor = true;
+    expect(thrown(() => world.CreateJoint(def)).message).toMatch(
+      /^b2World\.CreateJoint: def\.enableMotor must be false for a b2LineJointDef: .*turns bodyB .*maxMotorTorque.*b2PrismaticJointDef/,
+    );
+    expect(world.GetJointCount()).toBe(4);
+    expect(thrown(() => line.EnableLimit(true)).message).toMatch(/^b2LineJoint\.EnableLimit: flag must be false: .*no translation limits/);
+    expect(thrown(() => line.EnableMotor(true)).message).toMatch(/^b2LineJoint\.EnableMotor: flag must be false: .*turns bodyB/);
+    expect(thrown(() => line.SetLimits(1, 0)).message).toBe('b2LineJoint.SetLimits: lower must not exceed upper (1 > 0)');
+    expect([line.IsLimitEnabled(), line.IsMotorEnabled()]).toEqual([false, false]);
+    def.enableMotor = false;
+    expect(world.CreateJoint(def).GetType()).toBe(wp.b2JointType.e_wheelJoint);
+    world.Step(1 / 60, 8, 3);
+  });
+});
+
+describe('Box2D.Collision.b2Segment', () => {
+  /** Random segments against each other and clipped to boxes, with 2.1a's calls. */
+  function segmentWork(Box2D: Lib) {
+    const { b2Vec2 } = Box2D.Common.Math;
+    const { b2Segment, b2AABB } = Box2D.Collision;
+    let seed = 12345;
+    const random = () => {
+      seed = (seed * 1103515245 + 12345) % 2147483648;
+      return (seed / 2147483648) * 20 - 10;
+    };
+    const results: unknown[] = [];
+    for (let i = 0; i < 500; i++) {
+      const a = new b2Segment();
+      a.p1.Set(random(), random());
+      a.p2.Set(random(), random());
+      const b = new b2Segment();
+      b.p1.Set(random(), random());
+      b.p2.Set(random(), random());
+      const lambda = [-1];
+      const normal = new b2Vec2(0, 0);
+      const hit = a.TestSegment(lambda, normal, b, 1 + (i % 3) * 0.5);
+      results.push([hit, lambda[0], normal.x, normal.y]);
+      const box = new b2AABB();
+      box.lowerBound.Set(-12, -11);
+      box.upperBound.Set(13, 12);
+      const extended = i % 3 === 0 ? 'Extend' : i % 3 === 1 ? 'ExtendForward' : 'ExtendBackward';
+      a[extended](box);
+      results.push([a.p1.x, a.p1.y, a.p2.x, a.p2.y]);
+    }
+    return results;
+  }
+
+  it("TestSegment, Extend, ExtendForward and ExtendBackward give 2.1a's results to the bit", () => {
+    const r = both(segmentWork);
+    expect(r.webphysics).toEqual(r.box2dweb);
+    expect(r.webphysics.filter((x) => Array.isArray(x) && x[0] === true).length).toBeGreaterThan(20);
+  });
+
+  it('rejects a lambda that is not an array, naming it', () => {
+    const segment = new wp.b2Segment();
+    segment.p2.Set(1, 0);
+    const error = thrown(() => segment.TestSegment(null as unknown as number[], new wp.b2Vec2(), segment, 1));
+    expect(error).toBeInstanceOf(wp.b2ArgumentError);
+    expect(error.message).toBe('b2Segment.TestSegment: lambda must be an array (the fraction goes to lambda[0]), got null');
+  });
+});
+
 /** A canvas 2D context that records its calls, as [name, ...arguments]. */
 class RecordingContext {
   readonly canvas = { width: 600, height: 400 };

@@ -486,7 +486,7 @@ describe('Box2D.Dynamics', () => {
     expect(() => (world as any).SetBroadPhase(null)).toThrow(
       'b2World.SetBroadPhase is not available: Box2D 2.2 removed it. The world always uses its dynamic-tree broad phase (b2BroadPhase); remove the call.',
     );
-    expect(() => new wp.b2LineJointDef()).toThrow(/new b2LineJointDef\(\) is not available/);
+    expect(() => new wp.b2EdgeChainDef()).toThrow(/new b2EdgeChainDef\(\) is not available/);
     expect(() => new Box2D.Dynamics.Controllers.b2ConstantForceController()).toThrow(/no controllers/);
   });
 });
