@@ -21,6 +21,8 @@ export type {
   b2dJsonCustomProperty,
   b2dJsonItem,
   b2dJsonObject,
+  b2dJsonReadOptions,
+  b2dJsonSkippedItem,
   b2dJsonStepSettings,
   b2dJsonValue,
 } from './b2dJsonScene';

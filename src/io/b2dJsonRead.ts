@@ -13,6 +13,11 @@
  * fresh, so on error nothing reaches a world the caller holds. A `webphysicsState` member (the
  * solver-state extension written by b2dJsonWrite(world, { solverState: true }), see b2dJsonState)
  * is applied last, so the world continues exactly where the written one was.
+ *
+ * With `{ skipUnknown: true }` the reader leaves out, instead of rejecting the document, what it
+ * cannot build, as iforce2d's own loaders do: joints of a type Box2D 2.2.1 does not have (a
+ * Box2D 2.3 motor joint...), fixtures with no shape it knows, and gear joints coupling a joint
+ * left out. Each is listed in the scene's `skipped`, with its JSON path and the reason.
  */
 
 import { b2ArgumentError } from '../common/b2ArgumentError';
@@ -51,6 +56,7 @@ import {
   b2dJsonSealBody,
 } from './b2dJsonRecipes';
 import { b2dJsonError, b2dJsonImage, b2dJsonScene, b2dJson_defaultStepSettings } from './b2dJsonScene';
+import type { b2dJsonReadOptions } from './b2dJsonScene';
 import { b2dJsonReadState, b2dJson_stateKey } from './b2dJsonState';
 import type { b2dJsonColor, b2dJsonCustomProperty, b2dJsonItem, b2dJsonObject, b2dJsonValue } from './b2dJsonScene';
 
@@ -318,11 +324,12 @@ function readPolygon(o: b2dJsonObject, path: string): { shape: b2Shape; box: b2d
   return { shape: polygon, box: null };
 }
 
+const kNoShape = `no shape: expected one of ${kShapeKeys.join(', ')}`;
+
 function readShape(fixture: b2dJsonObject, path: string): { shape: b2Shape; box: b2dJsonBoxRecipe | null } {
   const present = kShapeKeys.filter((k) => member(fixture, k) !== undefined);
   if (present.length !== 1) {
-    const none = `no shape: expected one of ${kShapeKeys.join(', ')}`;
-    fail(path, present.length === 0 ? none : `more than one shape: ${present.join(', ')}`);
+    fail(path, present.length === 0 ? kNoShape : `more than one shape: ${present.join(', ')}`);
   }
   const key = present[0];
   const p = keyPath(path, key);
@@ -375,8 +382,27 @@ function readShape(fixture: b2dJsonObject, path: string): { shape: b2Shape; box:
 
 // Bodies and fixtures
 
-function readFixture(scene: b2dJsonScene, body: b2Body, value: unknown, path: string): void {
+/** The reader's state beyond the scene: its options, and the joints by file index (null: skipped). */
+interface Reading {
+  readonly scene: b2dJsonScene;
+  readonly skipUnknown: boolean;
+  readonly jointsInFile: (b2Joint | null)[];
+}
+
+/** Leave out an item the reader cannot build, when the options allow it; reject the document otherwise. */
+function skip(reading: Reading, path: string, reason: string): null {
+  if (!reading.skipUnknown) fail(path, reason);
+  reading.scene.skipped.push({ path, reason });
+  return null;
+}
+
+function readFixture(reading: Reading, body: b2Body, value: unknown, path: string): void {
+  const scene = reading.scene;
   const o = asObject(value, path);
+  if (kShapeKeys.every((k) => member(o, k) === undefined)) {
+    skip(reading, path, kNoShape);
+    return;
+  }
   const def = new b2FixtureDef();
   def.friction = optNonNegative(o, 'friction', path, 0);
   def.restitution = optNonNegative(o, 'restitution', path, 0);
@@ -393,7 +419,8 @@ function readFixture(scene: b2dJsonScene, body: b2Body, value: unknown, path: st
   readMetadata(scene, fixture, o, path);
 }
 
-function readBody(scene: b2dJsonScene, value: unknown, path: string): b2Body {
+function readBody(reading: Reading, value: unknown, path: string): b2Body {
+  const scene = reading.scene;
   const o = asObject(value, path);
   const def = new b2BodyDef();
   def.type = optInteger(o, 'type', path, 0, 0, 2);
@@ -422,7 +449,7 @@ function readBody(scene: b2dJsonScene, value: unknown, path: string): b2Body {
   const body = guard(path, () => scene.world.CreateBody(def));
   const fixturesPath = keyPath(path, 'fixture');
   for (let i = 0; i < fixtures.length; ++i) {
-    readFixture(scene, body, fixtures[i], indexPath(fixturesPath, i));
+    readFixture(reading, body, fixtures[i], indexPath(fixturesPath, i));
   }
   if (massData !== null) {
     const data = massData;
@@ -446,12 +473,16 @@ function bodyIndex(o: b2dJsonObject, key: string, path: string, bodies: readonly
   return bodies[asInteger(value, p, 0, bodies.length - 1)];
 }
 
-function gearJointIndex(o: b2dJsonObject, key: string, path: string, joints: readonly b2Joint[]): b2Joint {
+/** The joint a gear couples, by its index in the file; null when that joint was skipped. */
+function gearJointIndex(reading: Reading, o: b2dJsonObject, key: string, path: string): b2Joint | null {
+  const joints = reading.jointsInFile;
   const p = keyPath(path, key);
   const value = member(o, key);
   if (value === undefined) fail(p, 'required field is missing');
   if (joints.length === 0) fail(p, 'a gear joint must come after the joints it couples, and none precede it');
-  const joint = joints[asInteger(value, p, 0, joints.length - 1)];
+  const index = asInteger(value, p, 0, joints.length - 1);
+  const joint = joints[index];
+  if (joint === null) return skip(reading, path, `${p} is joint[${index}], which was skipped`);
   const type = joint.m_type;
   if (type !== b2JointType.e_revoluteJoint && type !== b2JointType.e_prismaticJoint) {
     fail(p, `a gear joint couples revolute or prismatic joints, joint[${value as number}] is a ${b2JointType[type]}`);
@@ -459,7 +490,8 @@ function gearJointIndex(o: b2dJsonObject, key: string, path: string, joints: rea
   return joint;
 }
 
-function readJoint(scene: b2dJsonScene, value: unknown, path: string): b2Joint {
+function readJoint(reading: Reading, value: unknown, path: string): b2Joint | null {
+  const scene = reading.scene;
   const o = asObject(value, path);
   const typePath = keyPath(path, 'type');
   const type = member(o, 'type');
@@ -539,8 +571,12 @@ function readJoint(scene: b2dJsonScene, value: unknown, path: string): b2Joint {
     }
     case 'gear': {
       const d = new b2GearJointDef();
-      d.joint1 = gearJointIndex(o, 'joint1', path, scene.joints);
-      d.joint2 = gearJointIndex(o, 'joint2', path, scene.joints);
+      const joint1 = gearJointIndex(reading, o, 'joint1', path);
+      if (joint1 === null) return null;
+      const joint2 = gearJointIndex(reading, o, 'joint2', path);
+      if (joint2 === null) return null;
+      d.joint1 = joint1;
+      d.joint2 = joint2;
       d.ratio = optNumber(o, 'ratio', path, 0);
       def = d;
       break;
@@ -587,9 +623,9 @@ function readJoint(scene: b2dJsonScene, value: unknown, path: string): b2Joint {
       break;
     }
     case 'motor':
-      return fail(typePath, 'motor joints are not part of Box2D 2.2.1 (they arrived in 2.3)');
+      return skip(reading, typePath, 'motor joints are not part of Box2D 2.2.1 (they arrived in 2.3)');
     default:
-      return fail(typePath, `unknown joint type ${JSON.stringify(type)} (expected ${kJointTypes})`);
+      return skip(reading, typePath, `unknown joint type ${JSON.stringify(type)} (expected ${kJointTypes})`);
   }
   const bodyA = bodyIndex(o, 'bodyA', path, scene.bodies);
   const bodyB = bodyIndex(o, 'bodyB', path, scene.bodies);
@@ -626,9 +662,10 @@ function readImage(scene: b2dJsonScene, value: unknown, path: string): b2dJsonIm
 
 /**
  * Build a new world from a b2dJson document, given as JSON text or as the parsed value.
- * Throws b2dJsonError (path and rule) on malformed input.
+ * Throws b2dJsonError (path and rule) on malformed input; `options.skipUnknown` leaves out what
+ * this reader does not know instead (see the file header), listing it in the scene's `skipped`.
  */
-export function b2dJsonRead(input: unknown): b2dJsonScene {
+export function b2dJsonRead(input: unknown, options: Readonly<b2dJsonReadOptions> = {}): b2dJsonScene {
   let document = input;
   if (typeof input === 'string') {
     try {
@@ -660,18 +697,27 @@ export function b2dJsonRead(input: unknown): b2dJsonScene {
   world.SetAutoClearForces(optBool(root, 'autoClearForces', '', false));
 
   const scene = new b2dJsonScene(world, stepSettings);
+  const reading: Reading = { scene, skipUnknown: options.skipUnknown === true, jointsInFile: [] };
   readMetadata(scene, world, root, '');
   for (let i = 0; i < bodies.length; ++i) {
-    scene.bodies.push(readBody(scene, bodies[i], indexPath('body', i)));
+    scene.bodies.push(readBody(reading, bodies[i], indexPath('body', i)));
   }
   for (let i = 0; i < joints.length; ++i) {
-    scene.joints.push(readJoint(scene, joints[i], indexPath('joint', i)));
+    const joint = readJoint(reading, joints[i], indexPath('joint', i));
+    reading.jointsInFile.push(joint);
+    if (joint !== null) scene.joints.push(joint);
   }
   for (let i = 0; i < images.length; ++i) {
     scene.images.push(readImage(scene, images[i], indexPath('image', i)));
   }
   const state = member(root, b2dJson_stateKey);
-  if (state !== undefined) b2dJsonReadState(world, scene.bodies, scene.joints, state);
+  if (state !== undefined) {
+    // The state lists every body, fixture and joint of the file, in order.
+    if (scene.skipped.length > 0) {
+      fail(b2dJson_stateKey, `cannot be applied to a scene with skipped items (${scene.skipped[0].path}...)`);
+    }
+    b2dJsonReadState(world, scene.bodies, scene.joints, state);
+  }
   for (const body of scene.bodies) b2dJsonSealBody(body);
   return scene;
 }

@@ -52,6 +52,22 @@ export const b2dJson_defaultStepSettings: Readonly<b2dJsonStepSettings> = Object
   positionIterations: 3,
 });
 
+/** Options of b2dJsonRead. */
+export interface b2dJsonReadOptions {
+  /**
+   * Leave out what the reader cannot build (joints of an unknown type such as Box2D 2.3's motor
+   * joint, fixtures with no known shape, gear joints coupling a joint left out) instead of
+   * rejecting the whole document, as iforce2d's loaders do. Each lands in the scene's `skipped`.
+   */
+  skipUnknown?: boolean;
+}
+
+/** An item b2dJsonRead left out (options.skipUnknown): its JSON path and why. */
+export interface b2dJsonSkippedItem {
+  readonly path: string;
+  readonly reason: string;
+}
+
 /** RGBA, each 0..255. */
 export type b2dJsonColor = [r: number, g: number, b: number, a: number];
 
@@ -113,6 +129,8 @@ export class b2dJsonScene {
   readonly bodies: b2Body[] = [];
   readonly joints: b2Joint[] = [];
   readonly images: b2dJsonImage[] = [];
+  /** What b2dJsonRead left out with options.skipUnknown, in file order (empty otherwise). */
+  readonly skipped: b2dJsonSkippedItem[] = [];
   readonly stepSettings: b2dJsonStepSettings;
 
   private readonly m_names = new Map<b2dJsonItem, string>();
