@@ -8,6 +8,7 @@
  *   world.Step(1 / 60, 8, 3);           // submitted; world.StepAsync() also waits and reads back
  *   await world.Synchronize();          // positions, velocities (fetched as bodies are read), contact events
  *   await backend.readTransforms(out);  // or every body's transform in bulk, for a renderer
+ *   await new GpuRenderer(backend, canvas.getContext('webgpu')).draw(); // or draw from the GPU's buffers, no read-back
  *   await world.SetBackend(null);       // back to the JavaScript engine, contacts and impulses kept
  *
  * Advanced (marked @internal: for tools, benchmarks and tests; their API may change): the
@@ -19,6 +20,8 @@
 // The documented path.
 export { WebGPUBackend } from './backend/backend';
 export type { WebGPUBackendOptions } from './backend/backend';
+export { GpuRenderer } from './render/render';
+export type { GpuCamera, GpuRendererOptions, GpuFrameStats } from './render/render';
 export {
   requestGpu,
   GpuContext,

@@ -77,6 +77,11 @@ const PROXY_JOINTED: u32 = 0x40u;      // the body has a joint with collideConne
 // implementations may assume finite floats.
 const EMPTY_AABB: vec4<f32> = vec4<f32>(3e38, 3e38, -3e38, -3e38);
 
+// The b2BodyType in a bodyFlags word (bits 16-17).
+fn body_type(flags: u32) -> u32 {
+  return (flags >> 16u) & 3u;
+}
+
 fn group_index(wid: vec3<u32>, nwg: vec3<u32>) -> u32 {
   return wid.x + wid.y * nwg.x;
 }

@@ -54,10 +54,6 @@ const CB_TYPE_SHIFT: u32 = 4u;                 // bits 4-5: b2Manifold::Type
 const CB_DYNAMIC_A: u32 = 0x100u;
 const CB_DYNAMIC_B: u32 = 0x200u;
 
-fn body_type(flags: u32) -> u32 {
-  return (flags >> 16u) & 3u;
-}
-
 // b2Cross(a, b) for vectors, b2Cross(v, s) and b2Cross(s, v).
 fn cross2(a: vec2<f32>, b: vec2<f32>) -> f32 {
   return a.x * b.y - a.y * b.x;

@@ -349,8 +349,8 @@ fn candidates(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nw
   }
   let flagsA = bodyFlags[refA.z];
   let flagsB = bodyFlags[refB.z];
-  let typeA = (flagsA >> 16u) & 3u;
-  let typeB = (flagsB >> 16u) & 3u;
+  let typeA = body_type(flagsA);
+  let typeB = body_type(flagsB);
   if (typeA == STATIC_BODY && typeB == STATIC_BODY) {
     return;
   }

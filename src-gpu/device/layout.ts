@@ -139,6 +139,12 @@ export const USAGE = {
   QUERY_RESOLVE: 0x0200,
 } as const;
 
+/** GPUShaderStage, without relying on the WebGPU globals being installed. */
+export const SHADER_STAGE = { VERTEX: 0x1, FRAGMENT: 0x2, COMPUTE: 0x4 } as const;
+
+/** GPUTextureUsage, likewise. */
+export const TEXTURE_USAGE = { COPY_SRC: 0x01, COPY_DST: 0x02, TEXTURE_BINDING: 0x04, STORAGE_BINDING: 0x08, RENDER_ATTACHMENT: 0x10 } as const;
+
 /** GPUMapMode.READ. */
 export const MAP_READ = 0x0001;
 

@@ -6,6 +6,7 @@
  * parameters, constants and helpers) to the solver stages, and shaders/shared/solveJointsCommon.wgsl (the
  * joints' share of the colour passes) to the stages that solve joints; shaders/shared/distance.wgsl (GJK)
  * to the sensor test and to continuous collision, which also takes manifold.wgsl's shape helpers.
+ * The renderer's shader (shaders/render/render.wgsl) takes common.wgsl only.
  */
 
 import { ENGINE_WGSL } from './engineWgsl';
@@ -39,6 +40,7 @@ import solveJoints from '../../shaders/solver/solveJoints.wgsl';
 import timeOfImpact from '../../shaders/solver/timeOfImpact.wgsl';
 import solveJointsCommon from '../../shaders/shared/solveJointsCommon.wgsl';
 import islands from '../../shaders/solver/islands.wgsl';
+import render from '../../shaders/render/render.wgsl';
 
 const common = `${ENGINE_WGSL}\n${commonWgsl}`;
 
@@ -69,6 +71,7 @@ export const SHADERS = {
   solveJoints: `${common}\n${solverCommon}\n${solveJointsCommon}\n${solveJoints}`,
   islands: `${common}\n${solverCommon}\n${islands}`,
   timeOfImpact: `${common}\n${manifold}\n${distance}\n${timeOfImpact}`,
+  render: `${common}\n${render}`,
 } as const;
 
 export type ShaderName = Exclude<keyof typeof SHADERS, 'common'>;

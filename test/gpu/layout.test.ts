@@ -85,6 +85,7 @@ const STAGES = [
   'integratePositions',
   'solvePosition',
   'solveJoints',
+  'render',
 ];
 
 it('declares the state words, indirect offsets and flags the host uses', () => {

@@ -1,0 +1,233 @@
+// render.wgsl: draws the world straight from the solver's buffers (GpuRenderer): every live
+// proxy's shape filled (`fill_vertex`: circles and polygons) and outlined (`outline_vertex`:
+// circles with their radius line, polygons, edges and chain children), and every live joint as
+// b2World::DrawJoint draws it (`joint_vertex`), in b2World::DrawDebugData's colours or the
+// application's colour per body.
+//
+// In:  view (camera cell and offset, clip units per metre, cell size, colour mode), proxyRef, fixtureShape, shapePool, bodyXf, bodyCell, bodyFlags, bodyAwake,
+//      bodyColour (rgba8 per body slot, read when view.colourMode is COLOUR_BODY); joints,
+//      jointParams, and the body transforms for the joints' lines.
+// Out: the colour attachment only.
+// Invariants: reads the world and never writes it, so a frame can be drawn between any two steps;
+//      an instance whose proxy or joint slot is dead, and a vertex beyond what its shape needs,
+//      is a degenerate primitive outside the clip volume.
+
+struct View {
+  cameraCell: vec2<i32>,
+  cameraOffset: vec2<f32>,
+  clipScale: vec2<f32>,
+  cellSize: f32,
+  colourMode: u32,
+}
+
+const COLOUR_STATE: u32 = 0u;
+const COLOUR_BODY: u32 = 1u;
+/** Segments of a circle's outline (its radius line is one more). */
+const CIRCLE_SEGMENTS: u32 = 16u;
+const BODY_LIVE: u32 = 0x80000000u;
+const JOINT_LIVE: u32 = 0x80000000u;
+const JOINT_PARAMS_VEC4: u32 = 5u;
+
+@group(0) @binding(0) var<uniform> view: View;
+@group(0) @binding(1) var<storage, read> bodyXf: array<vec4<f32>>;
+@group(0) @binding(2) var<storage, read> bodyCell: array<vec2<i32>>;
+@group(0) @binding(3) var<storage, read> bodyFlags: array<u32>;
+@group(0) @binding(4) var<storage, read> bodyAwake: array<u32>;
+@group(0) @binding(5) var<storage, read> bodyColour: array<u32>;
+@group(1) @binding(0) var<storage, read> proxyRef: array<vec4<u32>>;
+@group(1) @binding(1) var<storage, read> fixtureShape: array<vec4<u32>>;
+@group(1) @binding(2) var<storage, read> shapePool: array<vec2<f32>>;
+@group(2) @binding(0) var<storage, read> joints: array<vec4<u32>>;
+@group(2) @binding(1) var<storage, read> jointParams: array<vec4<f32>>;
+
+struct Varyings {
+  @builtin(position) position: vec4<f32>,
+  @location(0) colour: vec4<f32>,
+  // A circle's fill: the position in the circle's square, radius 1 (|local| > 1 is outside).
+  @location(1) local: vec2<f32>,
+  @location(2) @interpolate(flat) circle: u32,
+}
+
+fn hidden() -> Varyings {
+  var out: Varyings;
+  out.position = vec4<f32>(2.0, 2.0, 2.0, 1.0);
+  out.colour = vec4<f32>(0.0);
+  out.local = vec2<f32>(0.0);
+  out.circle = 0u;
+  return out;
+}
+
+// A world point given as a cell and an offset in it, in clip coordinates.
+fn to_clip(cell: vec2<i32>, offset: vec2<f32>) -> vec4<f32> {
+  let rel = vec2<f32>(cell - view.cameraCell) * view.cellSize + (offset - view.cameraOffset);
+  return vec4<f32>(rel * view.clipScale, 0.0, 1.0);
+}
+
+// A point in body `b`'s frame, in clip coordinates.
+fn body_point_clip(b: u32, p: vec2<f32>) -> vec4<f32> {
+  let xf = bodyXf[b];
+  let offset = vec2<f32>(xf.x + xf.z * p.x - xf.w * p.y, xf.y + xf.w * p.x + xf.z * p.y);
+  return to_clip(bodyCell[b], offset);
+}
+
+// b2World::DrawDebugData's colour of a body's shapes, or the application's.
+fn body_colour(b: u32) -> vec3<f32> {
+  // A body the application never coloured (a zero word: its alpha byte is 0) keeps its state's.
+  if (view.colourMode == COLOUR_BODY && bodyColour[b] != 0u) {
+    return unpack4x8unorm(bodyColour[b]).rgb;
+  }
+  let flags = bodyFlags[b];
+  if ((flags & BODY_ACTIVE) == 0u) {
+    return vec3<f32>(0.5, 0.5, 0.3);
+  }
+  let bodyType = body_type(flags);
+  if (bodyType == STATIC_BODY) {
+    return vec3<f32>(0.5, 0.9, 0.5);
+  }
+  if (bodyType != DYNAMIC_BODY) {
+    return vec3<f32>(0.5, 0.5, 0.9);
+  }
+  if (bodyAwake[b] == 0u) {
+    return vec3<f32>(0.6, 0.6, 0.6);
+  }
+  return vec3<f32>(0.9, 0.7, 0.7);
+}
+
+// The corners of a quad as two triangles, in [-1, 1]^2.
+fn quad_corner(i: u32) -> vec2<f32> {
+  let x = select(-1.0, 1.0, i == 1u || i == 2u || i == 4u);
+  let y = select(-1.0, 1.0, i == 2u || i == 4u || i == 5u);
+  return vec2<f32>(x, y);
+}
+
+// Circles as a quad (6 vertices, the fragment cuts the disc), polygons as a triangle fan
+// (3 (n - 2) vertices, at most 18): filled at half the colour, half transparent, as
+// b2Draw::DrawSolidPolygon and DrawSolidCircle fill.
+@vertex
+fn fill_vertex(@builtin(vertex_index) v: u32, @builtin(instance_index) proxy: u32) -> Varyings {
+  let proxyInfo = proxyRef[proxy];
+  if ((proxyInfo.w & PROXY_LIVE) == 0u) {
+    return hidden();
+  }
+  let shape = fixtureShape[proxyInfo.x];
+  let shapeType = shape.x & 0xfu;
+  let count = shape.x >> 8u;
+  var out: Varyings;
+  if (shapeType == SHAPE_CIRCLE) {
+    if (v >= 6u) {
+      return hidden();
+    }
+    let corner = quad_corner(v);
+    out.position = body_point_clip(proxyInfo.z, shapePool[shape.y] + corner * bitcast<f32>(shape.w));
+    out.local = corner;
+    out.circle = 1u;
+  } else if (shapeType == SHAPE_POLYGON) {
+    let triangle = v / 3u;
+    let k = v % 3u;
+    if (triangle + 2u >= count) {
+      return hidden();
+    }
+    out.position = body_point_clip(proxyInfo.z, shapePool[shape.y + select(triangle + k, 0u, k == 0u)]);
+    out.local = vec2<f32>(0.0);
+    out.circle = 0u;
+  } else {
+    return hidden();
+  }
+  out.colour = vec4<f32>(0.5 * body_colour(proxyInfo.z), 0.5);
+  return out;
+}
+
+// Line-list outlines: a polygon's n sides, a circle's CIRCLE_SEGMENTS sides and its radius line
+// along the body's x axis (b2Draw::DrawSolidCircle's axis), an edge or chain child's segment.
+@vertex
+fn outline_vertex(@builtin(vertex_index) v: u32, @builtin(instance_index) proxy: u32) -> Varyings {
+  let proxyInfo = proxyRef[proxy];
+  if ((proxyInfo.w & PROXY_LIVE) == 0u) {
+    return hidden();
+  }
+  let shape = fixtureShape[proxyInfo.x];
+  let shapeType = shape.x & 0xfu;
+  let count = shape.x >> 8u;
+  let side = v / 2u;
+  let end = v % 2u;
+  var p: vec2<f32>;
+  if (shapeType == SHAPE_CIRCLE) {
+    let centre = shapePool[shape.y];
+    let radius = bitcast<f32>(shape.w);
+    if (side < CIRCLE_SEGMENTS) {
+      let angle = 2.0 * PI * f32(side + end) / f32(CIRCLE_SEGMENTS);
+      p = centre + radius * vec2<f32>(cos(angle), sin(angle));
+    } else if (side == CIRCLE_SEGMENTS) {
+      p = centre + f32(end) * vec2<f32>(radius, 0.0);
+    } else {
+      return hidden();
+    }
+  } else if (shapeType == SHAPE_POLYGON) {
+    if (side >= count) {
+      return hidden();
+    }
+    p = shapePool[shape.y + (side + end) % count];
+  } else {
+    // An edge's vertices 1 and 2 come first in its record; a chain's child i is (v[i], v[i+1]).
+    if (side > 0u) {
+      return hidden();
+    }
+    p = shapePool[shape.y + select(0u, proxyInfo.y, shapeType == SHAPE_CHAIN) + end];
+  }
+  var out: Varyings;
+  out.position = body_point_clip(proxyInfo.z, p);
+  out.colour = vec4<f32>(body_colour(proxyInfo.z), 1.0);
+  out.local = vec2<f32>(0.0);
+  out.circle = 0u;
+  return out;
+}
+
+// b2World::DrawJoint: body A's origin to anchor A, anchor A to anchor B, body B's origin to
+// anchor B (two line-list vertices each); a distance joint its anchors only; a pulley its
+// anchors to their ground anchors and the ground anchors to each other; a mouse joint nothing.
+@vertex
+fn joint_vertex(@builtin(vertex_index) v: u32, @builtin(instance_index) j: u32) -> Varyings {
+  let joint = joints[j];
+  if ((joint.w & JOINT_LIVE) == 0u || joint.z == MOUSE_JOINT) {
+    return hidden();
+  }
+  let line = v / 2u;
+  let end = v % 2u;
+  let params = JOINT_PARAMS_VEC4 * j;
+  let anchors = jointParams[params];
+  let a = body_point_clip(joint.x, anchors.xy);
+  let b = body_point_clip(joint.y, anchors.zw);
+  var out: Varyings;
+  if (joint.z == DISTANCE_JOINT) {
+    if (line > 0u) {
+      return hidden();
+    }
+    out.position = select(a, b, end == 1u);
+  } else if (joint.z == PULLEY_JOINT) {
+    let offsets = jointParams[params + 2u];
+    let cells = bitcast<vec4<i32>>(jointParams[params + 3u]);
+    let groundA = to_clip(cells.xy, offsets.xy);
+    let groundB = to_clip(cells.zw, offsets.zw);
+    let lineStart = array<vec4<f32>, 3>(groundA, groundB, groundA);
+    let lineEnd = array<vec4<f32>, 3>(a, b, groundB);
+    out.position = select(lineStart[line], lineEnd[line], end == 1u);
+  } else {
+    let originA = to_clip(bodyCell[joint.x], bodyXf[joint.x].xy);
+    let originB = to_clip(bodyCell[joint.y], bodyXf[joint.y].xy);
+    let lineStart = array<vec4<f32>, 3>(originA, a, originB);
+    let lineEnd = array<vec4<f32>, 3>(a, b, b);
+    out.position = select(lineStart[line], lineEnd[line], end == 1u);
+  }
+  out.colour = vec4<f32>(0.5, 0.8, 0.8, 1.0);
+  out.local = vec2<f32>(0.0);
+  out.circle = 0u;
+  return out;
+}
+
+@fragment
+fn shade(in: Varyings) -> @location(0) vec4<f32> {
+  if (in.circle != 0u && dot(in.local, in.local) > 1.0) {
+    discard;
+  }
+  return in.colour;
+}
