@@ -23,6 +23,7 @@ import { b2PolygonShape } from '../collision/shapes/b2PolygonShape';
 import { b2Shape } from '../collision/shapes/b2Shape';
 import { b2ArgumentError, b2CheckObject, b2CheckVec2, b2DescribeNumber } from '../common/b2ArgumentError';
 import type { b2Transform } from '../common/b2Math';
+import { b2_maxPolygonVertices } from '../common/b2Settings';
 import type { b2Contact } from '../dynamics/contacts/b2Contact';
 import { b2EdgeAndCircleContact } from '../dynamics/contacts/b2EdgeAndCircleContact';
 import { b2Vec2 } from '../common/b2Math';
@@ -394,17 +395,40 @@ defineMethods(b2EdgeShape.prototype, {
 
 const b2Vec2_origin: Readonly<b2Vec2> = new b2Vec2(0.0, 0.0);
 
-/** 2.1a counts vertices up to vertexCount, where 0 (its default) means all of them. */
-function vertexCount(vertices: readonly unknown[], count: number | undefined): number {
-  return count === undefined || count === 0 ? vertices.length : count;
+/**
+ * 2.1a's SetAsArray: Set with vertexCount, where 0 (its default) means every vertex. 2.1a took any
+ * number of vertices; 2.2.1's polygons hold b2_maxPolygonVertices, and splitting the outline here
+ * would give the app several fixtures where it made one, so a longer outline is refused, saying how
+ * to split it.
+ */
+function setAsArray(
+  polygon: b2PolygonShape,
+  method: string,
+  vertices: readonly Readonly<b2Vec2>[],
+  count: number | undefined,
+): void {
+  if (!Array.isArray(vertices)) {
+    throw new b2ArgumentError(method, 'vertices', `must be an array of vectors, got ${b2DescribeNumber(vertices)}`);
+  }
+  const n = count === undefined || count === 0 ? vertices.length : count;
+  if (n > b2_maxPolygonVertices) {
+    throw new b2ArgumentError(
+      method,
+      'vertices',
+      `has ${n} vertices, and Box2D 2.2 polygons have at most b2_maxPolygonVertices = ${b2_maxPolygonVertices} ` +
+        `(Box2DWeb 2.1a took any number): split the outline into convex pieces of at most ${b2_maxPolygonVertices} ` +
+        'vertices and create a fixture for each',
+    );
+  }
+  polygon.Set(vertices, n);
 }
 
 defineMethods(b2PolygonShape.prototype, {
   SetAsArray(vertices, count) {
-    this.Set(vertices, vertexCount(vertices, count));
+    setAsArray(this, 'b2PolygonShape.SetAsArray', vertices, count);
   },
   SetAsVector(vertices, count) {
-    this.Set(vertices, vertexCount(vertices, count));
+    setAsArray(this, 'b2PolygonShape.SetAsVector', vertices, count);
   },
   SetAsOrientedBox(hx, hy, center, angle) {
     this.SetAsBox(hx, hy, center ?? b2Vec2_origin, angle ?? 0.0);
@@ -430,12 +454,12 @@ defineMethods(b2PolygonShape.prototype, {
 defineStatics(b2PolygonShape, {
   AsArray: (vertices: readonly Readonly<b2Vec2>[], count?: number) => {
     const polygon = new b2PolygonShape();
-    polygon.SetAsArray(vertices, count);
+    setAsArray(polygon, 'b2PolygonShape.AsArray', vertices, count);
     return polygon;
   },
   AsVector: (vertices: readonly Readonly<b2Vec2>[], count?: number) => {
     const polygon = new b2PolygonShape();
-    polygon.SetAsArray(vertices, count);
+    setAsArray(polygon, 'b2PolygonShape.AsVector', vertices, count);
     return polygon;
   },
   AsBox: (hx: number, hy: number) => new b2PolygonShape().SetAsBox(hx, hy),

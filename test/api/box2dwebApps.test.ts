@@ -480,6 +480,150 @@ describe('Box2D.Collision.b2Segment', () => {
   });
 });
 
+describe('polygons of more than b2_maxPolygonVertices', () => {
+  /** A regular polygon of n vertices, counter-clockwise, as plain {x, y} objects. */
+  const outline = (n: number) =>
+    Array.from({ length: n }, (_, i) => ({ x: Math.cos((2 * Math.PI * i) / n), y: Math.sin((2 * Math.PI * i) / n) }));
+
+  it('are refused, saying how to split them (2.1a took any number), and the shape is left as it was', () => {
+    const accepted = box2dweb.Collision.Shapes.b2PolygonShape.AsArray(outline(12), 12);
+    expect(accepted.GetVertexCount()).toBe(12);
+
+    const polygon = new wp.b2PolygonShape().SetAsBox(1, 2);
+    const error = thrown(() => polygon.SetAsArray(outline(12) as wp.b2Vec2[], 12));
+    expect(error).toBeInstanceOf(wp.b2ArgumentError);
+    expect(error.message).toBe(
+      'b2PolygonShape.SetAsArray: vertices has 12 vertices, and Box2D 2.2 polygons have at most b2_maxPolygonVertices = 8 ' +
+        '(Box2DWeb 2.1a took any number): split the outline into convex pieces of at most 8 vertices and create a fixture for each',
+    );
+    expect(polygon.m_vertexCount).toBe(4);
+    expect(polygon.m_vertices[2].y).toBe(2);
+    expect(thrown(() => wp.b2PolygonShape.AsVector(outline(9) as wp.b2Vec2[])).message).toMatch(
+      /^b2PolygonShape\.AsVector: vertices has 9 vertices/,
+    );
+    expect(thrown(() => polygon.SetAsVector(null as unknown as wp.b2Vec2[])).message).toBe(
+      'b2PolygonShape.SetAsVector: vertices must be an array of vectors, got null',
+    );
+    polygon.SetAsArray(outline(8) as wp.b2Vec2[]);
+    expect(polygon.m_vertexCount).toBe(8);
+  });
+});
+
+describe('2.1a habits that keep working', () => {
+  /** Boxes from plain {x, y} vertices, all from one reused body and fixture definition. */
+  function reusedDefinitions(Box2D: Lib) {
+    const { b2Vec2 } = Box2D.Common.Math;
+    const { b2World, b2BodyDef, b2Body, b2FixtureDef } = Box2D.Dynamics;
+    const { b2PolygonShape } = Box2D.Collision.Shapes;
+    const { b2DistanceJointDef } = Box2D.Dynamics.Joints;
+    const world = new b2World(new b2Vec2(0, 10), true);
+    const fd = new b2FixtureDef();
+    fd.density = 1;
+    fd.friction = 0.5;
+    fd.shape = new b2PolygonShape();
+    fd.shape.SetAsArray([{ x: -10, y: 0 }, { x: 10, y: 0 }, { x: 10, y: 1 }, { x: -10, y: 1 }], 4);
+    const bd = new b2BodyDef();
+    bd.position.Set(0, 10);
+    world.CreateBody(bd).CreateFixture(fd);
+    bd.type = b2Body.b2_dynamicBody;
+    fd.shape = new b2PolygonShape();
+    fd.shape.SetAsArray([{ x: -0.5, y: -0.5 }, { x: 0.5, y: -0.5 }, { x: 0.5, y: 0.5 }, { x: -0.5, y: 0.5 }]);
+    const boxes = [];
+    const jd = new b2DistanceJointDef();
+    for (let i = 0; i < 4; i++) {
+      bd.position.Set(-6 + 4 * i, 5);
+      const box = world.CreateBody(bd);
+      box.CreateFixture(fd);
+      if (boxes.length > 0) {
+        jd.Initialize(boxes[boxes.length - 1], box, boxes[boxes.length - 1].GetPosition(), box.GetPosition());
+        world.CreateJoint(jd);
+      }
+      boxes.push(box);
+    }
+    // A copy from GetDefinition, changed, makes a new body and leaves the original alone.
+    const copy = boxes[0].GetDefinition();
+    copy.position.x += 3;
+    copy.position.y -= 4;
+    const twin = world.CreateBody(copy);
+    twin.CreateFixture(fd);
+    // Velocities and radii written directly, as many apps do.
+    boxes[3].m_linearVelocity.x = 2;
+    for (let i = 0; i < 120; i++) {
+      world.Step(1 / 60, 8, 3);
+      world.ClearForces();
+    }
+    return {
+      boxes: boxes.map((b: Lib) => [b.GetPosition().x, b.GetPosition().y]),
+      twin: [twin.GetPosition().x, twin.GetPosition().y],
+      jointCount: world.GetJointCount(),
+    };
+  }
+
+  it('plain {x, y} vertices, one definition reused for many bodies and joints, GetDefinition copies, m_linearVelocity.x writes', () => {
+    const r = both(reusedDefinitions);
+    expect(r.webphysics.jointCount).toBe(3);
+    expect(r.box2dweb.jointCount).toBe(3);
+    // The boxes rest on the ground's top (y = 10) and the twin beside the first one.
+    for (const [x, y] of [...r.webphysics.boxes, r.webphysics.twin]) {
+      expect(y).toBeGreaterThan(9.4);
+      expect(y).toBeLessThan(9.51);
+      expect(x).toBeGreaterThan(-7);
+    }
+    r.webphysics.boxes.forEach(([x, y]: number[], i: number) => {
+      expect(Math.abs(x - r.box2dweb.boxes[i][0])).toBeLessThan(0.05);
+      expect(Math.abs(y - r.box2dweb.boxes[i][1])).toBeLessThan(0.02);
+    });
+    // The pushed box dragged the chain to the right.
+    expect(r.webphysics.boxes[3][0]).toBeGreaterThan(6.1);
+    expect(Math.abs(r.webphysics.twin[0] - r.box2dweb.twin[0])).toBeLessThan(0.05);
+  });
+
+  it("a radius written to the fixture's circle, m_radius, is the one that collides", () => {
+    const r = both((Box2D: Lib) => {
+      const { b2Vec2 } = Box2D.Common.Math;
+      const { b2World, b2BodyDef, b2Body } = Box2D.Dynamics;
+      const { b2PolygonShape, b2CircleShape } = Box2D.Collision.Shapes;
+      const world = new b2World(new b2Vec2(0, 10), true);
+      const ground = world.CreateBody(new b2BodyDef());
+      ground.CreateFixture2(b2PolygonShape.AsOrientedBox(10, 1, new b2Vec2(0, 11), 0), 0);
+      const bd = new b2BodyDef();
+      bd.type = b2Body.b2_dynamicBody;
+      bd.position.Set(0, 5);
+      const ball = world.CreateBody(bd);
+      ball.CreateFixture2(new b2CircleShape(0.5), 1).GetShape().m_radius = 2;
+      for (let i = 0; i < 120; i++) world.Step(1 / 60, 8, 3);
+      return ball.GetPosition().y;
+    });
+    expect(r.webphysics).toBeCloseTo(8, 1);
+    expect(r.box2dweb).toBeCloseTo(8, 1);
+  });
+
+  it('runs on a page that replaced Object.prototype.hasOwnProperty', () => {
+    const hasOwnProperty = Object.prototype.hasOwnProperty;
+    Object.defineProperty(Object.prototype, 'hasOwnProperty', {
+      value: () => {
+        throw new Error('this page replaced hasOwnProperty');
+      },
+      configurable: true,
+      writable: true,
+    });
+    try {
+      const result = reusedDefinitions(webphysics);
+      expect(result.jointCount).toBe(3);
+      const scene = wp.b2dJsonRead({
+        gravity: { x: 0, y: -10 },
+        body: [{ type: 2, awake: true, fixture: [{ density: 1, circle: { radius: 1 } }] }],
+        joint: [{ type: 'motor', bodyA: 0, bodyB: 0 }],
+      }, { skipUnknown: true });
+      scene.step();
+      expect(scene.bodies[0].GetPosition().y).toBeLessThan(0);
+      expect(wp.b2dJsonWriteString(scene)).toContain('"body"');
+    } finally {
+      Object.defineProperty(Object.prototype, 'hasOwnProperty', { value: hasOwnProperty, configurable: true, writable: true });
+    }
+  });
+});
+
 /** A canvas 2D context that records its calls, as [name, ...arguments]. */
 class RecordingContext {
   readonly canvas = { width: 600, height: 400 };
