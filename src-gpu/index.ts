@@ -22,6 +22,8 @@ export { WebGPUBackend } from './backend/backend';
 export type { WebGPUBackendOptions } from './backend/backend';
 export { GpuRenderer } from './render/render';
 export type { GpuCamera, GpuRendererOptions, GpuFrameStats } from './render/render';
+export { GpuPointQuery } from './query/pointQuery';
+export type { GpuPointHit } from './query/pointQuery';
 export {
   requestGpu,
   GpuContext,

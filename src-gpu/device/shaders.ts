@@ -6,7 +6,7 @@
  * parameters, constants and helpers) to the solver stages, and shaders/shared/solveJointsCommon.wgsl (the
  * joints' share of the colour passes) to the stages that solve joints; shaders/shared/distance.wgsl (GJK)
  * to the sensor test and to continuous collision, which also takes manifold.wgsl's shape helpers.
- * The renderer's shader (shaders/render/render.wgsl) takes common.wgsl only.
+ * The renderer's shader (shaders/render/render.wgsl) and the point query's take common.wgsl only.
  */
 
 import { ENGINE_WGSL } from './engineWgsl';
@@ -41,6 +41,7 @@ import timeOfImpact from '../../shaders/solver/timeOfImpact.wgsl';
 import solveJointsCommon from '../../shaders/shared/solveJointsCommon.wgsl';
 import islands from '../../shaders/solver/islands.wgsl';
 import render from '../../shaders/render/render.wgsl';
+import pointQuery from '../../shaders/query/pointQuery.wgsl';
 
 const common = `${ENGINE_WGSL}\n${commonWgsl}`;
 
@@ -72,6 +73,7 @@ export const SHADERS = {
   islands: `${common}\n${solverCommon}\n${islands}`,
   timeOfImpact: `${common}\n${manifold}\n${distance}\n${timeOfImpact}`,
   render: `${common}\n${render}`,
+  pointQuery: `${common}\n${pointQuery}`,
 } as const;
 
 export type ShaderName = Exclude<keyof typeof SHADERS, 'common'>;

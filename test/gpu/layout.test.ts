@@ -86,6 +86,7 @@ const STAGES = [
   'solvePosition',
   'solveJoints',
   'render',
+  'pointQuery',
 ];
 
 it('declares the state words, indirect offsets and flags the host uses', () => {
