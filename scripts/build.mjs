@@ -1,6 +1,6 @@
 // npm run build, first half: the ES module (webphysics.mjs) and its CommonJS twin (webphysics.cjs,
-// for require()), the classic-script bundle that defines the global `Box2D` as Box2DWeb's script
-// does (plain and minified), the WebGPU backend for browsers (webphysics-gpu.mjs) and for Node
+// for require()), the classic-script bundle that defines the global `Box2D` (and Box2DWeb's `Vector`
+// globals) as Box2DWeb's script does (plain and minified), the WebGPU backend for browsers (webphysics-gpu.mjs) and for Node
 // (webphysics-gpu.node.mjs), and the command line (cli.mjs), all with source maps. The
 // declarations come from scripts/build-types.mjs, which the npm script runs after this.
 import { build } from 'esbuild';
@@ -34,10 +34,10 @@ await Promise.all([
   // A second copy of the engine for CommonJS projects: an app that both imports and requires the
   // package gets two engines whose objects must not be mixed.
   build({ ...common, entryPoints: ['src/index.ts'], format: 'cjs', outfile: path.join(outDir, 'webphysics.cjs') }),
-  build({ ...common, entryPoints: ['src/api/Box2D.ts'], format: 'iife', globalName: 'Box2D', outfile: path.join(outDir, 'box2d.js') }),
+  build({ ...common, entryPoints: ['src/api/classic.ts'], format: 'iife', globalName: 'Box2D', outfile: path.join(outDir, 'box2d.js') }),
   build({
     ...common,
-    entryPoints: ['src/api/Box2D.ts'],
+    entryPoints: ['src/api/classic.ts'],
     format: 'iife',
     globalName: 'Box2D',
     minify: true,

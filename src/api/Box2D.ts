@@ -6,8 +6,9 @@
  * write `let body: Box2D.Dynamics.b2Body`.
  *
  * The classic-script bundle (dist/box2d.js) is this module, exposed as the global `Box2D` as
- * Box2DWeb's script is; the ES entry exports it as `Box2D`. Both load the 2.1a compatibility
- * layer (./compat), so code written for Box2DWeb 2.1a runs on either.
+ * Box2DWeb's script is (./classic, which also defines Box2DWeb's `Vector` globals); the ES entry
+ * exports it as `Box2D`. Both load the 2.1a compatibility layer (./compat), so code written for
+ * Box2DWeb 2.1a runs on either.
  */
 
 import * as collision from '../collision/b2Collision';

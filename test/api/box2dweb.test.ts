@@ -28,10 +28,10 @@ function runProgram(files: string[], script = 'box2d.js'): any {
 }
 
 describe('the classic script in a browser-like page', () => {
-  it('defines only the global Box2D, with Box2DWeb namespaces, and needs no Node globals', () => {
+  it("defines Box2DWeb's globals only (Box2D, Vector, Vector_a2j_Number), with its namespaces, and needs no Node globals", () => {
     const page = openPage(dist.dir);
     const globals = Object.keys(page.window).filter((k) => k !== 'window' && k !== 'self');
-    expect(globals).toEqual(['Box2D']);
+    expect(globals.sort()).toEqual(['Box2D', 'Vector', 'Vector_a2j_Number']);
     expect(page.run('typeof process + typeof require + typeof module')).toBe('undefinedundefinedundefined');
     for (const name of ['Common', 'Common.Math', 'Collision', 'Collision.Shapes', 'Dynamics', 'Dynamics.Contacts', 'Dynamics.Joints']) {
       expect(page.run(`typeof Box2D.${name}`)).toBe('object');
@@ -70,6 +70,23 @@ describe('the classic script in a browser-like page', () => {
       expect(result.bodyCount).toBe(11);
     });
   }
+
+  it("2.1a code's Vector and Vector_a2j_Number are Box2DWeb's, and a page's own Vector is left alone", () => {
+    const page = openPage(dist.dir);
+    expect(page.run('Vector === Array')).toBe(true);
+    expect(page.run('JSON.stringify(Vector_a2j_Number(3)) + JSON.stringify(Vector_a2j_Number())')).toBe('[0,0,0][]');
+    const vertexCount = page.run(`
+      var b2Vec2 = Box2D.Common.Math.b2Vec2;
+      var vertices = new Vector();
+      vertices.push(new b2Vec2(0, 0), new b2Vec2(2, 0), new b2Vec2(1, 1));
+      var shape = new Box2D.Collision.Shapes.b2PolygonShape();
+      shape.SetAsVector(vertices, vertices.length);
+      shape.GetVertexCount();
+    `);
+    expect(vertexCount).toBe(3);
+    const own = openPage(dist.dir, 'box2d.min.js', 'function Vector(x, y) { this.x = x; this.y = y; }');
+    expect(own.run('new Vector(1, 2).y + typeof Box2D.Dynamics.b2World')).toBe('2function');
+  });
 
   it('joints hold: a revolute chain, a distance joint, a prismatic motor at its limit, a weld, a mouse joint', () => {
     const result = runProgram(['joints.js']);

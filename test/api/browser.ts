@@ -22,11 +22,15 @@ export interface Page {
   runFixture(name: string): unknown;
 }
 
-/** A fresh page that has loaded `<script src="box2d.js">` from the built folder. */
-export function openPage(distDir: string, script = 'box2d.js'): Page {
+/**
+ * A fresh page that has loaded `<script src="box2d.js">` from the built folder, after the page's
+ * own `prelude` script when one is given.
+ */
+export function openPage(distDir: string, script = 'box2d.js', prelude = ''): Page {
   const context = vm.createContext({});
   const run = (source: string, filename = 'inline.js') => vm.runInContext(source, context, { filename });
   run('var window = this; var self = this;', 'page.js');
+  if (prelude !== '') run(prelude, 'prelude.js');
   run(readFileSync(path.join(distDir, script), 'utf8'), script);
   return {
     window: context as Record<string, any>,
