@@ -5,6 +5,7 @@ export interface ServedFolder {
   server: Server;
   port: number;
   url: string;
+  /** Stops listening and ends the open connections. */
   close(): Promise<void>;
 }
 

@@ -72,7 +72,13 @@ export function startServer({ root, port = 0, host = '127.0.0.1', log = null } =
         server,
         port: actual,
         url: `http://${shownHost}:${actual}/`,
-        close: () => new Promise((done) => server.close(() => done())),
+        // Ends the open connections too: a browser's idle and preconnected sockets would otherwise
+        // hold the server until Node's header timeout drops them, a minute or more later.
+        close: () =>
+          new Promise((done) => {
+            server.close(() => done());
+            server.closeAllConnections();
+          }),
       });
     });
   });

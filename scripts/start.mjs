@@ -34,8 +34,8 @@ if (!Number.isInteger(firstPort) || firstPort < 0 || firstPort > 65535) usage(`b
 
 // Stop on Ctrl+C, SIGTERM or SIGHUP, and when the process that started this one is gone: npm runs
 // this script through `sh -c`, and a SIGTERM or SIGINT sent to npm alone stops that shell, not
-// this process. Stopping ends the server's connections, the esbuild watcher (a child process) and
-// this process, with status 0.
+// this process. Stopping ends the server and its connections, the esbuild watcher (a child
+// process) and this process, with status 0.
 let served = null;
 let watcher = null;
 let stopping = false;
@@ -43,7 +43,6 @@ async function stop(why) {
   if (stopping) return;
   stopping = true;
   console.log(`npm start: stopping (${why})`);
-  served?.server.closeAllConnections();
   await Promise.all([served?.close(), watcher?.dispose()]);
   process.exit(0);
 }

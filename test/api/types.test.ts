@@ -12,9 +12,9 @@ import { copyFileSync, mkdirSync, mkdtempSync, rmSync, symlinkSync, writeFileSyn
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { repoRoot } from './browser';
+import { repoRoot } from '../support/bundles';
+import { typeCheck } from '../support/typescript';
 
-const tsc = path.join(repoRoot, 'node_modules/typescript/bin/tsc');
 let root = '';
 
 beforeAll(() => {
@@ -36,49 +36,38 @@ afterAll(() => {
 });
 
 /** Type-check `files` of the app with a strict browser-app configuration; tsc's output, '' if clean. */
-function typeCheck(files: string[]): string {
-  const app = path.join(root, 'app');
-  const config = path.join(app, `tsconfig.${files[0]}.json`);
-  writeFileSync(
-    config,
-    JSON.stringify({
-      compilerOptions: {
-        target: 'ES2022',
-        module: 'ESNext',
-        moduleResolution: 'Bundler',
-        lib: ['ES2022', 'DOM'],
-        types: [],
-        strict: true,
-        noEmit: true,
-        skipLibCheck: false,
-      },
-      files,
-    }),
-  );
-  try {
-    execFileSync(process.execPath, [tsc, '-p', config], { cwd: app, encoding: 'utf8' });
-    return '';
-  } catch (e) {
-    return String((e as { stdout?: string }).stdout ?? e);
-  }
+function typeCheckApp(files: string[]): string {
+  return typeCheck(path.join(root, 'app'), files[0], {
+    compilerOptions: {
+      target: 'ES2022',
+      module: 'ESNext',
+      moduleResolution: 'Bundler',
+      lib: ['ES2022', 'DOM'],
+      types: [],
+      strict: true,
+      noEmit: true,
+      skipLibCheck: false,
+    },
+    files,
+  });
 }
 
 describe('the type declarations in dist/types', () => {
   it("type an ES module app that imports 'webphysics', with 2.2.1 and 2.1a calls", () => {
-    expect(typeCheck(['es-app.ts'])).toBe('');
+    expect(typeCheckApp(['es-app.ts'])).toBe('');
   });
 
   it('type an app that uses the Box2D namespace object, its members usable as types', () => {
-    expect(typeCheck(['namespace-app.ts'])).toBe('');
+    expect(typeCheckApp(['namespace-app.ts'])).toBe('');
   });
 
   it('type a page script using the global Box2D of box2d.js through webphysics/global', () => {
-    expect(typeCheck(['script-app.ts'])).toBe('');
+    expect(typeCheckApp(['script-app.ts'])).toBe('');
   });
 
   it('reject code that misuses the API', () => {
     const bad = path.join(root, 'app', 'bad-app.ts');
     writeFileSync(bad, "import { b2World, b2Vec2 } from 'webphysics';\nnew b2World(new b2Vec2(0, 10)).CreateBody(42);\n");
-    expect(typeCheck(['bad-app.ts'])).toMatch(/bad-app\.ts\(2,\d+\): error TS2345/);
+    expect(typeCheckApp(['bad-app.ts'])).toMatch(/bad-app\.ts\(2,\d+\): error TS2345/);
   });
 });
