@@ -73,7 +73,7 @@ export function startServer({ root, port = 0, host = '127.0.0.1', log = null } =
         port: actual,
         url: `http://${shownHost}:${actual}/`,
         // Ends the open connections too: a browser's idle and preconnected sockets would otherwise
-        // hold the server until Node's header timeout drops them, a minute or more later.
+        // hold the server open until Node's header timeout drops them.
         close: () =>
           new Promise((done) => {
             server.close(() => done());
