@@ -43,8 +43,11 @@ export function chromiumArgs({ webgpu = false } = {}) {
     '--disable-dev-shm-usage', // containers often have a small /dev/shm
     '--window-size=1000,700',
   ];
-  // WebGPU on SwiftShader (the CPU Vulkan driver Chromium ships) needs the GPU process.
-  if (webgpu) args.push('--enable-unsafe-webgpu', '--enable-features=Vulkan', '--use-webgpu-adapter=swiftshader');
+  // WebGPU on SwiftShader (the CPU Vulkan driver Chromium ships) needs the GPU process. Without
+  // ANGLE and Vulkan both on SwiftShader, a page that draws into a WebGPU canvas loses its
+  // queue's callbacks: mapAsync and onSubmittedWorkDone then fail with "A valid external
+  // Instance reference no longer exists".
+  if (webgpu) args.push('--enable-unsafe-webgpu', '--enable-features=Vulkan', '--use-webgpu-adapter=swiftshader', '--use-angle=swiftshader', '--use-vulkan=swiftshader');
   else args.push('--disable-gpu');
   return args;
 }

@@ -3,7 +3,7 @@
  * the page itself imports only this (the engine and the WebGPU backend live in the workers).
  */
 
-export const SCENE_NAMES = ['pyramids', 'rain', 'joint-grid', 'tumbler'] as const;
+export const SCENE_NAMES = ['pyramids', 'rain', 'joint-grid', 'tumbler', 'sand'] as const;
 export type SceneName = (typeof SCENE_NAMES)[number];
 
 export const SCENE_TITLES: Record<SceneName, string> = {
@@ -11,6 +11,7 @@ export const SCENE_TITLES: Record<SceneName, string> = {
   rain: 'Rain (circles and boxes)',
   'joint-grid': 'Joint grid',
   tumbler: 'Tumbler',
+  sand: 'Sand pile',
 };
 
 /** The slider's stops: 10^2 to 2 x 10^5 bodies, three per decade. */
@@ -40,13 +41,16 @@ export const DT = 1 / 60;
 export const VELOCITY_ITERATIONS = 8;
 export const POSITION_ITERATIONS = 3;
 
-/** Throws a RangeError naming the field and its rule when a configuration is not one the page can build. */
-export function checkConfig(config: SceneConfig): void {
+/**
+ * Throws a RangeError naming the field and its rule when a configuration is not one the page can
+ * build (`maxBodies`: the page's own limit; the large-world page's is higher).
+ */
+export function checkConfig(config: SceneConfig, maxBodies = MAX_BODIES): void {
   if (!SCENE_NAMES.includes(config.scene)) {
     throw new RangeError(`scene must be one of ${SCENE_NAMES.join(', ')}; got ${JSON.stringify(config.scene)}`);
   }
-  if (!Number.isInteger(config.bodies) || config.bodies < MIN_BODIES || config.bodies > MAX_BODIES) {
-    throw new RangeError(`bodies must be an integer from ${MIN_BODIES} to ${MAX_BODIES}; got ${config.bodies}`);
+  if (!Number.isInteger(config.bodies) || config.bodies < MIN_BODIES || config.bodies > maxBodies) {
+    throw new RangeError(`bodies must be an integer from ${MIN_BODIES} to ${maxBodies}; got ${config.bodies}`);
   }
   if (!Number.isInteger(config.seed) || config.seed < 0 || config.seed > 0xffffffff) {
     throw new RangeError(`seed must be an integer from 0 to 2^32 - 1; got ${config.seed}`);

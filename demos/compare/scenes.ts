@@ -14,6 +14,8 @@
  *   tumbler     the 2.2.1 Testbed's Tumbler scaled to n boxes (0.125 m half-size): a box of four
  *               walls turning at 0.05 pi rad/s on a revolute motor, its side grown with the square
  *               root of n so the boxes fill about a quarter of it, the boxes stacked in its bottom.
+ *   sand        grains (circles of radius 0.09-0.14 m) heaped in a triangle on a box ground, 0.3 m apart
+ *               and jittered by up to 0.02 m, rows narrowing upwards: the heap slumps into a pile.
  * All at 1/60 s, 8 velocity and 3 position iterations, density 1, friction 0.6 (joint grid 0.2),
  * gravity (0, -10). The body count is the dynamic bodies (the joint grid's side is rounded from
  * the square root, so its count is the nearest square); the static bodies come on top.
@@ -46,6 +48,7 @@ const PYRAMID_PITCH = PYRAMID_ROWS + 2;
 const RAIN_SPACING = 1.5;
 const TUMBLER_BOX = 0.125;
 const TUMBLER_SPACING = 0.3;
+const SAND_SPACING = 0.3;
 
 function box(hx: number, hy: number, centre?: b2Vec2, angle = 0): b2PolygonShape {
   const shape = new b2PolygonShape();
@@ -201,9 +204,29 @@ function tumbler(b: Builder, n: number): SceneView {
   return { x: 0, y: half, halfWidth: half * 1.5, halfHeight: half * 1.5 };
 }
 
-/** Builds the scene a configuration names (checkConfig's errors for a bad one). */
-export function buildScene(config: SceneConfig): BuiltScene {
-  checkConfig(config);
+function sand(b: Builder, n: number, seed: number): SceneView {
+  const r = rng(seed);
+  const base = Math.ceil((Math.sqrt(8 * n + 1) - 1) / 2);
+  const halfWidth = base * SAND_SPACING;
+  const rowHeight = SAND_SPACING * 0.87;
+  b.ground(2 * halfWidth);
+  const grains = [circle(0.09), circle(0.115), circle(0.14)];
+  let made = 0;
+  for (let row = 0; row < base && made < n; ++row) {
+    const count = base - row;
+    for (let i = 0; i < count && made < n; ++i, ++made) {
+      const x = (i - (count - 1) / 2) * SAND_SPACING + (r() - 0.5) * 0.04;
+      const body = b.body(b2_dynamicBody, x, 0.16 + row * rowHeight + (r() - 0.5) * 0.04);
+      b.fixture(body, grains[Math.floor(r() * grains.length)], 1, 0.6);
+    }
+  }
+  const height = base * rowHeight;
+  return { x: 0, y: height / 2, halfWidth: 1.2 * halfWidth, halfHeight: height / 2 + 2 };
+}
+
+/** Builds the scene a configuration names (checkConfig's errors for a bad one, `maxBodies` its limit). */
+export function buildScene(config: SceneConfig, maxBodies?: number): BuiltScene {
+  checkConfig(config, maxBodies);
   const b = new Builder(config.sleep);
   let view: SceneView;
   switch (config.scene) {
@@ -218,6 +241,9 @@ export function buildScene(config: SceneConfig): BuiltScene {
       break;
     case 'tumbler':
       view = tumbler(b, config.bodies);
+      break;
+    case 'sand':
+      view = sand(b, config.bodies, config.seed);
       break;
   }
   return { world: b.world, bodies: b.bodies, view, dt: DT, velocityIterations: VELOCITY_ITERATIONS, positionIterations: POSITION_ITERATIONS };
