@@ -509,6 +509,46 @@ describe('polygons of more than b2_maxPolygonVertices', () => {
   });
 });
 
+describe('PreSolve', () => {
+  /** A ball dropped onto a ground box, a listener recording each call in order. */
+  function listenerOrder(Box2D: Lib) {
+    const { b2Vec2 } = Box2D.Common.Math;
+    const { b2World, b2BodyDef, b2Body, b2FixtureDef, b2ContactListener } = Box2D.Dynamics;
+    const { b2PolygonShape, b2CircleShape } = Box2D.Collision.Shapes;
+    const world = new b2World(new b2Vec2(0, 10), true);
+    const calls: string[] = [];
+    const listener = new b2ContactListener();
+    listener.BeginContact = () => calls.push('begin');
+    listener.PreSolve = (contact: Lib) => calls.push(`pre ${contact.GetManifold().m_pointCount}`);
+    world.SetContactListener(listener);
+    const bd = new b2BodyDef();
+    bd.position.Set(0, 5);
+    const fd = new b2FixtureDef();
+    fd.shape = new b2PolygonShape();
+    fd.shape.SetAsBox(10, 0.5);
+    world.CreateBody(bd).CreateFixture(fd);
+    bd.type = b2Body.b2_dynamicBody;
+    bd.position.Set(0, 0);
+    fd.density = 1;
+    fd.shape = new b2CircleShape(0.5);
+    world.CreateBody(bd).CreateFixture(fd);
+    for (let i = 0; i < 120; ++i) world.Step(1 / 60, 8, 3);
+    return calls;
+  }
+
+  it("reaches touching contacts only, after BeginContact (2.2.1's rule), where 2.1a also calls it before the shapes touch", () => {
+    const { box2dweb, webphysics } = both(listenerOrder);
+    expect(box2dweb.slice(0, box2dweb.indexOf('begin'))).toContain('pre 0');
+    expect(webphysics[0]).toBe('begin');
+    expect(webphysics).not.toContain('pre 0');
+    // From the first touch on, PreSolve comes every step (until the ball falls asleep), with the manifold's points.
+    const first = webphysics.indexOf('pre 1');
+    expect(first).toBe(1);
+    expect(webphysics.slice(first).filter((c) => c !== 'pre 1')).toEqual([]);
+    expect(webphysics.length).toBeGreaterThan(20);
+  });
+});
+
 describe('2.1a habits that keep working', () => {
   /** Boxes from plain {x, y} vertices, all from one reused body and fixture definition. */
   function reusedDefinitions(Box2D: Lib) {
