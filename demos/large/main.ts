@@ -17,21 +17,18 @@ import { b2MouseJointDef } from '../../src/dynamics/joints/b2MouseJoint';
 import type { b2MouseJoint } from '../../src/dynamics/joints/b2MouseJoint';
 import { b2AABB } from '../../src/collision/b2Collision';
 import { b2Vec2 } from '../../src/common/b2Math';
-import { GpuPointQuery } from '../../src-gpu/query/pointQuery';
 import type { GpuPointHit } from '../../src-gpu/query/pointQuery';
-import { GpuRenderer } from '../../src-gpu/render/render';
-import { WebGPUBackend } from '../../src-gpu/backend/backend';
 import { requestGpu } from '../../src-gpu/device/device';
 import type { GpuContext } from '../../src-gpu/device/device';
-import { fitCanvas } from '../canvas';
 import { checkConfig, DT, POSITION_ITERATIONS, SCENE_TITLES, TRANSFORM_STRIDE, VELOCITY_ITERATIONS } from '../compare/config';
 import type { SceneConfig, SceneGeometry, SceneName } from '../compare/config';
 import { sceneGeometry } from '../compare/pane';
 import { buildScene } from '../compare/scenes';
 import type { BuiltScene } from '../compare/scenes';
 import { Camera, PaneView } from '../compare/view';
-import { detectWebGpu, StepTimes } from '../framework/demo';
+import { detectWebGpu } from '../framework/demo';
 import type { DemoPane } from '../framework/demo';
+import { FrameLoop, GpuWorldView } from '../framework/gpuView';
 
 const SCENES: readonly SceneName[] = ['pyramids', 'rain', 'sand'];
 const GPU_COUNTS = [10_000, 20_000, 50_000, 100_000, 200_000, 500_000, 1_000_000];
@@ -72,40 +69,29 @@ class GpuStage implements Stage {
   readonly backend = 'webgpu';
   private constructor(
     readonly scene: BuiltScene,
-    private readonly gpu: WebGPUBackend,
-    private readonly renderer: GpuRenderer,
-    private readonly query: GpuPointQuery,
+    private readonly view: GpuWorldView,
   ) {}
 
   static async create(scene: BuiltScene, context: GpuContext): Promise<GpuStage> {
-    const backend = await WebGPUBackend.create({ context });
-    await scene.world.SetBackend(backend);
-
-    const target = canvas.getContext('webgpu');
-    if (target === null) throw new Error('this canvas gives no WebGPU context');
-    return new GpuStage(scene, backend, new GpuRenderer(backend, target), new GpuPointQuery(backend));
+    return new GpuStage(scene, await GpuWorldView.create(scene.world, context, canvas));
   }
 
   get lastFrame() {
-    return this.renderer.lastFrame;
+    return this.view.lastFrame;
   }
 
-  async frame(step: boolean): Promise<void> {
-    const { dpr } = fitCanvas(canvas);
-    if (step) this.scene.world.Step(DT, VELOCITY_ITERATIONS, POSITION_ITERATIONS);
-    Object.assign(this.renderer.camera, { x: camera.x, y: camera.y, scale: camera.scale * dpr });
-    await this.renderer.draw();
-    await this.gpu.ctx.device.queue.onSubmittedWorkDone();
+  frame(step: boolean): Promise<void> {
+    return this.view.frame(() => {
+      if (step) this.scene.world.Step(DT, VELOCITY_ITERATIONS, POSITION_ITERATIONS);
+    }, camera);
   }
 
   bodyAt(x: number, y: number): Promise<GpuPointHit | null> {
-    return this.query.bodyAt(x, y);
+    return this.view.bodyAt(x, y);
   }
 
-  async close(): Promise<void> {
-    this.query.destroy();
-    this.renderer.destroy();
-    await this.gpu.destroy();
+  close(): Promise<void> {
+    return this.view.close();
   }
 }
 
@@ -166,16 +152,24 @@ let stage: Stage | null = null;
 let config: SceneConfig = { scene: 'pyramids', bodies: 10_000, seed: SEED, sleep: false };
 let paused = false;
 let building = false;
-/** The frame whose work is not done yet, if any. */
-let inFlight: Promise<void> | null = null;
 let ground: b2Body | null = null;
 let mouse: { joint: b2MouseJoint; bodyIndex: number; target: b2Vec2 } | null = null;
-const frameTimes = new StepTimes();
-const gpuFrameTimes = new StepTimes();
-let frames = 0;
 let steps = 0;
-let skipped = 0;
-let lastFrameAt = NaN;
+const loop = new FrameLoop(
+  () => {
+    if (stage === null || building) return null;
+    if (mouse !== null && !paused) mouse.joint.SetTarget(mouse.target);
+    const stepping = !paused;
+    return stage.frame(stepping).then(() => {
+      if (stepping) steps++;
+    });
+  },
+  (now) => publish(now),
+  (error) => {
+    showMessage(`The frame failed: ${error instanceof Error ? error.message : String(error)}`);
+    console.error(error);
+  },
+);
 
 function counts(): number[] {
   return gpuContext !== null ? GPU_COUNTS : JS_COUNTS;
@@ -185,7 +179,7 @@ async function rebuild(next: SceneConfig): Promise<void> {
   building = true;
   try {
     mouse = null;
-    await inFlight?.catch(() => undefined);
+    await loop.idle();
     await stage?.close();
     stage = null;
     checkConfig(next, counts()[counts().length - 1]);
@@ -197,10 +191,7 @@ async function rebuild(next: SceneConfig): Promise<void> {
     const rect = canvas.getBoundingClientRect();
     camera.fit(scene.view, rect.width, rect.height);
     steps = 0;
-    frames = 0;
-    skipped = 0;
-    frameTimes.clear();
-    gpuFrameTimes.clear();
+    loop.reset();
     const url = new URL(location.href);
     url.searchParams.set('scene', config.scene);
     url.searchParams.set('bodies', String(config.bodies));
@@ -213,33 +204,6 @@ async function rebuild(next: SceneConfig): Promise<void> {
   } finally {
     building = false;
   }
-}
-
-function tick(now: number): void {
-  requestAnimationFrame(tick);
-  if (stage === null || building) return;
-  if (inFlight !== null) {
-    skipped++;
-    return;
-  }
-  if (Number.isFinite(lastFrameAt)) frameTimes.add(now, now - lastFrameAt);
-  lastFrameAt = now;
-  const current = stage;
-  const started = performance.now();
-  if (mouse !== null && !paused) mouse.joint.SetTarget(mouse.target);
-  inFlight = current.frame(!paused).then(
-    () => {
-      inFlight = null;
-      gpuFrameTimes.add(now, performance.now() - started);
-      frames++;
-      if (!paused) steps++;
-      publish(performance.now());
-    },
-    (error) => {
-      showMessage(`The frame failed: ${error instanceof Error ? error.message : String(error)}`);
-      console.error(error);
-    },
-  );
 }
 
 // ---- Pointer: drag a body with a mouse joint, or pan; wheel zooms ----
@@ -350,7 +314,7 @@ interface LargeDemo {
   bodies: number;
   frames: number;
   steps: number;
-  /** Frames whose step was skipped because the previous frame's work was not done. */
+  /** Display frames that waited because the previous frame's work was not done. */
   skipped: number;
   /** Median over the last second: time between frames, and from a frame's step call to its work done. */
   frameMs: number;
@@ -405,8 +369,9 @@ window.largeDemo = {
 
 function publish(now: number): void {
   if (stage === null) return;
-  const frameMs = frameTimes.median(now);
-  const gpuFrameMs = gpuFrameTimes.median(now);
+  const frameMs = loop.frameTimes.median(now);
+  const gpuFrameMs = loop.workTimes.median(now);
+  const { frames, waited: skipped } = loop;
   const drawn = stage instanceof GpuStage ? stage.lastFrame : null;
   Object.assign(window.largeDemo, {
     ready: frames > 0,
@@ -459,7 +424,7 @@ async function start(): Promise<void> {
   }
   fillControls();
   await rebuild(fromUrl());
-  requestAnimationFrame(tick);
+  loop.start();
 }
 
 void start();

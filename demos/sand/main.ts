@@ -1,0 +1,311 @@
+/*
+ * The sand page (sand.html), after the original Web Physics work's "Magic Sands": grains (circles)
+ * pour from a spout into containers the user draws with the pointer (each stroke a static body of
+ * edges). Resting grains fall asleep, so a settled pile costs almost nothing. On WebGPU the grains
+ * are stepped and drawn on the GPU (GpuWorldView), up to GPU_GRAINS; without WebGPU the JavaScript
+ * engine pours up to JS_GRAINS, drawn by the package's canvas b2DebugDraw, and the page says so.
+ * window.webphysicsDemo and window.sandDemo tell tests and scripts what runs.
+ */
+
+import { b2DebugDraw } from '../../src/api/b2DebugDraw';
+import { b2CircleShape } from '../../src/collision/shapes/b2CircleShape';
+import { b2EdgeShape } from '../../src/collision/shapes/b2EdgeShape';
+import { b2PolygonShape } from '../../src/collision/shapes/b2PolygonShape';
+import { b2Vec2 } from '../../src/common/b2Math';
+import { b2BodyDef, b2_dynamicBody } from '../../src/dynamics/b2Body';
+import type { b2Body } from '../../src/dynamics/b2Body';
+import { b2FixtureDef } from '../../src/dynamics/b2Fixture';
+import { b2World } from '../../src/dynamics/b2World';
+import { requestGpu } from '../../src-gpu/device/device';
+import type { GpuContext } from '../../src-gpu/device/device';
+import { fitCanvas } from '../canvas';
+import { Camera } from '../compare/view';
+import { DT, POSITION_ITERATIONS, VELOCITY_ITERATIONS } from '../compare/config';
+import { detectWebGpu } from '../framework/demo';
+import { FrameLoop, GpuWorldView } from '../framework/gpuView';
+
+const GPU_GRAINS = 200_000;
+const JS_GRAINS = 5_000;
+/** Grains the spout lets out per step: a row across its mouth. */
+const GPU_POUR = 40;
+const JS_POUR = 4;
+const GRAIN_RADIUS = 0.1;
+const SPOUT = { x: 0, y: 40 };
+const SPOUT_SPEED = 15;
+/** A stroke's points closer than this are merged: segments at least this long. */
+const MIN_SEGMENT = 0.4;
+
+const $ = <T extends HTMLElement>(id: string) => document.getElementById(id) as T;
+const canvas = $<HTMLCanvasElement>('world');
+const adapterNote = $<HTMLParagraphElement>('adapter');
+const messageNote = $<HTMLParagraphElement>('message');
+const statsLine = $<HTMLParagraphElement>('stats');
+const pourButton = $<HTMLButtonElement>('pour');
+const camera = new Camera();
+const fmtMs = (ms: number) => (!Number.isFinite(ms) ? '–' : ms < 10 ? ms.toFixed(2) : ms < 100 ? ms.toFixed(1) : ms.toFixed(0));
+const fmtCount = (n: number) => n.toLocaleString('en-US');
+
+function showMessage(text: string): void {
+  messageNote.textContent = text;
+  messageNote.hidden = text === '';
+}
+
+/** The world: a floor, a first container under the spout, the grains, the containers drawn. */
+class Sandbox {
+  readonly world = new b2World(new b2Vec2(0, -10));
+  readonly containers: b2Body[] = [];
+  grains = 0;
+  private readonly grainDef = new b2BodyDef();
+  private readonly grainFixture = new b2FixtureDef();
+  private readonly edge = new b2EdgeShape();
+  private seed = 1;
+
+  constructor(readonly maxGrains: number, private readonly pourRate: number) {
+    this.world.SetAllowSleeping(true);
+    const floor = this.world.CreateBody(new b2BodyDef());
+    const slab = new b2PolygonShape();
+    slab.SetAsBox(80, 1, new b2Vec2(0, -1), 0);
+    floor.CreateFixture(slab, 0);
+    this.container([new b2Vec2(-8, 22), new b2Vec2(-6, 12), new b2Vec2(6, 12), new b2Vec2(8, 22)]);
+    this.grainDef.type = b2_dynamicBody;
+    const grain = new b2CircleShape();
+    grain.m_radius = GRAIN_RADIUS;
+    this.grainFixture.shape = grain;
+    this.grainFixture.density = 1;
+    this.grainFixture.friction = 0.6;
+  }
+
+  /** A static body of edges along `points` (a stroke); null for fewer than two points. */
+  container(points: readonly b2Vec2[]): b2Body | null {
+    if (points.length < 2) return null;
+    const body = this.world.CreateBody(new b2BodyDef());
+    for (let i = 1; i < points.length; ++i) {
+      this.edge.Set(points[i - 1], points[i]);
+      body.CreateFixture(this.edge, 0);
+    }
+    this.containers.push(body);
+    return body;
+  }
+
+  clearContainers(): void {
+    // The first container stays: it catches the sand while nothing else is drawn.
+    for (const body of this.containers.splice(1)) this.world.DestroyBody(body);
+  }
+
+  /** One row of grains at the spout's mouth, moving down at SPOUT_SPEED, while there is room for them. */
+  pour(): void {
+    const n = Math.min(this.pourRate, this.maxGrains - this.grains);
+    for (let i = 0; i < n; ++i) {
+      this.seed = (Math.imul(this.seed, 1664525) + 1013904223) >>> 0;
+      const jitter = (this.seed / 4294967296 - 0.5) * 0.05;
+      this.grainDef.position.Set(SPOUT.x + (i - (n - 1) / 2) * 2.1 * GRAIN_RADIUS + jitter, SPOUT.y);
+      // Fast enough to leave a grain's diameter between this row and the last one in a step.
+      this.grainDef.linearVelocity.Set(0, -SPOUT_SPEED);
+      this.world.CreateBody(this.grainDef).CreateFixture(this.grainFixture);
+    }
+    this.grains += n;
+  }
+}
+
+/** The JavaScript engine's world drawn by the package's canvas b2DebugDraw, y up, at the camera. */
+class CanvasView {
+  private readonly ctx: CanvasRenderingContext2D;
+  private readonly draw = new b2DebugDraw();
+
+  constructor(private readonly world: b2World) {
+    const ctx = canvas.getContext('2d');
+    if (ctx === null) throw new Error('this browser gives no 2D canvas context');
+    this.ctx = ctx;
+    this.draw.SetSprite(ctx);
+    this.draw.SetFlags(b2DebugDraw.e_shapeBit);
+    // The page clears the canvas itself, under the identity transform.
+    this.draw.Clear = () => undefined;
+    world.SetDebugDraw(this.draw);
+  }
+
+  async frame(step: () => void): Promise<void> {
+    step();
+    const { width, height, dpr } = fitCanvas(canvas);
+    const ctx = this.ctx;
+    ctx.setTransform(1, 0, 0, 1, 0, 0);
+    ctx.fillStyle = '#000';
+    ctx.fillRect(0, 0, canvas.width, canvas.height);
+    const s = camera.scale * dpr;
+    ctx.setTransform(s, 0, 0, -s, (width / 2) * dpr - camera.x * s, (height / 2) * dpr + camera.y * s);
+    this.draw.SetLineThickness(1 / s);
+    this.world.DrawDebugData();
+  }
+}
+
+let gpuContext: GpuContext | null = null;
+let sandbox: Sandbox | null = null;
+let gpuView: GpuWorldView | null = null;
+let canvasView: CanvasView | null = null;
+let pouring = true;
+let steps = 0;
+let stroke: b2Vec2[] | null = null;
+
+const loop = new FrameLoop(
+  () => {
+    const box = sandbox;
+    if (box === null) return null;
+    const step = () => {
+      if (pouring) box.pour();
+      box.world.Step(DT, VELOCITY_ITERATIONS, POSITION_ITERATIONS);
+      steps++;
+    };
+    if (gpuView !== null) return gpuView.frame(step, camera);
+    return canvasView !== null ? canvasView.frame(step) : null;
+  },
+  (now) => publish(now),
+  (error) => {
+    showMessage(`The frame failed: ${error instanceof Error ? error.message : String(error)}`);
+    console.error(error);
+  },
+);
+
+async function restart(): Promise<void> {
+  sandbox = null;
+  await loop.idle();
+  await gpuView?.close();
+  gpuView = null;
+  const box = new Sandbox(gpuContext !== null ? GPU_GRAINS : JS_GRAINS, gpuContext !== null ? GPU_POUR : JS_POUR);
+  if (gpuContext !== null) gpuView = await GpuWorldView.create(box.world, gpuContext, canvas);
+  else canvasView = new CanvasView(box.world);
+  const rect = canvas.getBoundingClientRect();
+  camera.fit({ x: 0, y: 20, halfWidth: 30, halfHeight: 24 }, rect.width, rect.height);
+  steps = 0;
+  loop.reset();
+  sandbox = box;
+}
+
+// ---- Pointer: a stroke draws a container; the wheel zooms ----
+
+function toWorld(event: PointerEvent | WheelEvent): b2Vec2 {
+  const rect = canvas.getBoundingClientRect();
+  return new b2Vec2(camera.x + (event.clientX - rect.left - rect.width / 2) / camera.scale, camera.y - (event.clientY - rect.top - rect.height / 2) / camera.scale);
+}
+
+canvas.addEventListener('pointerdown', (event) => {
+  canvas.setPointerCapture(event.pointerId);
+  stroke = [toWorld(event)];
+  event.preventDefault();
+});
+
+canvas.addEventListener('pointermove', (event) => {
+  if (stroke === null) return;
+  const p = toWorld(event);
+  const last = stroke[stroke.length - 1];
+  if (Math.hypot(p.x - last.x, p.y - last.y) >= MIN_SEGMENT) stroke.push(p);
+});
+
+canvas.addEventListener('pointerup', () => {
+  if (stroke !== null && sandbox !== null) {
+    sandbox.container(stroke);
+    window.sandDemo.containers = sandbox.containers.length;
+  }
+  stroke = null;
+});
+
+canvas.addEventListener(
+  'wheel',
+  (event) => {
+    event.preventDefault();
+    const rect = canvas.getBoundingClientRect();
+    camera.zoomAt(event.deltaY < 0 ? 1.1 : 1 / 1.1, event.clientX - rect.left, event.clientY - rect.top, rect.width, rect.height);
+  },
+  { passive: false },
+);
+
+pourButton.addEventListener('click', () => {
+  pouring = !pouring;
+  pourButton.setAttribute('aria-pressed', String(pouring));
+  pourButton.textContent = pouring ? 'Stop pouring' : 'Pour';
+});
+$<HTMLButtonElement>('clear').addEventListener('click', () => sandbox?.clearContainers());
+$<HTMLButtonElement>('restart').addEventListener('click', () => void restart());
+
+// ---- What the page publishes ----
+
+interface SandDemo {
+  ready: boolean;
+  backend: 'js' | 'webgpu' | null;
+  grains: number;
+  maxGrains: number;
+  /** The containers: the first one and those drawn. */
+  containers: number;
+  steps: number;
+  frameMs: number;
+  workMs: number;
+  /** Page coordinates of a world point. */
+  worldToClient(x: number, y: number): { x: number; y: number };
+}
+
+declare global {
+  interface Window {
+    sandDemo: SandDemo;
+  }
+}
+
+window.webphysicsDemo = { ready: false, panes: [] };
+window.sandDemo = {
+  ready: false,
+  backend: null,
+  grains: 0,
+  maxGrains: 0,
+  containers: 0,
+  steps: 0,
+  frameMs: NaN,
+  workMs: NaN,
+  worldToClient(x: number, y: number) {
+    const rect = canvas.getBoundingClientRect();
+    return { x: rect.left + rect.width / 2 + (x - camera.x) * camera.scale, y: rect.top + rect.height / 2 - (y - camera.y) * camera.scale };
+  },
+};
+
+function publish(now: number): void {
+  if (sandbox === null) return;
+  const backend = gpuView !== null ? 'webgpu' : 'js';
+  const frameMs = loop.frameTimes.median(now);
+  const workMs = loop.workTimes.median(now);
+  Object.assign(window.sandDemo, {
+    ready: loop.frames > 0,
+    backend,
+    grains: sandbox.grains,
+    maxGrains: sandbox.maxGrains,
+    containers: sandbox.containers.length,
+    steps,
+    frameMs,
+    workMs,
+  });
+  window.webphysicsDemo.panes = [{ backend, adapter: backend === 'webgpu' ? adapterNote.dataset.adapter ?? null : null, bodies: sandbox.world.GetBodyCount(), steps, stepMs: workMs }];
+  window.webphysicsDemo.ready = loop.frames > 0;
+  statsLine.textContent =
+    `${backend === 'webgpu' ? 'WebGPU: stepped and drawn on the GPU' : 'JavaScript engine, drawn on a 2D canvas'} · ` +
+    `${fmtCount(sandbox.grains)} of ${fmtCount(sandbox.maxGrains)} grains · ${sandbox.containers.length} containers · ` +
+    `frame ${fmtMs(frameMs)} ms · step + draw ${fmtMs(workMs)} ms`;
+}
+
+// ---- Start ----
+
+async function start(): Promise<void> {
+  const status = await detectWebGpu();
+  if (status.adapter) {
+    try {
+      gpuContext = await requestGpu();
+      adapterNote.textContent = `WebGPU adapter: ${status.name}. Up to ${fmtCount(GPU_GRAINS)} grains, stepped and drawn on the GPU.`;
+      adapterNote.dataset.adapter = status.name ?? '';
+      adapterNote.className = 'note ok';
+    } catch (error) {
+      adapterNote.textContent = `The WebGPU device could not be created (${error instanceof Error ? error.message : String(error)}): the JavaScript engine pours up to ${fmtCount(JS_GRAINS)} grains.`;
+      adapterNote.className = 'note warn';
+    }
+  } else {
+    adapterNote.textContent = `${status.reason}: the JavaScript engine pours up to ${fmtCount(JS_GRAINS)} grains, drawn on a 2D canvas.`;
+    adapterNote.className = 'note warn';
+  }
+  await restart();
+  loop.start();
+}
+
+void start();
