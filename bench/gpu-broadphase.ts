@@ -42,7 +42,7 @@ import { requestGpu } from '../src-gpu/device/device';
 import type { GpuContext } from '../src-gpu/device/device';
 import { USAGE } from '../src-gpu/device/layout';
 import { GpuWorld } from '../src-gpu/world/world';
-import { fmt, logLogChart, median, rng, syntheticWorld } from './gpu-support';
+import { deviceName, fmt, logLogChart, median, rng, syntheticWorld } from './gpu-support';
 import type { SyntheticBody } from './gpu-support';
 
 const DT = 1 / 60;
@@ -466,8 +466,8 @@ async function main(): Promise<number> {
   });
   const unvalidatedCtx = await requestGpu({ dawnOptions: ['disable-dawn-features=timestamp_quantization'], skipValidation: true });
   const a = ctx.adapterInfo;
-  const deviceName = `${a.vendor} ${a.architecture} ${a.device} ${a.description}`.replace(/\s+/g, ' ').trim() + (a.software ? ' (software)' : '');
-  console.error(`adapter: ${deviceName}; timestamps: ${ctx.timestamps}`);
+  const deviceLine = deviceName(a);
+  console.error(`adapter: ${deviceLine}; timestamps: ${ctx.timestamps}`);
   const rows: Row[] = [];
   for (const size of sizes) {
     for (const name of scenarios) {
@@ -484,7 +484,7 @@ async function main(): Promise<number> {
       );
     }
   }
-  const meta = { device: deviceName, adapter: a, node: process.version, date: new Date().toISOString(), steps, limits: { maxStorageBufferBindingSize: ctx.limits.maxStorageBufferBindingSize } };
+  const meta = { device: deviceLine, adapter: a, node: process.version, date: new Date().toISOString(), steps, limits: { maxStorageBufferBindingSize: ctx.limits.maxStorageBufferBindingSize } };
   mkdirSync(outDir, { recursive: true });
   writeFileSync(path.join(outDir, 'gpu-broadphase.json'), JSON.stringify({ meta, rows }, null, 2) + '\n');
   writeFileSync(path.join(outDir, 'gpu-broadphase.md'), markdown(rows, meta));

@@ -31,7 +31,7 @@ import type { GpuContext } from '../src-gpu/device/device';
 import { BODY_COUNTS, SCENE_NAMES, TRANSFORM_STRIDE } from '../demos/compare/config';
 import type { SceneConfig, SceneName } from '../demos/compare/config';
 import { GpuPane, JsPane } from '../demos/compare/pane';
-import { crossover, fmt, median } from './gpu-support';
+import { crossover, deviceName, fmt, median } from './gpu-support';
 import type { Crossover } from './gpu-support';
 
 /** JavaScript warm-up: until V8 has compiled the step (this many steps or this long, at least two steps). */
@@ -165,7 +165,7 @@ async function main(): Promise<number> {
   const validated = await requestGpu();
   const unvalidated = await requestGpu({ skipValidation: true });
   const a = validated.adapterInfo;
-  const device = `${a.vendor} ${a.architecture} ${a.device} ${a.description}`.replace(/\s+/g, ' ').trim() + (a.software ? ' (software)' : '');
+  const device = deviceName(a);
   console.error(`adapter: ${device}`);
   const meta = { device, adapter: a, cpu: `${cpus()[0]?.model ?? 'unknown'} (${cpus().length} threads)`, node: process.version, date: new Date().toISOString(), steps, jsBudget };
   const rows: Row[] = [];

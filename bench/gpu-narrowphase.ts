@@ -50,7 +50,7 @@ import { GpuNarrowPhase } from '../src-gpu/narrowphase/narrowPhase';
 import type { NarrowPhaseResult } from '../src-gpu/narrowphase/narrowPhase';
 import { GpuPipeline } from '../src-gpu/pipeline';
 import { GpuWorld } from '../src-gpu/world/world';
-import { box, circle, fmt, median, rng, syntheticWorld } from './gpu-support';
+import { box, circle, deviceName, fmt, median, rng, syntheticWorld } from './gpu-support';
 import type { SyntheticBody } from './gpu-support';
 
 const DT = 1 / 60;
@@ -517,8 +517,8 @@ async function main(): Promise<number> {
     }
   }
   const a = ctx.adapterInfo;
-  const deviceName = `${a.vendor} ${a.architecture} ${a.device} ${a.description}`.replace(/\s+/g, ' ').trim() + (a.software ? ' (software)' : '');
-  console.error(`adapter: ${deviceName}; timestamps: ${ctx.timestamps}`);
+  const deviceLine = deviceName(a);
+  console.error(`adapter: ${deviceLine}; timestamps: ${ctx.timestamps}`);
   const rows: Row[] = [];
   const started = performance.now();
   for (const size of sizes) {
@@ -536,7 +536,7 @@ async function main(): Promise<number> {
       );
     }
   }
-  const meta = { device: deviceName, adapter: a, node: process.version, date: new Date().toISOString(), steps };
+  const meta = { device: deviceLine, adapter: a, node: process.version, date: new Date().toISOString(), steps };
   mkdirSync(outDir, { recursive: true });
   writeFileSync(path.join(outDir, 'gpu-narrowphase.json'), JSON.stringify({ meta, rows }, null, 2) + '\n');
   writeFileSync(path.join(outDir, 'gpu-narrowphase.md'), markdown(rows, meta));

@@ -32,7 +32,7 @@ import { GpuRenderer } from '../src-gpu/render/render';
 import { DT, POSITION_ITERATIONS, VELOCITY_ITERATIONS } from '../demos/compare/config';
 import type { SceneName } from '../demos/compare/config';
 import { buildScene } from '../demos/compare/scenes';
-import { fmt, median } from './gpu-support';
+import { deviceName, fmt, median } from './gpu-support';
 
 const SCENES: SceneName[] = ['pyramids', 'rain', 'sand'];
 const MAX_BODIES = 1_000_000;
@@ -161,7 +161,7 @@ async function main(): Promise<number> {
 
   const ctx = await requestGpu({ skipValidation: true });
   const a = ctx.adapterInfo;
-  const device = `${a.vendor} ${a.architecture} ${a.device} ${a.description}`.replace(/\s+/g, ' ').trim() + (a.software ? ' (software)' : '');
+  const device = deviceName(a);
   console.error(`adapter: ${device}`);
   const meta = { device, adapter: a, cpu: `${cpus()[0]?.model ?? 'unknown'} (${cpus().length} threads)`, node: process.version, date: new Date().toISOString(), frames };
   const rows: Row[] = [];

@@ -63,7 +63,7 @@ import { requestGpu } from '../src-gpu/device/device';
 import type { GpuContext } from '../src-gpu/device/device';
 import { WebGPUBackend } from '../src-gpu/backend/backend';
 import { GpuStepper } from '../src-gpu/stepper';
-import { box, circle, crossover, fmt, logLogChart, median, rng, settleHeap, sizeText } from './gpu-support';
+import { box, circle, crossover, deviceName, fmt, logLogChart, median, rng, settleHeap, sizeText } from './gpu-support';
 import type { Crossover } from './gpu-support';
 
 const DT = 1 / 60;
@@ -493,8 +493,8 @@ async function main(): Promise<number> {
     },
   });
   const a = ctx.adapterInfo;
-  const deviceName = `${a.vendor} ${a.architecture} ${a.device} ${a.description}`.replace(/\s+/g, ' ').trim() + (a.software ? ' (software)' : '');
-  console.error(`adapter: ${deviceName}; timestamps: ${ctx.timestamps}`);
+  const deviceLine = deviceName(a);
+  console.error(`adapter: ${deviceLine}; timestamps: ${ctx.timestamps}`);
   const rows: Row[] = [];
   const started = performance.now();
   for (const n of sizes) {
@@ -547,7 +547,7 @@ async function main(): Promise<number> {
     ),
   );
   const meta = {
-    device: deviceName,
+    device: deviceLine,
     adapter: a,
     timestamps: ctx.timestamps,
     skipValidation: values.validation !== true,

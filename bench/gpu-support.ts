@@ -1,7 +1,7 @@
 /*
- * Helpers shared by the GPU benchmarks (gpu-broadphase.ts, gpu-narrowphase.ts, gpu-step.ts): a
- * seeded random generator, medians, number formatting for the tables, the shapes they build, the
- * log-log chart, and a synthetic world of bodies for GpuWorld.
+ * Helpers shared by the GPU benchmarks (bench/gpu-*.ts): a seeded random generator, medians,
+ * number formatting for the tables, the adapter's name, the shapes they build, the log-log chart,
+ * and a synthetic world of bodies for GpuWorld.
  */
 import type { b2ChainShape } from '../src/collision/shapes/b2ChainShape';
 import { b2CircleShape } from '../src/collision/shapes/b2CircleShape';
@@ -9,6 +9,7 @@ import { b2PolygonShape } from '../src/collision/shapes/b2PolygonShape';
 import type { b2Shape } from '../src/collision/shapes/b2Shape';
 import { b2Transform, b2Vec2 } from '../src/common/b2Math';
 import type { b2World } from '../src/dynamics/b2World';
+import type { GpuAdapterSummary } from '../src-gpu/device/device';
 
 /** mulberry32: a small seeded generator, so every run builds the same scene. */
 export function rng(seed: number): () => number {
@@ -41,6 +42,11 @@ export function settleHeap(): boolean {
 }
 
 /** Three significant digits, whole numbers from 100; '–' for a missing value. */
+/** The adapter in one line for the tables: vendor, architecture, device, description, and whether it is software. */
+export function deviceName(a: GpuAdapterSummary): string {
+  return `${a.vendor} ${a.architecture} ${a.device} ${a.description}`.replace(/\s+/g, ' ').trim() + (a.software ? ' (software)' : '');
+}
+
 export function fmt(v: number | undefined, digits = 3): string {
   if (v === undefined || !Number.isFinite(v)) return '–';
   return v >= 100 ? v.toFixed(0) : v >= 10 ? v.toFixed(1) : v.toPrecision(digits);

@@ -11,7 +11,7 @@ import type { BackendName } from './backend';
 import { sceneDigests } from './determinism';
 import { srand } from './framework/random';
 import { g_debugDraw } from './framework/render';
-import { detectWebGpu } from './framework/demo';
+import { $, detectWebGpu } from './framework/demo';
 import type { DemoPane } from './framework/demo';
 import { kStepSettingKeys, Settings } from './framework/settings';
 import type { StepSettings } from './framework/settings';
@@ -20,7 +20,6 @@ import { benchEntries } from './scenes/bench';
 import { JsonScene } from './scenes/json';
 import { g_testEntries } from './tests/index';
 
-const $ = <T extends HTMLElement>(id: string) => document.getElementById(id) as T;
 
 const canvas = $<HTMLCanvasElement>('canvas');
 const testList = $<HTMLSelectElement>('tests');

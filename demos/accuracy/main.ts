@@ -6,6 +6,7 @@
  * `window.webphysicsAccuracy` is the state tests read.
  */
 
+import { $ } from '../framework/demo';
 import { MEASURE_UNITS, formatNumber, labelOf as resultLabel } from '../../bench/accuracy/report.mjs';
 import type { AccuracyRun, AccuracyScene } from '../../bench/accuracy/run.mjs';
 import { ParetoChart } from './chart';
@@ -35,7 +36,6 @@ declare global {
 const state: AccuracyPageState = { ready: false, error: null, scene: '', measure: '', points: [], tip: '', replay: null, expected: null };
 window.webphysicsAccuracy = state;
 
-const $ = <T extends HTMLElement>(id: string) => document.getElementById(id) as T;
 const sceneSelect = $<HTMLSelectElement>('scene');
 const measureSelect = $<HTMLSelectElement>('measure');
 const methodSelect = $<HTMLSelectElement>('method');

@@ -7,15 +7,13 @@
  * scripts what runs.
  */
 
-import { adapterName, detectWebGpu, StepTimes } from '../framework/demo';
+import { $, adapterName, detectWebGpu, fmtCount, fmtMs, showNote, StepTimes } from '../framework/demo';
 import type { DemoPane } from '../framework/demo';
 import { StepChart } from './chart';
 import { BODY_COUNTS, checkConfig, DT, SCENE_NAMES, SCENE_TITLES, TRANSFORM_STRIDE } from './config';
 import type { PaneStats, SceneConfig, SceneGeometry, SceneName } from './config';
 import type { FromWorker, PaneBackend, ToWorker } from './protocol';
 import { Camera, PaneView } from './view';
-
-const $ = <T extends HTMLElement>(id: string) => document.getElementById(id) as T;
 
 const sceneInput = $<HTMLSelectElement>('scene');
 const bodiesInput = $<HTMLInputElement>('bodies');
@@ -30,13 +28,7 @@ const pageStarted = performance.now();
 
 const DEFAULTS: SceneConfig = { scene: 'pyramids', bodies: 1000, seed: 1, sleep: false };
 
-function showMessage(text: string): void {
-  messageNote.textContent = text;
-  messageNote.hidden = text === '';
-}
-
-const fmtMs = (ms: number) => (!Number.isFinite(ms) ? '–' : ms < 10 ? ms.toFixed(2) : ms < 100 ? ms.toFixed(1) : ms.toFixed(0));
-const fmtCount = (n: number) => n.toLocaleString('en-US');
+const showMessage = (text: string) => showNote(messageNote, text);
 
 /** One pane: its worker, the buffers it steps into, its drawing and its statistics. */
 class Pane {
@@ -344,16 +336,7 @@ for (const pane of panes) {
     redrawAll();
   });
   canvas.addEventListener('pointerup', () => (drag = null));
-  canvas.addEventListener(
-    'wheel',
-    (event) => {
-      event.preventDefault();
-      const rect = canvas.getBoundingClientRect();
-      camera.zoomAt(event.deltaY < 0 ? 1.1 : 1 / 1.1, event.clientX - rect.left, event.clientY - rect.top, rect.width, rect.height);
-      redrawAll();
-    },
-    { passive: false },
-  );
+  camera.zoomOnWheel(canvas, redrawAll);
 }
 window.addEventListener('resize', redrawAll);
 

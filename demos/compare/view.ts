@@ -37,6 +37,32 @@ export class Camera {
     this.x -= dx / this.scale;
     this.y += dy / this.scale;
   }
+
+  /** The world point under the page point (clientX, clientY) of `canvas`. */
+  toWorld(canvas: HTMLCanvasElement, clientX: number, clientY: number): { x: number; y: number } {
+    const rect = canvas.getBoundingClientRect();
+    return { x: this.x + (clientX - rect.left - rect.width / 2) / this.scale, y: this.y - (clientY - rect.top - rect.height / 2) / this.scale };
+  }
+
+  /** The page point of a world point in `canvas`. */
+  toClient(canvas: HTMLCanvasElement, x: number, y: number): { x: number; y: number } {
+    const rect = canvas.getBoundingClientRect();
+    return { x: rect.left + rect.width / 2 + (x - this.x) * this.scale, y: rect.top + rect.height / 2 - (y - this.y) * this.scale };
+  }
+
+  /** Zooms by 1.1 a wheel notch about the pointer in `canvas`, then calls `changed`. */
+  zoomOnWheel(canvas: HTMLCanvasElement, changed: () => void = () => undefined): void {
+    canvas.addEventListener(
+      'wheel',
+      (event) => {
+        event.preventDefault();
+        const rect = canvas.getBoundingClientRect();
+        this.zoomAt(event.deltaY < 0 ? 1.1 : 1 / 1.1, event.clientX - rect.left, event.clientY - rect.top, rect.width, rect.height);
+        changed();
+      },
+      { passive: false },
+    );
+  }
 }
 
 const STYLES = [

@@ -1,10 +1,23 @@
 /*
  * What every demo page shares: `window.webphysicsDemo`, the state tests and scripts read while a
  * page runs; step times as a median over the last second; whether there is WebGPU, and the
- * adapter named for people.
+ * adapter named for people; finding elements, showing a note, and formatting numbers.
  */
 
 import type { GpuAdapterSummary } from '../../src-gpu/device/device';
+
+/** The element of this id (the page's own markup: it exists). */
+export const $ = <T extends HTMLElement>(id: string) => document.getElementById(id) as T;
+
+/** Milliseconds with three significant digits or so; a dash when unknown. */
+export const fmtMs = (ms: number) => (!Number.isFinite(ms) ? '–' : ms < 10 ? ms.toFixed(2) : ms < 100 ? ms.toFixed(1) : ms.toFixed(0));
+export const fmtCount = (n: number) => n.toLocaleString('en-US');
+
+/** Shows `text` in `note`, or hides the note when the text is empty. */
+export function showNote(note: HTMLElement, text: string): void {
+  note.textContent = text;
+  note.hidden = text === '';
+}
 
 export interface DemoPane {
   backend: 'js' | 'webgpu';

@@ -26,7 +26,7 @@ import { sceneGeometry } from '../compare/pane';
 import { buildScene } from '../compare/scenes';
 import type { BuiltScene } from '../compare/scenes';
 import { Camera, PaneView } from '../compare/view';
-import { detectWebGpu } from '../framework/demo';
+import { $, detectWebGpu, fmtCount, fmtMs, showNote } from '../framework/demo';
 import type { DemoPane } from '../framework/demo';
 import { FrameLoop, GpuWorldView } from '../framework/gpuView';
 
@@ -35,7 +35,6 @@ const GPU_COUNTS = [10_000, 20_000, 50_000, 100_000, 200_000, 500_000, 1_000_000
 const JS_COUNTS = [1_000, 2_000, 5_000, 10_000];
 const SEED = 1;
 
-const $ = <T extends HTMLElement>(id: string) => document.getElementById(id) as T;
 const canvas = $<HTMLCanvasElement>('world');
 const sceneInput = $<HTMLSelectElement>('scene');
 const bodiesInput = $<HTMLSelectElement>('bodies');
@@ -45,13 +44,7 @@ const messageNote = $<HTMLParagraphElement>('message');
 const statsLine = $<HTMLParagraphElement>('stats');
 const camera = new Camera();
 
-const fmtMs = (ms: number) => (!Number.isFinite(ms) ? '–' : ms < 10 ? ms.toFixed(2) : ms < 100 ? ms.toFixed(1) : ms.toFixed(0));
-const fmtCount = (n: number) => n.toLocaleString('en-US');
-
-function showMessage(text: string): void {
-  messageNote.textContent = text;
-  messageNote.hidden = text === '';
-}
+const showMessage = (text: string) => showNote(messageNote, text);
 
 /** What steps and draws the world: the GPU (stepped and drawn there) or the JavaScript engine and a 2D canvas. */
 interface Stage {
@@ -208,9 +201,9 @@ async function rebuild(next: SceneConfig): Promise<void> {
 
 // ---- Pointer: drag a body with a mouse joint, or pan; wheel zooms ----
 
-function toWorld(event: PointerEvent | WheelEvent): b2Vec2 {
-  const rect = canvas.getBoundingClientRect();
-  return new b2Vec2(camera.x + (event.clientX - rect.left - rect.width / 2) / camera.scale, camera.y - (event.clientY - rect.top - rect.height / 2) / camera.scale);
+function toWorld(event: PointerEvent): b2Vec2 {
+  const p = camera.toWorld(canvas, event.clientX, event.clientY);
+  return new b2Vec2(p.x, p.y);
 }
 
 let pan: { x: number; y: number } | null = null;
@@ -254,15 +247,7 @@ canvas.addEventListener('pointerup', () => {
   window.largeDemo.dragging = null;
 });
 
-canvas.addEventListener(
-  'wheel',
-  (event) => {
-    event.preventDefault();
-    const rect = canvas.getBoundingClientRect();
-    camera.zoomAt(event.deltaY < 0 ? 1.1 : 1 / 1.1, event.clientX - rect.left, event.clientY - rect.top, rect.width, rect.height);
-  },
-  { passive: false },
-);
+camera.zoomOnWheel(canvas);
 
 // ---- Controls and the URL ----
 
@@ -350,10 +335,7 @@ window.largeDemo = {
   gpuFrameMs: NaN,
   drawn: null,
   dragging: null,
-  worldToClient(x: number, y: number) {
-    const rect = canvas.getBoundingClientRect();
-    return { x: rect.left + rect.width / 2 + (x - camera.x) * camera.scale, y: rect.top + rect.height / 2 - (y - camera.y) * camera.scale };
-  },
+  worldToClient: (x: number, y: number) => camera.toClient(canvas, x, y),
   lookAt(x: number, y: number, scale: number) {
     Object.assign(camera, { x, y, scale });
   },

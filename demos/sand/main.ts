@@ -21,7 +21,7 @@ import type { GpuContext } from '../../src-gpu/device/device';
 import { fitCanvas } from '../canvas';
 import { Camera } from '../compare/view';
 import { DT, POSITION_ITERATIONS, VELOCITY_ITERATIONS } from '../compare/config';
-import { detectWebGpu } from '../framework/demo';
+import { $, detectWebGpu, fmtCount, fmtMs, showNote } from '../framework/demo';
 import { FrameLoop, GpuWorldView } from '../framework/gpuView';
 
 const GPU_GRAINS = 200_000;
@@ -35,20 +35,13 @@ const SPOUT_SPEED = 15;
 /** A stroke's points closer than this are merged: segments at least this long. */
 const MIN_SEGMENT = 0.4;
 
-const $ = <T extends HTMLElement>(id: string) => document.getElementById(id) as T;
 const canvas = $<HTMLCanvasElement>('world');
 const adapterNote = $<HTMLParagraphElement>('adapter');
 const messageNote = $<HTMLParagraphElement>('message');
 const statsLine = $<HTMLParagraphElement>('stats');
 const pourButton = $<HTMLButtonElement>('pour');
 const camera = new Camera();
-const fmtMs = (ms: number) => (!Number.isFinite(ms) ? '–' : ms < 10 ? ms.toFixed(2) : ms < 100 ? ms.toFixed(1) : ms.toFixed(0));
-const fmtCount = (n: number) => n.toLocaleString('en-US');
-
-function showMessage(text: string): void {
-  messageNote.textContent = text;
-  messageNote.hidden = text === '';
-}
+const showMessage = (text: string) => showNote(messageNote, text);
 
 /** The world: a floor, a first container under the spout, the grains, the containers drawn. */
 class Sandbox {
@@ -181,9 +174,9 @@ async function restart(): Promise<void> {
 
 // ---- Pointer: a stroke draws a container; the wheel zooms ----
 
-function toWorld(event: PointerEvent | WheelEvent): b2Vec2 {
-  const rect = canvas.getBoundingClientRect();
-  return new b2Vec2(camera.x + (event.clientX - rect.left - rect.width / 2) / camera.scale, camera.y - (event.clientY - rect.top - rect.height / 2) / camera.scale);
+function toWorld(event: PointerEvent): b2Vec2 {
+  const p = camera.toWorld(canvas, event.clientX, event.clientY);
+  return new b2Vec2(p.x, p.y);
 }
 
 canvas.addEventListener('pointerdown', (event) => {
@@ -207,15 +200,7 @@ canvas.addEventListener('pointerup', () => {
   stroke = null;
 });
 
-canvas.addEventListener(
-  'wheel',
-  (event) => {
-    event.preventDefault();
-    const rect = canvas.getBoundingClientRect();
-    camera.zoomAt(event.deltaY < 0 ? 1.1 : 1 / 1.1, event.clientX - rect.left, event.clientY - rect.top, rect.width, rect.height);
-  },
-  { passive: false },
-);
+camera.zoomOnWheel(canvas);
 
 pourButton.addEventListener('click', () => {
   pouring = !pouring;
@@ -257,10 +242,7 @@ window.sandDemo = {
   steps: 0,
   frameMs: NaN,
   workMs: NaN,
-  worldToClient(x: number, y: number) {
-    const rect = canvas.getBoundingClientRect();
-    return { x: rect.left + rect.width / 2 + (x - camera.x) * camera.scale, y: rect.top + rect.height / 2 - (y - camera.y) * camera.scale };
-  },
+  worldToClient: (x: number, y: number) => camera.toClient(canvas, x, y),
 };
 
 function publish(now: number): void {

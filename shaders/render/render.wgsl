@@ -93,6 +93,24 @@ fn body_colour(b: u32) -> vec3<f32> {
   return vec3<f32>(0.9, 0.7, 0.7);
 }
 
+// A proxy slot's shape record: whether the slot is live, its body, its child index, and the
+// fixture's shape type, vertex count, pool offset and radius.
+struct ProxyShape {
+  live: bool,
+  body: u32,
+  child: u32,
+  shapeType: u32,
+  count: u32,
+  base: u32,
+  radius: f32,
+}
+
+fn proxy_shape(proxy: u32) -> ProxyShape {
+  let info = proxyRef[proxy];
+  let shape = fixtureShape[info.x];
+  return ProxyShape((info.w & PROXY_LIVE) != 0u, info.z, info.y, shape.x & 0xfu, shape.x >> 8u, shape.y, bitcast<f32>(shape.w));
+}
+
 // The corners of a quad as two triangles, in [-1, 1]^2.
 fn quad_corner(i: u32) -> vec2<f32> {
   let x = select(-1.0, 1.0, i == 1u || i == 2u || i == 4u);
@@ -105,35 +123,32 @@ fn quad_corner(i: u32) -> vec2<f32> {
 // b2Draw::DrawSolidPolygon and DrawSolidCircle fill.
 @vertex
 fn fill_vertex(@builtin(vertex_index) v: u32, @builtin(instance_index) proxy: u32) -> Varyings {
-  let proxyInfo = proxyRef[proxy];
-  if ((proxyInfo.w & PROXY_LIVE) == 0u) {
+  let s = proxy_shape(proxy);
+  if (!s.live) {
     return hidden();
   }
-  let shape = fixtureShape[proxyInfo.x];
-  let shapeType = shape.x & 0xfu;
-  let count = shape.x >> 8u;
   var out: Varyings;
-  if (shapeType == SHAPE_CIRCLE) {
+  if (s.shapeType == SHAPE_CIRCLE) {
     if (v >= 6u) {
       return hidden();
     }
     let corner = quad_corner(v);
-    out.position = body_point_clip(proxyInfo.z, shapePool[shape.y] + corner * bitcast<f32>(shape.w));
+    out.position = body_point_clip(s.body, shapePool[s.base] + corner * s.radius);
     out.local = corner;
     out.circle = 1u;
-  } else if (shapeType == SHAPE_POLYGON) {
+  } else if (s.shapeType == SHAPE_POLYGON) {
     let triangle = v / 3u;
     let k = v % 3u;
-    if (triangle + 2u >= count) {
+    if (triangle + 2u >= s.count) {
       return hidden();
     }
-    out.position = body_point_clip(proxyInfo.z, shapePool[shape.y + select(triangle + k, 0u, k == 0u)]);
+    out.position = body_point_clip(s.body, shapePool[s.base + select(triangle + k, 0u, k == 0u)]);
     out.local = vec2<f32>(0.0);
     out.circle = 0u;
   } else {
     return hidden();
   }
-  out.colour = vec4<f32>(0.5 * body_colour(proxyInfo.z), 0.5);
+  out.colour = vec4<f32>(0.5 * body_colour(s.body), 0.5);
   return out;
 }
 
@@ -141,42 +156,38 @@ fn fill_vertex(@builtin(vertex_index) v: u32, @builtin(instance_index) proxy: u3
 // along the body's x axis (b2Draw::DrawSolidCircle's axis), an edge or chain child's segment.
 @vertex
 fn outline_vertex(@builtin(vertex_index) v: u32, @builtin(instance_index) proxy: u32) -> Varyings {
-  let proxyInfo = proxyRef[proxy];
-  if ((proxyInfo.w & PROXY_LIVE) == 0u) {
+  let s = proxy_shape(proxy);
+  if (!s.live) {
     return hidden();
   }
-  let shape = fixtureShape[proxyInfo.x];
-  let shapeType = shape.x & 0xfu;
-  let count = shape.x >> 8u;
   let side = v / 2u;
   let end = v % 2u;
   var p: vec2<f32>;
-  if (shapeType == SHAPE_CIRCLE) {
-    let centre = shapePool[shape.y];
-    let radius = bitcast<f32>(shape.w);
+  if (s.shapeType == SHAPE_CIRCLE) {
+    let centre = shapePool[s.base];
     if (side < CIRCLE_SEGMENTS) {
       let angle = 2.0 * PI * f32(side + end) / f32(CIRCLE_SEGMENTS);
-      p = centre + radius * vec2<f32>(cos(angle), sin(angle));
+      p = centre + s.radius * vec2<f32>(cos(angle), sin(angle));
     } else if (side == CIRCLE_SEGMENTS) {
-      p = centre + f32(end) * vec2<f32>(radius, 0.0);
+      p = centre + f32(end) * vec2<f32>(s.radius, 0.0);
     } else {
       return hidden();
     }
-  } else if (shapeType == SHAPE_POLYGON) {
-    if (side >= count) {
+  } else if (s.shapeType == SHAPE_POLYGON) {
+    if (side >= s.count) {
       return hidden();
     }
-    p = shapePool[shape.y + (side + end) % count];
+    p = shapePool[s.base + (side + end) % s.count];
   } else {
     // An edge's vertices 1 and 2 come first in its record; a chain's child i is (v[i], v[i+1]).
     if (side > 0u) {
       return hidden();
     }
-    p = shapePool[shape.y + select(0u, proxyInfo.y, shapeType == SHAPE_CHAIN) + end];
+    p = shapePool[s.base + select(0u, s.child, s.shapeType == SHAPE_CHAIN) + end];
   }
   var out: Varyings;
-  out.position = body_point_clip(proxyInfo.z, p);
-  out.colour = vec4<f32>(body_colour(proxyInfo.z), 1.0);
+  out.position = body_point_clip(s.body, p);
+  out.colour = vec4<f32>(body_colour(s.body), 1.0);
   out.local = vec2<f32>(0.0);
   out.circle = 0u;
   return out;

@@ -11,6 +11,7 @@ import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import puppeteer from 'puppeteer-core';
 import type { Browser, Page } from 'puppeteer-core';
+import { afterAll, beforeAll } from 'vitest';
 import { buildDemos } from '../../scripts/build-demos.mjs';
 import { chromiumArgs, chromiumPath } from '../../scripts/chromium.mjs';
 
@@ -61,6 +62,36 @@ export async function serveTestbed(): Promise<Testbed> {
       await server.close();
       rmSync(dir, { recursive: true, force: true });
     },
+  };
+}
+
+/** Serves the demos for the tests of the file or describe block that calls it; the getter gives the server. */
+export function useTestbed(): () => Testbed {
+  let testbed: Testbed | null = null;
+  beforeAll(async () => {
+    testbed = await serveTestbed();
+  }, 120_000);
+  afterAll(async () => {
+    await testbed?.close();
+  });
+  return () => {
+    if (testbed === null) throw new Error('the testbed is served from beforeAll on');
+    return testbed;
+  };
+}
+
+/** Launches a browser for the tests of the describe block that calls it; the getter gives it. */
+export function useBrowser(launch: () => Promise<LaunchedBrowser>): () => LaunchedBrowser {
+  let browser: LaunchedBrowser | null = null;
+  beforeAll(async () => {
+    browser = await launch();
+  }, 120_000);
+  afterAll(async () => {
+    await browser?.close();
+  });
+  return () => {
+    if (browser === null) throw new Error('the browser is launched from beforeAll on');
+    return browser;
   };
 }
 

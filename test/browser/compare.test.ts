@@ -9,7 +9,7 @@
 import path from 'node:path';
 import type { Page } from 'puppeteer-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { collectErrors, ensureArtifactsDir, launchChromium, serveTestbed } from './chromium';
+import { collectErrors, ensureArtifactsDir, launchChromium, serveTestbed, useBrowser } from './chromium';
 import { launchFirefox } from './firefox';
 import type { LaunchedBrowser, Testbed } from './chromium';
 import type { WebPhysicsDemo } from '../../demos/framework/demo';
@@ -169,18 +169,10 @@ for (const [name, launch, prefix] of [
   ['Firefox', launchFirefox, 'firefox-'],
 ] as const) {
   describe(`the comparison page without WebGPU (${name})`, () => {
-    let browser: LaunchedBrowser;
-
-    beforeAll(async () => {
-      browser = await launch();
-    }, 120_000);
-
-    afterAll(async () => {
-      await browser?.close();
-    });
+    const browser = useBrowser(launch);
 
     it('says there is no WebGPU and runs the JavaScript pane alone', async () => {
-      const { page, errors } = await open(browser, '?scene=tumbler&bodies=500');
+      const { page, errors } = await open(browser(), '?scene=tumbler&bodies=500');
       const state = await stepped(page, 3);
       expect(state.panes.map((p) => p.backend)).toEqual(['js']);
       expect(await page.$eval('#adapter', (e) => e.textContent)).toMatch(/^This browser (lacks WebGPU|has WebGPU but no adapter).*: the JavaScript engine runs alone\.$/);

@@ -8,22 +8,13 @@
 
 import path from 'node:path';
 import type { Page } from 'puppeteer-core';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { collectErrors, ensureArtifactsDir, launchChromium, serveTestbed } from './chromium';
-import type { LaunchedBrowser, Testbed } from './chromium';
+import { describe, expect, it } from 'vitest';
+import { collectErrors, ensureArtifactsDir, launchChromium, useBrowser, useTestbed } from './chromium';
+import type { LaunchedBrowser } from './chromium';
 import { launchFirefox } from './firefox';
 
-let testbed: Testbed;
-let artifacts: string;
-
-beforeAll(async () => {
-  artifacts = ensureArtifactsDir();
-  testbed = await serveTestbed();
-}, 120_000);
-
-afterAll(async () => {
-  await testbed?.close();
-});
+const testbed = useTestbed();
+const artifacts = ensureArtifactsDir();
 
 interface Mapped {
   label: string;
@@ -46,7 +37,7 @@ async function open(browser: LaunchedBrowser, query: string): Promise<{ page: Pa
       return mapAsync.apply(this, args);
     };
   });
-  await page.goto(`${testbed.url}large.html${query}`, { waitUntil: 'load' });
+  await page.goto(`${testbed().url}large.html${query}`, { waitUntil: 'load' });
   return { page, errors };
 }
 
@@ -82,18 +73,10 @@ async function drawnPixels(page: Page): Promise<number> {
 }
 
 describe('the large-world page with WebGPU (Chromium, SwiftShader)', () => {
-  let chromium: LaunchedBrowser;
-
-  beforeAll(async () => {
-    chromium = await launchChromium({ webgpu: true });
-  }, 120_000);
-
-  afterAll(async () => {
-    await chromium?.close();
-  });
+  const chromium = useBrowser(() => launchChromium({ webgpu: true }));
 
   it('steps and draws 10^4 bodies on the GPU, mapping no buffer to draw them', async () => {
-    const { page, errors } = await open(chromium, '?scene=pyramids&bodies=10000');
+    const { page, errors } = await open(chromium(), '?scene=pyramids&bodies=10000');
     try {
       const before = await framesDone(page, 2);
       const after = await framesDone(page, before.frames + 4);
@@ -117,7 +100,7 @@ describe('the large-world page with WebGPU (Chromium, SwiftShader)', () => {
   }, 300_000);
 
   it('drags a body picked on the GPU with a mouse joint', async () => {
-    const { page, errors } = await open(chromium, '?scene=pyramids&bodies=10000');
+    const { page, errors } = await open(chromium(), '?scene=pyramids&bodies=10000');
     try {
       await framesDone(page, 2);
       // The top box of the first pyramid: body 210 - 1 of the scene (the ground is body 0).
@@ -144,7 +127,7 @@ describe('the large-world page with WebGPU (Chromium, SwiftShader)', () => {
   }, 300_000);
 
   it('names a bad URL parameter and keeps its default', async () => {
-    const { page, errors } = await open(chromium, '?scene=volcano&bodies=12');
+    const { page, errors } = await open(chromium(), '?scene=volcano&bodies=12');
     try {
       const s = await framesDone(page, 1);
       expect(s.scene).toBe('pyramids');
@@ -164,18 +147,10 @@ for (const [name, launch, prefix] of [
   ['Firefox', launchFirefox, 'firefox-'],
 ] as const) {
   describe(`the large-world page without WebGPU (${name})`, () => {
-    let browser: LaunchedBrowser;
-
-    beforeAll(async () => {
-      browser = await launch();
-    }, 120_000);
-
-    afterAll(async () => {
-      await browser?.close();
-    });
+    const browser = useBrowser(launch);
 
     it('says there is no WebGPU and runs the JavaScript engine with fewer bodies', async () => {
-      const { page, errors } = await open(browser, '?scene=sand&bodies=2000');
+      const { page, errors } = await open(browser(), '?scene=sand&bodies=2000');
       try {
         const s = await framesDone(page, 3);
         expect(s.backend).toBe('js');

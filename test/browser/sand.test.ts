@@ -7,22 +7,12 @@
 
 import path from 'node:path';
 import type { Page } from 'puppeteer-core';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { collectErrors, ensureArtifactsDir, launchChromium, serveTestbed } from './chromium';
-import type { LaunchedBrowser, Testbed } from './chromium';
+import { describe, expect, it } from 'vitest';
+import { collectErrors, ensureArtifactsDir, launchChromium, useBrowser, useTestbed } from './chromium';
 import { launchFirefox } from './firefox';
 
-let testbed: Testbed;
-let artifacts: string;
-
-beforeAll(async () => {
-  artifacts = ensureArtifactsDir();
-  testbed = await serveTestbed();
-}, 120_000);
-
-afterAll(async () => {
-  await testbed?.close();
-});
+const testbed = useTestbed();
+const artifacts = ensureArtifactsDir();
 
 type Demo = Omit<Window['sandDemo'], 'worldToClient'>;
 const state = (page: Page): Promise<Demo> => page.evaluate(() => JSON.parse(JSON.stringify(window.sandDemo)) as Demo);
@@ -37,22 +27,14 @@ for (const [name, launch, backend, prefix] of [
   ['Firefox, no WebGPU', launchFirefox, 'js', 'firefox-'],
 ] as const) {
   describe(`the sand page (${name})`, () => {
-    let browser: LaunchedBrowser;
-
-    beforeAll(async () => {
-      browser = await launch();
-    }, 120_000);
-
-    afterAll(async () => {
-      await browser?.close();
-    });
+    const browser = useBrowser(launch);
 
     it('pours grains while the spout runs, and a pointer stroke draws a container', async () => {
-      const page = await browser.browser.newPage();
+      const page = await browser().browser.newPage();
       await page.setViewport({ width: 1000, height: 700 });
       const errors = collectErrors(page);
       try {
-        await page.goto(`${testbed.url}sand.html`, { waitUntil: 'load' });
+        await page.goto(`${testbed().url}sand.html`, { waitUntil: 'load' });
         const first = await stepsDone(page, 2);
         expect(first.backend).toBe(backend);
         expect(first.containers).toBe(1);
