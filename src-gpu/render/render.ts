@@ -188,22 +188,22 @@ export class GpuRenderer {
     if (proxies > 0 || joints > 0) {
       pass.setBindGroup(0, this.group(this.bodyLayout, 'bodies', [
         this.view,
-        mirror.bodyXf.gpu.buffer,
-        mirror.bodyCell.gpu.buffer,
-        mirror.bodyFlags.gpu.buffer,
-        mirror.bodyAwake.gpu.buffer,
+        mirror.bodyXf.buffer,
+        mirror.bodyCell.buffer,
+        mirror.bodyFlags.buffer,
+        mirror.bodyAwake.buffer,
         this.colourBuffer,
       ]));
     }
     if (proxies > 0) {
-      pass.setBindGroup(1, this.group(this.shapeLayout, 'shapes', [mirror.proxyRef.gpu.buffer, mirror.fixtureShape.gpu.buffer, mirror.shapePool.gpu.buffer]));
+      pass.setBindGroup(1, this.group(this.shapeLayout, 'shapes', [mirror.proxyRef.buffer, mirror.fixtureShape.buffer, mirror.shapePool.buffer]));
       pass.setPipeline(this.fill);
       pass.draw(FILL_VERTICES, proxies);
       pass.setPipeline(this.outline);
       pass.draw(OUTLINE_VERTICES, proxies);
     }
     if (joints > 0) {
-      pass.setBindGroup(2, this.group(this.jointLayout, 'joints', [mirror.joints.gpu.buffer, mirror.jointParams.gpu.buffer]));
+      pass.setBindGroup(2, this.group(this.jointLayout, 'joints', [mirror.joints.buffer, mirror.jointParams.buffer]));
       pass.setPipeline(this.jointLines);
       pass.draw(JOINT_VERTICES, joints);
     }
