@@ -22,7 +22,7 @@ struct View {
 
 const COLOUR_STATE: u32 = 0u;
 const COLOUR_BODY: u32 = 1u;
-/** Segments of a circle's outline (its radius line is one more). */
+// Sides of a circle's outline (its radius line is one more): RENDER_CIRCLE_SEGMENTS in layout.ts.
 const CIRCLE_SEGMENTS: u32 = 16u;
 const BODY_LIVE: u32 = 0x80000000u;
 const JOINT_LIVE: u32 = 0x80000000u;

@@ -139,6 +139,9 @@ export const USAGE = {
   QUERY_RESOLVE: 0x0200,
 } as const;
 
+/** Sides of a circle's outline drawn by the renderer (shaders/render/render.wgsl CIRCLE_SEGMENTS). */
+export const RENDER_CIRCLE_SEGMENTS = 16;
+
 /** GPUShaderStage, without relying on the WebGPU globals being installed. */
 export const SHADER_STAGE = { VERTEX: 0x1, FRAGMENT: 0x2, COMPUTE: 0x4 } as const;
 

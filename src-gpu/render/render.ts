@@ -17,7 +17,8 @@ import type { b2Body } from '../../src/dynamics/b2Body';
 import type { WebGPUBackend } from '../backend/backend';
 import type { GpuContext } from '../device/device';
 import { bufferId } from '../device/device';
-import { SHADER_STAGE, USAGE } from '../device/layout';
+import { b2_maxPolygonVertices } from '../../src/common/b2Settings';
+import { RENDER_CIRCLE_SEGMENTS, SHADER_STAGE, USAGE } from '../device/layout';
 import { SHADERS } from '../device/shaders';
 import type { GpuWorld } from '../world/world';
 
@@ -46,9 +47,9 @@ export interface GpuFrameStats {
 }
 
 const VIEW_WORDS = 8;
-/** Vertices per instance: a fan of a polygon of MAX_POLYGON_VERTICES; a circle's 16 sides and its radius, two each; a joint's three lines. */
-const FILL_VERTICES = 18;
-const OUTLINE_VERTICES = 34;
+/** Vertices per instance: the fan of the largest polygon; a circle's sides and its radius line, two each; a joint's three lines. */
+const FILL_VERTICES = 3 * (b2_maxPolygonVertices - 2);
+const OUTLINE_VERTICES = 2 * (RENDER_CIRCLE_SEGMENTS + 1);
 const JOINT_VERTICES = 6;
 const COLOUR_MODE = { state: 0, body: 1 } as const;
 

@@ -225,13 +225,14 @@ it('gives a constant declared in several WGSL files one value (f32 constants as 
   expect(clashes).toEqual([]);
 });
 
-it('uses the tile sizes the host dispatches with', () => {
+it('uses the tile sizes the host dispatches with, and the circle outline the renderer draws', () => {
   expect(constants(wgsl('radixSort')).get('TILE')).toBe(layout.SORT_TILE);
   expect(constants(wgsl('scan')).get('BLOCK')).toBe(layout.SCAN_BLOCK);
   expect(constants(wgsl('axis')).get('ITEMS_PER_GROUP')).toBe(layout.AXIS_ITEMS_PER_GROUP);
   expect(constants(wgsl('sweep')).get('CHUNK')).toBe(layout.SWEEP_CHUNK);
   expect(constants(wgsl('contacts')).get('SORT_TILE')).toBe(layout.SORT_TILE);
   expect(constants(wgsl('contacts')).get('SCAN_BLOCK')).toBe(layout.SCAN_BLOCK);
+  expect(constants(wgsl('render')).get('CIRCLE_SEGMENTS')).toBe(layout.RENDER_CIRCLE_SEGMENTS);
 });
 
 it('has one WGSL file and one host module per stage, each opening with what it reads and writes', () => {
