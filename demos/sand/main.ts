@@ -3,11 +3,11 @@
  * pour from a spout into containers the user draws with the pointer (each stroke a static body of
  * edges). Resting grains fall asleep, so a settled pile costs almost nothing. On WebGPU the grains
  * are stepped and drawn on the GPU (GpuWorldView), up to GPU_GRAINS; without WebGPU the JavaScript
- * engine pours up to JS_GRAINS, drawn by the package's canvas b2DebugDraw, and the page says so.
+ * engine pours up to JS_GRAINS, drawn by the package's canvas b2DebugDraw (CanvasWorldView), and
+ * the page says so.
  * window.webphysicsDemo and window.sandDemo tell tests and scripts what runs.
  */
 
-import { b2DebugDraw } from '../../src/api/b2DebugDraw';
 import { b2CircleShape } from '../../src/collision/shapes/b2CircleShape';
 import { b2EdgeShape } from '../../src/collision/shapes/b2EdgeShape';
 import { b2PolygonShape } from '../../src/collision/shapes/b2PolygonShape';
@@ -18,10 +18,10 @@ import { b2FixtureDef } from '../../src/dynamics/b2Fixture';
 import { b2World } from '../../src/dynamics/b2World';
 import { requestGpu } from '../../src-gpu/device/device';
 import type { GpuContext } from '../../src-gpu/device/device';
-import { fitCanvas } from '../canvas';
 import { Camera } from '../compare/view';
 import { DT, POSITION_ITERATIONS, VELOCITY_ITERATIONS } from '../compare/config';
 import { $, detectWebGpu, fmtCount, fmtMs, showNote } from '../framework/demo';
+import { CanvasWorldView } from '../framework/canvasView';
 import { FrameLoop, GpuWorldView } from '../framework/gpuView';
 
 const GPU_GRAINS = 200_000;
@@ -100,40 +100,10 @@ class Sandbox {
   }
 }
 
-/** The JavaScript engine's world drawn by the package's canvas b2DebugDraw, y up, at the camera. */
-class CanvasView {
-  private readonly ctx: CanvasRenderingContext2D;
-  private readonly draw = new b2DebugDraw();
-
-  constructor(private readonly world: b2World) {
-    const ctx = canvas.getContext('2d');
-    if (ctx === null) throw new Error('this browser gives no 2D canvas context');
-    this.ctx = ctx;
-    this.draw.SetSprite(ctx);
-    this.draw.SetFlags(b2DebugDraw.e_shapeBit);
-    // The page clears the canvas itself, under the identity transform.
-    this.draw.Clear = () => undefined;
-    world.SetDebugDraw(this.draw);
-  }
-
-  async frame(step: () => void): Promise<void> {
-    step();
-    const { width, height, dpr } = fitCanvas(canvas);
-    const ctx = this.ctx;
-    ctx.setTransform(1, 0, 0, 1, 0, 0);
-    ctx.fillStyle = '#000';
-    ctx.fillRect(0, 0, canvas.width, canvas.height);
-    const s = camera.scale * dpr;
-    ctx.setTransform(s, 0, 0, -s, (width / 2) * dpr - camera.x * s, (height / 2) * dpr + camera.y * s);
-    this.draw.SetLineThickness(1 / s);
-    this.world.DrawDebugData();
-  }
-}
-
 let gpuContext: GpuContext | null = null;
 let sandbox: Sandbox | null = null;
 let gpuView: GpuWorldView | null = null;
-let canvasView: CanvasView | null = null;
+let canvasView: CanvasWorldView | null = null;
 let pouring = true;
 let steps = 0;
 let stroke: b2Vec2[] | null = null;
@@ -148,7 +118,7 @@ const loop = new FrameLoop(
       steps++;
     };
     if (gpuView !== null) return gpuView.frame(step, camera);
-    return canvasView !== null ? canvasView.frame(step) : null;
+    return canvasView !== null ? canvasView.frame(step, camera) : null;
   },
   (now) => publish(now),
   (error) => {
@@ -164,7 +134,7 @@ async function restart(): Promise<void> {
   gpuView = null;
   const box = new Sandbox(gpuContext !== null ? GPU_GRAINS : JS_GRAINS, gpuContext !== null ? GPU_POUR : JS_POUR);
   if (gpuContext !== null) gpuView = await GpuWorldView.create(box.world, gpuContext, canvas);
-  else canvasView = new CanvasView(box.world);
+  else canvasView = new CanvasWorldView(box.world, canvas);
   const rect = canvas.getBoundingClientRect();
   camera.fit({ x: 0, y: 20, halfWidth: 30, halfHeight: 24 }, rect.width, rect.height);
   steps = 0;
