@@ -74,4 +74,4 @@ for (let candidate = firstPort; served === null; ++candidate) {
     process.exit(1);
   }
 }
-console.log(`WebPhysics testbed: ${served.url}   side by side: ${served.url}compare.html   (Ctrl+C to stop)`);
+console.log(`WebPhysics testbed: ${served.url}   side by side: ${served.url}compare.html   large worlds: ${served.url}large.html   (Ctrl+C to stop)`);
