@@ -228,7 +228,7 @@ canvas.addEventListener('pointerdown', (event) => {
     joint.m_localAnchorB.Set(hit.localPoint.x, hit.localPoint.y);
     mouse = { joint, bodyIndex: current.scene.bodies.indexOf(hit.body), target: p };
     window.largeDemo.dragging = mouse.bodyIndex;
-  });
+  }, (error) => showMessage(`Picking failed: ${error instanceof Error ? error.message : String(error)}`));
   event.preventDefault();
 });
 
