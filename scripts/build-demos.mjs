@@ -1,8 +1,9 @@
 // The demo pages (demos/): bundles the testbed (demos/main.ts) into <outDir>/testbed.js, the
 // comparison page (demos/compare/main.ts, and its worker) into compare.js and compare-worker.js
 // the accuracy page (demos/accuracy/main.ts) into accuracy.js, the large-world page
-// (demos/large/main.ts) into large.js, and the sand and Brownian motion pages (demos/sand,
-// demos/brownian) into sand.js and brownian.js with esbuild, and copies the
+// (demos/large/main.ts) into large.js, and the sand, Brownian motion and touch pages
+// (demos/sand, demos/brownian, demos/touch) into sand.js, brownian.js and touch.js with esbuild,
+// and copies the
 // HTML and CSS beside them, and the accuracy study's results (accuracy.json). `node scripts/build-demos.mjs [outDir]`
 // (default demos/dist); `npm start` calls buildDemos() and serves the folder. The WebGPU backend's
 // WGSL is inlined as text; its Node-only imports (Dawn, node:*) are on a code path a browser never
@@ -63,8 +64,9 @@ const kEntries = {
   large: path.join(repoRoot, 'demos', 'large', 'main.ts'),
   sand: path.join(repoRoot, 'demos', 'sand', 'main.ts'),
   brownian: path.join(repoRoot, 'demos', 'brownian', 'main.ts'),
+  touch: path.join(repoRoot, 'demos', 'touch', 'main.ts'),
 };
-const kStatic = ['index.html', 'page.css', 'testbed.css', 'header.css', 'compare.html', 'compare.css', 'accuracy.html', 'accuracy.css', 'large.html', 'large.css', 'sand.html', 'brownian.html'];
+const kStatic = ['index.html', 'page.css', 'testbed.css', 'header.css', 'compare.html', 'compare.css', 'accuracy.html', 'accuracy.css', 'large.html', 'large.css', 'sand.html', 'brownian.html', 'touch.html'];
 /** The accuracy study's results, which the accuracy page draws (bench/accuracy/run.mjs writes them). */
 const kAccuracyResults = path.join(repoRoot, 'bench', 'results', 'accuracy', 'accuracy.json');
 

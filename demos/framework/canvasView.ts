@@ -1,10 +1,17 @@
 /*
- * A world drawn by the package's canvas b2DebugDraw with y up at a camera: what the demo pages
- * draw with on the JavaScript engine, where there is no WebGPU.
+ * What the demo pages use on the JavaScript engine, where there is no WebGPU: a world drawn by the
+ * package's canvas b2DebugDraw with y up at a camera, and the body under a point found as the
+ * Testbed finds it (GpuPointQuery's answer, on the CPU).
  */
 
 import { b2DebugDraw } from '../../src/api/b2DebugDraw';
+import { b2AABB } from '../../src/collision/b2Collision';
+import { b2Vec2 } from '../../src/common/b2Math';
+import { b2_dynamicBody } from '../../src/dynamics/b2Body';
+import type { b2Body } from '../../src/dynamics/b2Body';
+import type { b2Fixture } from '../../src/dynamics/b2Fixture';
 import type { b2World } from '../../src/dynamics/b2World';
+import type { GpuPointHit } from '../../src-gpu/query/pointQuery';
 import { fitCanvas } from '../canvas';
 import type { ViewCamera } from './gpuView';
 
@@ -39,4 +46,27 @@ export class CanvasWorldView {
     this.draw.SetLineThickness(1 / s);
     this.world.DrawDebugData();
   }
+}
+
+/** The Testbed's MouseDown: a tiny box queried, the first dynamic fixture that holds the point. */
+export function bodyAtPoint(world: b2World, x: number, y: number): GpuPointHit | null {
+  const p = new b2Vec2(x, y);
+  const aabb = new b2AABB();
+  aabb.lowerBound.Set(x - 0.001, y - 0.001);
+  aabb.upperBound.Set(x + 0.001, y + 0.001);
+  let found: b2Body | null = null;
+  world.QueryAABB(
+    {
+      ReportFixture(fixture: b2Fixture): boolean {
+        const body = fixture.GetBody();
+        if (body.GetType() !== b2_dynamicBody || !fixture.TestPoint(p)) return true;
+        found = body;
+        return false;
+      },
+    },
+    aabb,
+  );
+  if (found === null) return null;
+  const local = (found as b2Body).GetLocalPoint(p);
+  return { body: found, localPoint: { x: local.x, y: local.y } };
 }

@@ -9,13 +9,11 @@
  * window.largeDemo tell tests and scripts what runs.
  */
 
-import { b2BodyDef, b2_dynamicBody } from '../../src/dynamics/b2Body';
+import { b2BodyDef } from '../../src/dynamics/b2Body';
 import type { b2Body } from '../../src/dynamics/b2Body';
-import type { b2Fixture } from '../../src/dynamics/b2Fixture';
 import type { b2World } from '../../src/dynamics/b2World';
 import { b2MouseJointDef } from '../../src/dynamics/joints/b2MouseJoint';
 import type { b2MouseJoint } from '../../src/dynamics/joints/b2MouseJoint';
-import { b2AABB } from '../../src/collision/b2Collision';
 import { b2Vec2 } from '../../src/common/b2Math';
 import type { GpuPointHit } from '../../src-gpu/query/pointQuery';
 import { requestGpu } from '../../src-gpu/device/device';
@@ -28,6 +26,7 @@ import type { BuiltScene } from '../compare/scenes';
 import { Camera, PaneView } from '../compare/view';
 import { $, detectWebGpu, fmtCount, fmtMs, showNote } from '../framework/demo';
 import type { DemoPane } from '../framework/demo';
+import { bodyAtPoint } from '../framework/canvasView';
 import { FrameLoop, GpuWorldView } from '../framework/gpuView';
 
 const SCENES: readonly SceneName[] = ['pyramids', 'rain', 'sand'];
@@ -117,22 +116,8 @@ class JsStage implements Stage {
     this.view.draw(this.geometry, this.transforms, this.awake, camera);
   }
 
-  /** The Testbed's MouseDown: a tiny box queried, the first dynamic fixture that holds the point. */
   async bodyAt(x: number, y: number): Promise<GpuPointHit | null> {
-    const p = new b2Vec2(x, y);
-    const aabb = new b2AABB();
-    aabb.lowerBound.Set(x - 0.001, y - 0.001);
-    aabb.upperBound.Set(x + 0.001, y + 0.001);
-    let found: b2Body | null = null;
-    this.scene.world.QueryAABB((fixture: b2Fixture) => {
-      const body = fixture.GetBody();
-      if (body.GetType() !== b2_dynamicBody || !fixture.TestPoint(p)) return true;
-      found = body;
-      return false;
-    }, aabb);
-    if (found === null) return null;
-    const local = (found as b2Body).GetLocalPoint(p);
-    return { body: found, localPoint: { x: local.x, y: local.y } };
+    return bodyAtPoint(this.scene.world, x, y);
   }
 
   async close(): Promise<void> {}
