@@ -17,15 +17,14 @@ import { b2BodyDef, b2_dynamicBody } from '../../src/dynamics/b2Body';
 import type { b2Body } from '../../src/dynamics/b2Body';
 import { b2FixtureDef } from '../../src/dynamics/b2Fixture';
 import { b2World } from '../../src/dynamics/b2World';
-import { requestGpu } from '../../src-gpu/device/device';
 import type { GpuContext } from '../../src-gpu/device/device';
 import { fitCanvas } from '../canvas';
 import { rng } from '../../bench/gpu-support';
 import { DT, POSITION_ITERATIONS, VELOCITY_ITERATIONS } from '../compare/config';
 import { Camera } from '../compare/view';
 import { CanvasWorldView } from '../framework/canvasView';
-import { $, detectWebGpu, fmtCount, fmtMs, showNote } from '../framework/demo';
-import { FrameLoop, GpuWorldView } from '../framework/gpuView';
+import { $, fmtCount, fmtMs, showNote } from '../framework/demo';
+import { FrameLoop, GpuWorldView, openGpu } from '../framework/gpuView';
 
 const GPU_PARTICLES = 100_000;
 const JS_PARTICLES = 3_000;
@@ -218,10 +217,7 @@ const loop = new FrameLoop(
     return frame.then(() => (steps % SAMPLE_EVERY === 1 ? sample(current) : undefined));
   },
   (now) => publish(now),
-  (error) => {
-    showMessage(`The frame failed: ${error instanceof Error ? error.message : String(error)}`);
-    console.error(error);
-  },
+  showMessage,
 );
 
 /** `?particles=N` (100 up to the backend's maximum), else the maximum; a bad value is named. */
@@ -294,21 +290,7 @@ function publish(now: number): void {
 // ---- Start ----
 
 async function start(): Promise<void> {
-  const status = await detectWebGpu();
-  if (status.adapter) {
-    try {
-      gpuContext = await requestGpu();
-      adapterNote.textContent = `WebGPU adapter: ${status.name}. Up to ${fmtCount(GPU_PARTICLES)} discs of gas, stepped and drawn on the GPU.`;
-      adapterNote.dataset.adapter = status.name ?? '';
-      adapterNote.className = 'note ok';
-    } catch (error) {
-      adapterNote.textContent = `The WebGPU device could not be created (${error instanceof Error ? error.message : String(error)}): the JavaScript engine steps up to ${fmtCount(JS_PARTICLES)} discs of gas.`;
-      adapterNote.className = 'note warn';
-    }
-  } else {
-    adapterNote.textContent = `${status.reason}: the JavaScript engine steps up to ${fmtCount(JS_PARTICLES)} discs of gas, drawn on a 2D canvas.`;
-    adapterNote.className = 'note warn';
-  }
+  gpuContext = await openGpu(adapterNote, `Up to ${fmtCount(GPU_PARTICLES)} discs of gas, stepped and drawn on the GPU.`, `the JavaScript engine steps up to ${fmtCount(JS_PARTICLES)} discs of gas, drawn on a 2D canvas.`);
   await restart();
   loop.start();
 }

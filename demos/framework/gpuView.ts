@@ -2,7 +2,8 @@
  * What the pages that step and draw on the GPU share: a world attached to a WebGPUBackend and drawn
  * by GpuRenderer into a canvas, with GpuPointQuery to find the body under the pointer; and the
  * frame loop that steps and draws once per display frame while the previous frame's work is done
- * (a display frame that finds it unfinished waits, and is counted).
+ * (a display frame that finds it unfinished waits, and is counted); and the device they choose,
+ * with the page's note saying what steps the world.
  */
 
 import type { b2World } from '../../src/dynamics/b2World';
@@ -11,15 +12,39 @@ import type { GpuContext } from '../../src-gpu/device/device';
 import { GpuPointQuery } from '../../src-gpu/query/pointQuery';
 import type { GpuPointHit } from '../../src-gpu/query/pointQuery';
 import { GpuRenderer } from '../../src-gpu/render/render';
+import { requestGpu } from '../../src-gpu/device/device';
 import type { GpuFrameStats } from '../../src-gpu/render/render';
 import { fitCanvas } from '../canvas';
-import { StepTimes } from './demo';
+import { detectWebGpu, StepTimes } from './demo';
 
 /** A view's centre in metres and its scale in CSS pixels per metre. */
 export interface ViewCamera {
   x: number;
   y: number;
   scale: number;
+}
+
+/**
+ * A WebGPU device when the browser has an adapter, else null; `note` says which, ending with `gpu`
+ * (what the page does on WebGPU) or `js` (what it does on the JavaScript engine).
+ */
+export async function openGpu(note: HTMLElement, gpu: string, js: string): Promise<GpuContext | null> {
+  const status = await detectWebGpu();
+  let text = `${status.reason}: ${js}`;
+  if (status.adapter) {
+    try {
+      const context = await requestGpu();
+      note.textContent = `WebGPU adapter: ${status.name}. ${gpu}`;
+      note.dataset.adapter = status.name ?? '';
+      note.className = 'note ok';
+      return context;
+    } catch (error) {
+      text = `The WebGPU device could not be created (${error instanceof Error ? error.message : String(error)}): ${js}`;
+    }
+  }
+  note.textContent = text;
+  note.className = 'note warn';
+  return null;
 }
 
 export class GpuWorldView {
@@ -79,10 +104,11 @@ export class FrameLoop {
   private last = NaN;
   private running = false;
 
+  /** `failed` gets the message of a frame that threw; the loop then stops. */
   constructor(
     private readonly frame: () => Promise<void> | null,
     private readonly done: (now: number) => void,
-    private readonly failed: (error: unknown) => void,
+    private readonly failed: (message: string) => void,
   ) {}
 
   start(): void {
@@ -122,7 +148,10 @@ export class FrameLoop {
         this.frames++;
         this.done(performance.now());
       },
-      (error) => this.failed(error),
+      (error) => {
+        console.error(error);
+        this.failed(`The frame failed: ${error instanceof Error ? error.message : String(error)}`);
+      },
     );
   };
 }

@@ -16,7 +16,6 @@ import { b2MouseJointDef } from '../../src/dynamics/joints/b2MouseJoint';
 import type { b2MouseJoint } from '../../src/dynamics/joints/b2MouseJoint';
 import { b2Vec2 } from '../../src/common/b2Math';
 import type { GpuPointHit } from '../../src-gpu/query/pointQuery';
-import { requestGpu } from '../../src-gpu/device/device';
 import type { GpuContext } from '../../src-gpu/device/device';
 import { checkConfig, DT, POSITION_ITERATIONS, SCENE_TITLES, TRANSFORM_STRIDE, VELOCITY_ITERATIONS } from '../compare/config';
 import type { SceneConfig, SceneGeometry, SceneName } from '../compare/config';
@@ -24,10 +23,10 @@ import { sceneGeometry } from '../compare/pane';
 import { buildScene } from '../compare/scenes';
 import type { BuiltScene } from '../compare/scenes';
 import { Camera, PaneView } from '../compare/view';
-import { $, detectWebGpu, fmtCount, fmtMs, showNote } from '../framework/demo';
+import { $, fmtCount, fmtMs, showNote } from '../framework/demo';
 import type { DemoPane } from '../framework/demo';
 import { bodyAtPoint } from '../framework/canvasView';
-import { FrameLoop, GpuWorldView } from '../framework/gpuView';
+import { FrameLoop, GpuWorldView, openGpu } from '../framework/gpuView';
 
 const SCENES: readonly SceneName[] = ['pyramids', 'rain', 'sand'];
 const GPU_COUNTS = [10_000, 20_000, 50_000, 100_000, 200_000, 500_000, 1_000_000];
@@ -143,10 +142,7 @@ const loop = new FrameLoop(
     });
   },
   (now) => publish(now),
-  (error) => {
-    showMessage(`The frame failed: ${error instanceof Error ? error.message : String(error)}`);
-    console.error(error);
-  },
+  showMessage,
 );
 
 function counts(): number[] {
@@ -373,22 +369,7 @@ function publish(now: number): void {
 // ---- Start ----
 
 async function start(): Promise<void> {
-  const status = await detectWebGpu();
-  if (status.adapter) {
-    try {
-      gpuContext = await requestGpu();
-      adapterNote.textContent = `WebGPU adapter: ${status.name}. Up to ${fmtCount(GPU_COUNTS[GPU_COUNTS.length - 1])} bodies, stepped and drawn on the GPU.`;
-      adapterNote.dataset.adapter = status.name ?? '';
-      adapterNote.className = 'note ok';
-    } catch (error) {
-      gpuContext = null;
-      adapterNote.textContent = `The WebGPU device could not be created (${error instanceof Error ? error.message : String(error)}): the JavaScript engine runs, with at most ${fmtCount(JS_COUNTS[JS_COUNTS.length - 1])} bodies.`;
-      adapterNote.className = 'note warn';
-    }
-  } else {
-    adapterNote.textContent = `${status.reason}: the JavaScript engine runs, with at most ${fmtCount(JS_COUNTS[JS_COUNTS.length - 1])} bodies drawn on a 2D canvas.`;
-    adapterNote.className = 'note warn';
-  }
+  gpuContext = await openGpu(adapterNote, `Up to ${fmtCount(GPU_COUNTS[GPU_COUNTS.length - 1])} bodies, stepped and drawn on the GPU.`, `the JavaScript engine runs, with at most ${fmtCount(JS_COUNTS[JS_COUNTS.length - 1])} bodies drawn on a 2D canvas.`);
   fillControls();
   await rebuild(fromUrl());
   loop.start();

@@ -16,13 +16,12 @@ import { b2BodyDef, b2_dynamicBody } from '../../src/dynamics/b2Body';
 import type { b2Body } from '../../src/dynamics/b2Body';
 import { b2FixtureDef } from '../../src/dynamics/b2Fixture';
 import { b2World } from '../../src/dynamics/b2World';
-import { requestGpu } from '../../src-gpu/device/device';
 import type { GpuContext } from '../../src-gpu/device/device';
 import { Camera } from '../compare/view';
 import { DT, POSITION_ITERATIONS, VELOCITY_ITERATIONS } from '../compare/config';
-import { $, detectWebGpu, fmtCount, fmtMs, showNote } from '../framework/demo';
+import { $, fmtCount, fmtMs, showNote } from '../framework/demo';
 import { CanvasWorldView } from '../framework/canvasView';
-import { FrameLoop, GpuWorldView } from '../framework/gpuView';
+import { FrameLoop, GpuWorldView, openGpu } from '../framework/gpuView';
 
 const GPU_GRAINS = 200_000;
 const JS_GRAINS = 5_000;
@@ -121,10 +120,7 @@ const loop = new FrameLoop(
     return canvasView !== null ? canvasView.frame(step, camera) : null;
   },
   (now) => publish(now),
-  (error) => {
-    showMessage(`The frame failed: ${error instanceof Error ? error.message : String(error)}`);
-    console.error(error);
-  },
+  showMessage,
 );
 
 async function restart(): Promise<void> {
@@ -241,21 +237,7 @@ function publish(now: number): void {
 // ---- Start ----
 
 async function start(): Promise<void> {
-  const status = await detectWebGpu();
-  if (status.adapter) {
-    try {
-      gpuContext = await requestGpu();
-      adapterNote.textContent = `WebGPU adapter: ${status.name}. Up to ${fmtCount(GPU_GRAINS)} grains, stepped and drawn on the GPU.`;
-      adapterNote.dataset.adapter = status.name ?? '';
-      adapterNote.className = 'note ok';
-    } catch (error) {
-      adapterNote.textContent = `The WebGPU device could not be created (${error instanceof Error ? error.message : String(error)}): the JavaScript engine pours up to ${fmtCount(JS_GRAINS)} grains.`;
-      adapterNote.className = 'note warn';
-    }
-  } else {
-    adapterNote.textContent = `${status.reason}: the JavaScript engine pours up to ${fmtCount(JS_GRAINS)} grains, drawn on a 2D canvas.`;
-    adapterNote.className = 'note warn';
-  }
+  gpuContext = await openGpu(adapterNote, `Up to ${fmtCount(GPU_GRAINS)} grains, stepped and drawn on the GPU.`, `the JavaScript engine pours up to ${fmtCount(JS_GRAINS)} grains, drawn on a 2D canvas.`);
   await restart();
   loop.start();
 }

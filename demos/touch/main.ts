@@ -19,14 +19,13 @@ import { b2MouseJointDef } from '../../src/dynamics/joints/b2MouseJoint';
 import type { b2MouseJoint } from '../../src/dynamics/joints/b2MouseJoint';
 import { b2RevoluteJointDef } from '../../src/dynamics/joints/b2RevoluteJoint';
 import type { b2RevoluteJoint } from '../../src/dynamics/joints/b2RevoluteJoint';
-import { requestGpu } from '../../src-gpu/device/device';
 import type { GpuContext } from '../../src-gpu/device/device';
 import type { GpuPointHit } from '../../src-gpu/query/pointQuery';
 import { DT, POSITION_ITERATIONS, VELOCITY_ITERATIONS } from '../compare/config';
 import { Camera } from '../compare/view';
 import { bodyAtPoint, CanvasWorldView } from '../framework/canvasView';
-import { $, detectWebGpu, fmtCount, fmtMs, showNote } from '../framework/demo';
-import { FrameLoop, GpuWorldView } from '../framework/gpuView';
+import { $, fmtCount, fmtMs, showNote } from '../framework/demo';
+import { FrameLoop, GpuWorldView, openGpu } from '../framework/gpuView';
 
 /** Half the box's width and its height (m). */
 const HALF_WIDTH = 10;
@@ -146,10 +145,7 @@ const loop = new FrameLoop(
     return canvasView !== null ? canvasView.frame(step, camera) : null;
   },
   (now) => publish(now),
-  (error) => {
-    showMessage(`The frame failed: ${error instanceof Error ? error.message : String(error)}`);
-    console.error(error);
-  },
+  showMessage,
 );
 
 async function restart(): Promise<void> {
@@ -285,21 +281,7 @@ function publish(now: number): void {
 // ---- Start ----
 
 async function start(): Promise<void> {
-  const status = await detectWebGpu();
-  if (status.adapter) {
-    try {
-      gpuContext = await requestGpu();
-      adapterNote.textContent = `WebGPU adapter: ${status.name}. Stepped and drawn on the GPU.`;
-      adapterNote.dataset.adapter = status.name ?? '';
-      adapterNote.className = 'note ok';
-    } catch (error) {
-      adapterNote.textContent = `The WebGPU device could not be created (${error instanceof Error ? error.message : String(error)}): the JavaScript engine runs.`;
-      adapterNote.className = 'note warn';
-    }
-  } else {
-    adapterNote.textContent = `${status.reason}: the JavaScript engine runs, drawn on a 2D canvas.`;
-    adapterNote.className = 'note warn';
-  }
+  gpuContext = await openGpu(adapterNote, 'Stepped and drawn on the GPU.', 'the JavaScript engine runs, drawn on a 2D canvas.');
   await restart();
   loop.start();
 }
