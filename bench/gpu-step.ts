@@ -258,6 +258,8 @@ interface WorldApiRow {
   syncAndBulkMs: number;
   /** Step, await readTransforms of every body (no Synchronize). */
   bulkMs: number;
+  /** Of the bulk read, the host's share: from the map resolving to the Float32Array filled. */
+  bulkCopyMs: number;
   /**
    * After a synchronisation, world.PullState(): every body fetched and the proxies moved, as a
    * query does (and as every synchronisation did before bodies fetched their state when read).
@@ -299,6 +301,7 @@ async function runWorldApi(ctx: GpuContext, world: b2World, steps: number): Prom
     }
     const syncAndBulk: number[] = [];
     const bulk: number[] = [];
+    const bulkCopy: number[] = [];
     for (let i = 0; i < steps; ++i) {
       const t0 = performance.now();
       step();
@@ -309,6 +312,7 @@ async function runWorldApi(ctx: GpuContext, world: b2World, steps: number): Prom
       step();
       await backend.readTransforms(out);
       bulk.push(performance.now() - t1);
+      bulkCopy.push(backend.readStats!.unpackMs);
     }
     const pullAll: number[] = [];
     for (let i = 0; i < Math.max(1, Math.round(steps / 2)); ++i) {
@@ -325,6 +329,7 @@ async function runWorldApi(ctx: GpuContext, world: b2World, steps: number): Prom
       syncEvery4Ms: median(every4),
       syncAndBulkMs: median(syncAndBulk),
       bulkMs: median(bulk),
+      bulkCopyMs: median(bulkCopy),
     };
   } finally {
     await backend.destroy();
@@ -389,19 +394,19 @@ function markdown(rows: Row[], crossovers: Crossover[], meta: Record<string, unk
     '',
     '## The world API (WebGPUBackend), per step (ms)',
     '',
-    '| scene | bodies | build the world (µs a body) | SetBackend | Step + Synchronize | of which Step | of which Synchronize | Synchronize every 4 steps | Step + Synchronize + bulk read | Step + bulk read | Step + Synchronize / GpuStepper awaited | fetch every body and proxy |',
-    '| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |',
+    '| scene | bodies | build the world (µs a body) | SetBackend | Step + Synchronize | of which Step | of which Synchronize | Synchronize every 4 steps | Step + Synchronize + bulk read | Step + bulk read | of which the host copy | Step + Synchronize / GpuStepper awaited | fetch every body and proxy |',
+    '| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |',
   );
   for (const r of rows) {
     const a = r.api;
     if (a === null) {
-      lines.push(`| ${r.scene} | ${r.bodies} | ${fmt((1000 * r.buildMs) / r.bodies)} | failed: ${r.apiError ?? '–'} | | | | | | | | |`);
+      lines.push(`| ${r.scene} | ${r.bodies} | ${fmt((1000 * r.buildMs) / r.bodies)} | failed: ${r.apiError ?? '–'} | | | | | | | | | |`);
       continue;
     }
     const ratio = r.gpu ? fmt(a.syncEach.wallMs / r.gpu.wallMs) : '–';
     lines.push(
       `| ${r.scene} | ${r.bodies} | ${fmt((1000 * r.buildMs) / r.bodies)} | ${fmt(a.attachMs)} | ${fmt(a.syncEach.wallMs)} | ${fmt(a.syncEach.stepMs)} | ${fmt(a.syncEach.syncMs)} | ` +
-        `${fmt(a.syncEvery4Ms)} | ${fmt(a.syncAndBulkMs)} | ${fmt(a.bulkMs)} | ${ratio} | ${fmt(a.pullAllMs)} |`,
+        `${fmt(a.syncEvery4Ms)} | ${fmt(a.syncAndBulkMs)} | ${fmt(a.bulkMs)} | ${fmt(a.bulkCopyMs)} | ${ratio} | ${fmt(a.pullAllMs)} |`,
     );
   }
   lines.push('', '## Host time of an awaited GPU step (ms)', '', '| scene | bodies | setup (new GpuStepper) | mirror sync and other | record | submit call | wait | not awaited: record + submit | not awaited: wait for room | not-awaited steps truncated |', '| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |');
@@ -430,7 +435,8 @@ function markdown(rows: Row[], crossovers: Crossover[], meta: Record<string, unk
     'flight: the wait is the GPU finishing the oldest step; near the not-awaited time per step, the GPU is the limit).',
     'World API: the same scene built again (build: b2World objects, µs a body) and attached with SetBackend (pipelines',
     'already compiled); then world.Step and await world.Synchronize() (the bodies fetch their state when read: none is',
-    'read here), every step and every 4 steps, and with the bulk read of every transform (backend.readTransforms);',
+    'read here), every step and every 4 steps, and with the bulk read of every transform (backend.readTransforms into',
+    'a Float32Array: packed on the GPU, then one copy on the host, whose time is shown);',
     'last, world.PullState() after a synchronisation: every body fetched and the broad-phase proxies moved, as a query',
     'does, and as every synchronisation did before bodies fetched their state when read.',
   );

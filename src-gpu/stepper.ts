@@ -42,6 +42,7 @@ import { GpuPipeline } from './pipeline';
 import { GpuSolver } from './solver/solver';
 import type { SolverStep } from './solver/solver';
 import { GpuWorld } from './world/world';
+import { GpuTransformRead } from './query/transforms';
 import type { GpuWorldOptions } from './world/world';
 import { MappedState, STATE_CHUNK, StagingBuffer } from './device/readback';
 import type { MappedField } from './device/readback';
@@ -90,7 +91,7 @@ const STATE_CHUNK_MASK = STATE_CHUNK - 1;
 function align8(bytes: number): number {
   return Math.ceil(bytes / 8) * 8;
 }
-/** Bytes per body slot in readTransforms()'s staging buffer: xf 16, cell 8, awake 4. */
+/** Bytes per body slot in readTransforms()'s staging buffer for a Float64Array: xf 16, cell 8, awake 4. */
 const TRANSFORM_READ_BYTES = 28;
 
 /** What the last read-back cost the host. */
@@ -134,6 +135,7 @@ export class GpuStepper {
   /** Whether the last read state is the GPU's current one (no step since): readTransforms() reads it instead of mapping again. */
   private stateFresh = false;
   private readonly transformStaging: StagingBuffer;
+  private readonly transformRead: GpuTransformRead;
   private readonly solverStep: SolverStep = { dt: 0, dtRatio: 0, velocityIterations: 0, positionIterations: 0, warmStarting: true, gravity: { x: 0, y: 0 } };
 
   constructor(ctx: GpuContext, world: b2World, options: GpuStepperOptions = {}) {
@@ -149,6 +151,7 @@ export class GpuStepper {
       new StagingBuffer(ctx, 'stepper body read-back 1', 64 * BODY_READ_BYTES),
     ];
     this.transformStaging = new StagingBuffer(ctx, 'stepper transform read-back', 64 * TRANSFORM_READ_BYTES);
+    this.transformRead = new GpuTransformRead(ctx);
     this.mirror.sync();
     this.narrowPhase.seedFromWorld(this.mirror);
     this.invDt0 = world.m_inv_dt0;
@@ -321,10 +324,13 @@ export class GpuStepper {
   /**
    * Bulk read for renderers: copies every body slot's transform into `out` (x, y, cos, sin of the
    * body origin at 4 * slot, in world coordinates) and, when given, its awake flag into
-   * `awake[slot]` (1 awake, 0 asleep), after every step submitted so far: from the state readState()
-   * holds when no step came since (a synchronisation just before), else with one map of 28 bytes
-   * a body. The world's b2Body objects are not touched. Slots that hold no body (destroyed, not yet
-   * reused) are written as NaN and 0. Returns the number of slots (GpuWorld.bodySlotCount).
+   * `awake[slot]` (1 awake, 0 asleep), after every step submitted so far. The world's b2Body
+   * objects are not touched. A Float32Array is filled on the GPU (GpuTransformRead: one map of 16
+   * bytes a body, one copy); a Float64Array keeps the positions' full precision (cell and offset
+   * added in float64 on the host, as the getters do), from the state readState() holds when no
+   * step came since (a synchronisation just before), else with one map of 28 bytes a body.
+   * Slots that hold no body (destroyed, not yet reused) are written as NaN and 0. Returns the
+   * number of slots (GpuWorld.bodySlotCount).
    */
   async readTransforms(out: Float32Array | Float64Array, awake?: Uint8Array): Promise<number> {
     const ctx = this.ctx;
@@ -338,6 +344,11 @@ export class GpuStepper {
       throw new RangeError(`readTransforms: awake holds ${awake.length} flags; this world needs one per body slot, ${n}`);
     }
     if (n === 0) return 0;
+    if (out instanceof Float32Array) {
+      this.readStats.bytes = await this.transformRead.read(mirror, out, awake);
+      this.readStats.unpackMs = this.transformRead.copyMs;
+      return n;
+    }
     if (this.stateFresh && this.state.slots === n) {
       const started = performance.now();
       const state = this.state;
@@ -378,7 +389,7 @@ export class GpuStepper {
     xf: Float32Array,
     cell: Int32Array,
     flags: Uint32Array,
-    out: Float32Array | Float64Array,
+    out: Float64Array,
     awake: Uint8Array | undefined,
   ): void {
     const mirror = this.mirror;
@@ -403,6 +414,7 @@ export class GpuStepper {
     this.releaseState();
     for (const staging of this.bodyStaging) staging.destroy();
     this.transformStaging.destroy();
+    this.transformRead.destroy();
     this.pipeline.destroy();
     this.solver.destroy();
     this.narrowPhase.destroy();

@@ -19,7 +19,6 @@ struct Query {
 }
 
 const NO_HIT: u32 = 0xffffffffu;
-const BODY_LIVE: u32 = 0x80000000u;
 
 @group(0) @binding(0) var<uniform> query: Query;
 @group(0) @binding(1) var<storage, read> proxyRef: array<vec4<u32>>;

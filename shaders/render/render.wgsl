@@ -24,8 +24,6 @@ const COLOUR_STATE: u32 = 0u;
 const COLOUR_BODY: u32 = 1u;
 // Sides of a circle's outline (its radius line is one more): RENDER_CIRCLE_SEGMENTS in layout.ts.
 const CIRCLE_SEGMENTS: u32 = 16u;
-const BODY_LIVE: u32 = 0x80000000u;
-const JOINT_LIVE: u32 = 0x80000000u;
 const JOINT_PARAMS_VEC4: u32 = 5u;
 
 @group(0) @binding(0) var<uniform> view: View;

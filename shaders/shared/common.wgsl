@@ -73,6 +73,11 @@ const PROXY_LIVE: u32 = 0x10u;
 const PROXY_SENSOR: u32 = 0x20u;
 const PROXY_JOINTED: u32 = 0x40u;      // the body has a joint with collideConnected == false
 
+// The live bit of a body slot's bodyFlags word (b2Body::m_flags | type << 16 | BODY_LIVE) and of
+// a joint slot's type word; a dead slot's word is 0.
+const BODY_LIVE: u32 = 0x80000000u;
+const JOINT_LIVE: u32 = 0x80000000u;
+
 // An AABB that overlaps nothing, for dead proxy slots. 3e38 rather than infinity: WGSL
 // implementations may assume finite floats.
 const EMPTY_AABB: vec4<f32> = vec4<f32>(3e38, 3e38, -3e38, -3e38);

@@ -43,10 +43,6 @@ struct ColourParams {
 const S_EPSILON: f32 = 0x1p-23f;               // b2_epsilon
 const MAX_CONDITION_NUMBER: f32 = 1000.0;      // k_maxConditionNumber (b2ContactSolver.cpp)
 
-// bodyFlags: b2Body::m_flags | type << 16 | BODY_LIVE (the flags, the types and 2.2.1's
-// tolerances: the engine's constants, src-gpu/device/engineWgsl.ts).
-const BODY_LIVE: u32 = 0x80000000u;
-
 // contactBodies[k].z
 const CB_POINTS: u32 = 0x3u;                   // points the velocity solver uses (1 when the block solver is ill-conditioned)
 const CB_MANIFOLD_POINTS_SHIFT: u32 = 2u;      // bits 2-3: the manifold's point count

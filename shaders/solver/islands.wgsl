@@ -52,8 +52,6 @@ const ISLAND_MIN_SLEEP: u32 = 2u;    // (roots) f32 bits of the component's smal
 const NO_ISLAND: u32 = 0xffffffffu;
 const FLT_MAX_BITS: u32 = 0x7f7fffffu;
 
-const JOINT_LIVE: u32 = 0x80000000u;
-
 fn is_node(i: u32) -> bool {
   let flags = bodyFlags[i];
   return (flags & BODY_LIVE) != 0u && (flags & BODY_ACTIVE) != 0u && body_type(flags) != STATIC_BODY;

@@ -30,8 +30,6 @@
 @group(0) @binding(8) var<storage, read> bodySweep: array<vec4<f32>>;
 @group(0) @binding(3) var<storage, read> bodyCell: array<vec2<i32>>;
 
-const JOINT_LIVE: u32 = 0x80000000u;
-
 fn body_active(body: u32) -> bool {
   let flags = bodyFlags[body];
   return (flags & BODY_LIVE) != 0u && (flags & BODY_ACTIVE) != 0u;

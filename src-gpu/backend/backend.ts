@@ -197,8 +197,10 @@ export class WebGPUBackend implements b2WorldBackend {
 
   /**
    * A bulk read for renderers and games that want every body: waits for every step called so far
-   * and copies, with one map of 28 bytes a body, each body slot's transform into `out` (x, y, cos,
-   * sin at 4 * slot; bodySlot(body) gives the slot) and its awake flag into `awake[slot]`. No
+   * and copies, with one map, each body slot's transform into `out` (x, y, cos, sin at 4 * slot;
+   * bodySlot(body) gives the slot) and its awake flag into `awake[slot]`. A Float32Array is the
+   * fast path (packed on the GPU, 16 bytes a body, one copy); a Float64Array keeps the positions'
+   * full precision (28 bytes a body, converted on the host: several times slower at 10^6). No
    * per-body objects, and the world's b2Body objects are not touched: call Synchronize where the
    * application reads bodies through the API or needs contact events.
    * Slots without a body are written as NaN. Resolves with the slot count.

@@ -174,7 +174,8 @@ export class MirrorTable {
       }
     }
     if (same) return false;
-    u32.set(s, base);
+    // A loop, not u32.set(s, base): for records of a few words the builtin's setup costs more.
+    for (let i = 0; i < w; ++i) u32[base + i] = s[i];
     if (this.dirty[slot] === 0) {
       this.dirty[slot] = 1;
       this.dirtyCount++;

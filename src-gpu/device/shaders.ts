@@ -6,7 +6,8 @@
  * parameters, constants and helpers) to the solver stages, and shaders/shared/solveJointsCommon.wgsl (the
  * joints' share of the colour passes) to the stages that solve joints; shaders/shared/distance.wgsl (GJK)
  * to the sensor test and to continuous collision, which also takes manifold.wgsl's shape helpers.
- * The renderer's shader (shaders/render/render.wgsl) and the point query's take common.wgsl only.
+ * The renderer's shader (shaders/render/render.wgsl), the point query's and the bulk transform
+ * read's take common.wgsl only.
  */
 
 import { ENGINE_WGSL } from './engineWgsl';
@@ -42,6 +43,7 @@ import solveJointsCommon from '../../shaders/shared/solveJointsCommon.wgsl';
 import islands from '../../shaders/solver/islands.wgsl';
 import render from '../../shaders/render/render.wgsl';
 import pointQuery from '../../shaders/query/pointQuery.wgsl';
+import transforms from '../../shaders/query/transforms.wgsl';
 
 const common = `${ENGINE_WGSL}\n${commonWgsl}`;
 
@@ -74,6 +76,7 @@ export const SHADERS = {
   timeOfImpact: `${common}\n${manifold}\n${distance}\n${timeOfImpact}`,
   render: `${common}\n${render}`,
   pointQuery: `${common}\n${pointQuery}`,
+  transforms: `${common}\n${transforms}`,
 } as const;
 
 export type ShaderName = Exclude<keyof typeof SHADERS, 'common'>;

@@ -66,6 +66,13 @@ export class SlotAllocator<T> {
 
   /** Whether the last acquire() created the slot. */
   created = false;
+  /** Whether no item had a slot when the walk began (beginWalk): acquire() then need not look one up. */
+  private empty = false;
+
+  /** Starts a walk that acquires each item at most once (a sync's walk of the world). */
+  beginWalk(): void {
+    this.empty = this.live === 0;
+  }
 
   /**
    * The item's slot (a new one, lowest free first, when it has none); marks it seen. `hint`, the
@@ -77,7 +84,7 @@ export class SlotAllocator<T> {
       this.mark(hint, generation);
       return hint;
     }
-    let slot = this.slotOf.get(item);
+    let slot = this.empty ? undefined : this.slotOf.get(item);
     this.created = slot === undefined;
     if (slot === undefined) {
       slot = this.alloc();
@@ -134,7 +141,7 @@ export class PoolAllocator {
 
   alloc(size: number): number {
     this.live += size;
-    const list = this.freeBySize.get(size);
+    const list = this.freeBySize.size > 0 ? this.freeBySize.get(size) : undefined;
     if (list && list.length > 0) return list.pop()!;
     const offset = this.top;
     this.top += size;

@@ -377,6 +377,7 @@ export class GpuWorld {
     // 2. Joints, and the per-body lists of joints that turn collision off (only a structural
     // change alters those).
     const edges: number[] = [];
+    this.jointSlots.beginWalk();
     for (let j = world.m_jointList; j; j = j.m_next) {
       const slot = this.jointSlots.acquire(j, gen);
       if (this.jointSlots.created) stats.joints.created++;
@@ -489,6 +490,7 @@ export class GpuWorld {
   /** Step 1 of sync: bodies, their slots kept in walk order for syncFixtures and as the next sync's hints. */
   private syncBodies(world: b2World, gen: number, stats: SyncStats): void {
     let walked = 0;
+    this.bodySlots.beginWalk();
     for (let b = world.m_bodyList; b; b = b.m_next) {
       const slot = this.bodySlots.acquire(b, gen, walked < this.walkCount ? this.walkSlots[walked] : -1);
       if (this.bodySlots.created) stats.bodies.created++;
@@ -507,6 +509,7 @@ export class GpuWorld {
     if (this.pool.fragmented) this.compactPool();
     let index = 0;
     let fixtureWalked = 0;
+    this.fixtureSlots.beginWalk();
     for (let b = world.m_bodyList; b; b = b.m_next) {
       const bodySlot = this.walkSlots[index++];
       const jointed = this.jointCount[bodySlot] > 0;

@@ -391,7 +391,7 @@ describeGpu('WebGPUBackend: the world API on the GPU', (ctx) => {
     }
   }, 300_000);
 
-  it('readTransforms: one map copies every body slot\'s transform and awake flag, bit for bit what Synchronize gives the getters; empty slots are NaN', async () => {
+  it('readTransforms: one map copies every body slot\'s transform and awake flag, bit for bit what Synchronize gives the getters (float32: the nearest float32, packed on the GPU); empty slots are NaN', async () => {
     const { world, boxes } = dropScene();
     const backend = await WebGPUBackend.create({ context: ctx });
     await world.SetBackend(backend);
@@ -424,6 +424,14 @@ describeGpu('WebGPUBackend: the world API on the GPU', (ctx) => {
     expect(freed).toHaveLength(1);
     expect(Number.isNaN(out[4 * freed[0]])).toBe(true);
     expect(backend.bodySlot(boxes[2])).toBe(-1);
+    // Into a Float32Array the GPU packs them: the float32 nearest each float64 value, the same
+    // flags, NaN in the empty slot; one map of 16 bytes a slot and a byte a slot's flag.
+    const out32 = new Float32Array(4 * slots);
+    const awake32 = new Uint8Array(slots);
+    await backend.readTransforms(out32, awake32);
+    expect(backend.readStats!.bytes).toBe(16 * slots + 4 * Math.ceil(slots / 4));
+    expect([...out32]).toEqual([...out].map(Math.fround));
+    expect([...awake32]).toEqual([...awake]);
     await expect(backend.readTransforms(new Float32Array(4 * slots - 1))).rejects.toThrow(
       `readTransforms: out holds ${4 * slots - 1} numbers; this world needs 4 per body slot, ${4 * slots}`,
     );
@@ -435,7 +443,7 @@ describeGpu('WebGPUBackend: the world API on the GPU', (ctx) => {
     await world.SetBackend(null);
   }, 300_000);
 
-  it('a world of several state chunks: readTransforms after a synchronisation reads its map (no second map, 28 bytes a body), and bodies in every chunk fetch the same bits', async () => {
+  it('a world of several state chunks: readTransforms into a Float64Array after a synchronisation reads its map (no second map, 28 bytes a body), into a Float32Array the GPU packs the same values, and bodies in every chunk fetch the same bits', async () => {
     const world = new b2World(new b2Vec2(0, -10));
     const bd = new b2BodyDef();
     bd.type = b2_dynamicBody;
@@ -472,6 +480,15 @@ describeGpu('WebGPUBackend: the world API on the GPU', (ctx) => {
       expect(b.GetAngularVelocity()).toBe(Math.fround((i % 7) - 3));
       expect(b.GetLinearVelocity().y).toBeLessThan(0);
     }
+    // The GPU's packing into a Float32Array agrees in every slot, across many workgroups.
+    const out32 = new Float32Array(4 * slots);
+    const awake32 = new Uint8Array(slots);
+    const awake64 = new Uint8Array(slots);
+    await backend.readTransforms(out, awake64);
+    await backend.readTransforms(out32, awake32);
+    expect(out32).toEqual(Float32Array.from(out));
+    expect(awake32).toEqual(awake64);
+    expect(awake32.every((a) => a === 1)).toBe(true);
     // After a step the state is old: the bulk read maps the GPU's transforms again.
     world.Step(DT, 8, 3);
     const again = await countMaps(ctx, async () => {

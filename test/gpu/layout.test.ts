@@ -87,6 +87,7 @@ const STAGES = [
   'solveJoints',
   'render',
   'pointQuery',
+  'transforms',
 ];
 
 it('declares the state words, indirect offsets and flags the host uses', () => {
@@ -96,6 +97,8 @@ it('declares the state words, indirect offsets and flags the host uses', () => {
   expect(c.get('PROXY_LIVE')).toBe(layout.PROXY_LIVE);
   expect(c.get('PROXY_SENSOR')).toBe(layout.PROXY_SENSOR);
   expect(c.get('PROXY_JOINTED')).toBe(layout.PROXY_JOINTED);
+  expect(c.get('BODY_LIVE')).toBe(layout.BODY_LIVE);
+  expect(c.get('JOINT_LIVE')).toBe(layout.JOINT_LIVE);
   expect(c.get('OVERFLOW_PAIRS')).toBe(layout.OVERFLOW_PAIRS);
   expect(c.get('OVERFLOW_ENTRIES')).toBe(layout.OVERFLOW_ENTRIES);
   expect(c.get('QUANT_BITS')).toBe(layout.QUANT_BITS);
@@ -138,7 +141,6 @@ it("declares the solver's state words, indirect offsets, colour cap and 2.2.1's 
   expect(layout.SV_ARGS.ROUNDS + 3).toBeLessThanOrEqual(layout.SV_INDIRECT_WORDS);
   // The colour sort's digits (radix passes of 4 bits) hold every colour and the overflow set.
   expect(layout.COLOUR_CAP).toBeLessThan(256);
-  expect(constants(wgsl('solverCommon')).get('BODY_LIVE')).toBe(layout.BODY_LIVE);
 });
 
 it("declares the joints' record sizes as the host uses them", () => {
