@@ -3,8 +3,9 @@
  * kept while the object lives), ranges of the shape pool, and the change log the engine's
  * b2ChangeListener fills between syncs.
  *
- * In:  the objects a sync walks (SlotAllocator.acquire), the API's change notifications (ChangeLog).
- * Out: dense slot indices both ways (items, slotOf), released slots (sweep), pool offsets.
+ * In:  the objects a sync walks (ObjectSlots.acquire), the API's change notifications (ChangeLog).
+ * Out: dense slot indices both ways (items, slotOf: the engine objects carry their slot), released
+ *      slots (sweep), pool offsets.
  * Invariants: a live object keeps its slot; a released slot goes to the next new object, lowest
  *      first; highWater is one past the highest slot in use.
  */
@@ -57,45 +58,13 @@ export class ChangeLog {
 /** Slots handed out lowest free first; `gen` marks the slots seen by the current sync. */
 export class SlotAllocator<T> {
   readonly items: (T | null)[] = [];
-  readonly slotOf = new Map<T, number>();
   gen = new Uint32Array(64);
   /** Free slots below `highWater`, in descending order (pop() gives the lowest). */
   private free: number[] = [];
   highWater = 0;
   live = 0;
 
-  /** Whether the last acquire() created the slot. */
-  created = false;
-  /** Whether no item had a slot when the walk began (beginWalk): acquire() then need not look one up. */
-  private empty = false;
-
-  /** Starts a walk that acquires each item at most once (a sync's walk of the world). */
-  beginWalk(): void {
-    this.empty = this.live === 0;
-  }
-
-  /**
-   * The item's slot (a new one, lowest free first, when it has none); marks it seen. `hint`, the
-   * slot the item had at the same place of the previous walk, skips the map lookup when it holds.
-   */
-  acquire(item: T, generation: number, hint = -1): number {
-    if (hint >= 0 && hint < this.highWater && this.items[hint] === item) {
-      this.created = false;
-      this.mark(hint, generation);
-      return hint;
-    }
-    let slot = this.empty ? undefined : this.slotOf.get(item);
-    this.created = slot === undefined;
-    if (slot === undefined) {
-      slot = this.alloc();
-      this.slotOf.set(item, slot);
-      this.items[slot] = item;
-    }
-    this.mark(slot, generation);
-    return slot;
-  }
-
-  /** A free slot, lowest first (for items tracked by the caller, not by slotOf). */
+  /** A free slot, lowest first. */
   alloc(): number {
     const slot = this.free.length > 0 ? this.free.pop()! : this.highWater++;
     this.live++;
@@ -115,7 +84,7 @@ export class SlotAllocator<T> {
       const item = this.items[slot];
       if (item !== null && item !== undefined && this.gen[slot] !== generation) {
         this.items[slot] = null;
-        this.slotOf.delete(item);
+        this.forget(item);
         this.free.push(slot);
         this.live--;
         released++;
@@ -130,6 +99,89 @@ export class SlotAllocator<T> {
       }
     }
     return released;
+  }
+
+  /** Drops what maps `item` to its slot (released by sweep). */
+  protected forget(_item: T): void {}
+}
+
+/**
+ * The fields the engine's bodies, fixtures and joints hold for a mirror (b2Body.m_mirrorSlot,
+ * m_mirrorId): the slot, and which mirror gave it.
+ */
+export interface MirrorSlotted {
+  m_mirrorSlot: number;
+  m_mirrorId: number;
+}
+
+/** The ids of the ObjectSlots not yet disposed: an object tagged by one of them is taken. */
+const liveMirrors = new Set<number>();
+let lastMirrorId = 0;
+
+/**
+ * Slots of engine objects, found from the object. Each object holds its slot and the id of the
+ * allocator that gave it (a field read, where a Map of 10^6 objects made attaching a large world
+ * slow); an object already tagged by another live allocator (a second mirror of the same world)
+ * is kept in a Map instead.
+ */
+export class ObjectSlots<T extends MirrorSlotted> extends SlotAllocator<T> {
+  readonly id = ++lastMirrorId;
+  private readonly others = new Map<T, number>();
+  /** Whether the last acquire() created the slot. */
+  created = false;
+  /** Whether no item had a slot when the walk began (beginWalk): acquire() then need not look one up. */
+  private empty = false;
+
+  constructor() {
+    super();
+    liveMirrors.add(this.id);
+  }
+
+  /** Starts a walk that acquires each item at most once (a sync's walk of the world). */
+  beginWalk(): void {
+    this.empty = this.live === 0;
+  }
+
+  /** The item's slot, or -1. */
+  slotOf(item: T): number {
+    if (item.m_mirrorId === this.id) return item.m_mirrorSlot;
+    return this.others.size > 0 ? (this.others.get(item) ?? -1) : -1;
+  }
+
+  /**
+   * The item's slot (a new one, lowest free first, when it has none); marks it seen. `hint`, the
+   * slot the item had at the same place of the previous walk, skips the lookup when it holds.
+   */
+  acquire(item: T, generation: number, hint = -1): number {
+    if (hint >= 0 && hint < this.highWater && this.items[hint] === item) {
+      this.created = false;
+      this.mark(hint, generation);
+      return hint;
+    }
+    let slot = this.empty ? -1 : this.slotOf(item);
+    this.created = slot < 0;
+    if (slot < 0) {
+      slot = this.alloc();
+      this.items[slot] = item;
+      if (item.m_mirrorId === 0 || !liveMirrors.has(item.m_mirrorId)) {
+        item.m_mirrorId = this.id;
+        item.m_mirrorSlot = slot;
+      } else {
+        this.others.set(item, slot);
+      }
+    }
+    this.mark(slot, generation);
+    return slot;
+  }
+
+  /** Gives up the tags this allocator set (another allocator may take the objects); it is not used after. */
+  dispose(): void {
+    liveMirrors.delete(this.id);
+  }
+
+  protected override forget(item: T): void {
+    if (item.m_mirrorId === this.id) item.m_mirrorId = 0;
+    else this.others.delete(item);
   }
 }
 

@@ -59,7 +59,7 @@ import { b2BodyFlags, b2ShapeType } from '../../src/common/b2Constants';
 import type { GpuContext } from '../device/device';
 import { MirrorTable } from '../device/buffers';
 import type { UploadStats } from '../device/buffers';
-import { ChangeLog, PoolAllocator, SlotAllocator, withRoom } from './slots';
+import { ChangeLog, ObjectSlots, PoolAllocator, SlotAllocator, withRoom } from './slots';
 import { packJoint, unpackJointState } from './joints';
 import {
   BODY_LIVE,
@@ -174,9 +174,9 @@ export class GpuWorld {
   /** The world has a contact filter other than the default; the GPU applies the default rules. */
   usesCustomContactFilter = false;
 
-  private readonly bodySlots = new SlotAllocator<b2Body>();
-  private readonly fixtureSlots = new SlotAllocator<b2Fixture>();
-  private readonly jointSlots = new SlotAllocator<b2Joint>();
+  private readonly bodySlots = new ObjectSlots<b2Body>();
+  private readonly fixtureSlots = new ObjectSlots<b2Fixture>();
+  private readonly jointSlots = new ObjectSlots<b2Joint>();
   /** Proxy slots; items[slot] is the owning fixture slot (proxies are found by fixture slot). */
   private readonly proxySlots = new SlotAllocator<number>();
   private readonly proxyFixture: (b2Fixture | null)[] = [];
@@ -282,19 +282,19 @@ export class GpuWorld {
   // ---- The mapping between engine objects and GPU indices ----
 
   bodySlot(body: b2Body): number {
-    return this.bodySlots.slotOf.get(body) ?? -1;
+    return this.bodySlots.slotOf(body);
   }
   bodyAt(slot: number): b2Body | null {
     return this.bodySlots.items[slot] ?? null;
   }
   fixtureSlot(fixture: b2Fixture): number {
-    return this.fixtureSlots.slotOf.get(fixture) ?? -1;
+    return this.fixtureSlots.slotOf(fixture);
   }
   fixtureAt(slot: number): b2Fixture | null {
     return this.fixtureSlots.items[slot] ?? null;
   }
   jointSlot(joint: b2Joint): number {
-    return this.jointSlots.slotOf.get(joint) ?? -1;
+    return this.jointSlots.slotOf(joint);
   }
   jointAt(slot: number): b2Joint | null {
     return this.jointSlots.items[slot] ?? null;
@@ -801,5 +801,8 @@ export class GpuWorld {
   destroy(): void {
     if (this.world.m_changeListener === this.changes) this.world.SetChangeListener(null);
     for (const table of this.allTables) table.destroy();
+    this.bodySlots.dispose();
+    this.fixtureSlots.dispose();
+    this.jointSlots.dispose();
   }
 }

@@ -181,6 +181,13 @@ export class b2Body {
    */
   m_stateEpoch = 0;
 
+  /**
+   * Not in the C++: where a GPU mirror of the world (src-gpu's GpuWorld) keeps this object, its
+   * slot and the mirror's id (0: none), so that the mirror finds it without a map lookup.
+   */
+  m_mirrorSlot = -1;
+  m_mirrorId = 0;
+
   constructor(bd: b2BodyDef, world: b2World) {
     // The C++ asserts; b2ArgumentError names the field (see b2DefValidation).
     b2CheckBodyDef('b2World.CreateBody', bd);

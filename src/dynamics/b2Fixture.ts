@@ -142,6 +142,13 @@ export class b2Fixture {
   m_destroyed = false;
 
   /**
+   * Not in the C++: where a GPU mirror of the world (src-gpu's GpuWorld) keeps this object, its
+   * slot and the mirror's id (0: none), so that the mirror finds it without a map lookup.
+   */
+  m_mirrorSlot = -1;
+  m_mirrorId = 0;
+
+  /**
    * The C++ default constructor and b2Fixture::Create in one: b2Body.CreateFixture is the only
    * caller, and a constructed fixture is always attached to its body.
    */

@@ -88,6 +88,42 @@ describeGpu('GpuWorld: the world mirrored on the GPU', (ctx) => {
     mirror.destroy();
   });
 
+  it('two mirrors of one world each find every body, fixture and joint; a mirror destroyed gives its objects up to the next', () => {
+    const world = new b2World(new b2Vec2(0, 0));
+    const bodies = [0, 1, 2].map((i) => box(world, 3 * i, 0));
+    const jd = new b2RevoluteJointDef();
+    jd.Initialize(bodies[0], bodies[1], new b2Vec2(1.5, 0));
+    const joint = world.CreateJoint(jd);
+    const first = new GpuWorld(ctx, world);
+    first.sync();
+    // The second mirror sees objects the first has tagged, and keeps its own slots for them.
+    const extra = box(world, 20, 0);
+    const second = new GpuWorld(ctx, world);
+    second.sync();
+    first.sync();
+    for (const mirror of [first, second]) {
+      for (const b of [...bodies, extra]) {
+        expect(mirror.bodyAt(mirror.bodySlot(b))).toBe(b);
+        expect(mirror.fixtureAt(mirror.fixtureSlot(b.GetFixtureList()!))).toBe(b.GetFixtureList());
+      }
+      expect(mirror.jointAt(mirror.jointSlot(joint))).toBe(joint);
+    }
+    world.DestroyBody(bodies[2]);
+    first.sync();
+    second.sync();
+    expect(first.bodySlot(bodies[2])).toBe(-1);
+    expect(second.bodySlot(bodies[2])).toBe(-1);
+    first.destroy();
+    const third = new GpuWorld(ctx, world);
+    third.sync();
+    second.sync();
+    for (const mirror of [second, third]) {
+      for (const b of [bodies[0], bodies[1], extra]) expect(mirror.bodyAt(mirror.bodySlot(b))).toBe(b);
+    }
+    second.destroy();
+    third.destroy();
+  });
+
   it('releases the slots of destroyed objects and hands them to new ones, lowest first', () => {
     const world = new b2World(new b2Vec2(0, 0));
     const bodies = [0, 1, 2, 3].map((i) => box(world, 3 * i, 0));

@@ -118,6 +118,13 @@ export abstract class b2Joint {
   /** Set by b2World.DestroyJoint (no C++ counterpart: the C++ frees the memory). */
   m_destroyed = false;
 
+  /**
+   * Not in the C++: where a GPU mirror of the world (src-gpu's GpuWorld) keeps this object, its
+   * slot and the mirror's id (0: none), so that the mirror finds it without a map lookup.
+   */
+  m_mirrorSlot = -1;
+  m_mirrorId = 0;
+
   constructor(def: b2JointDef) {
     b2Assert(def.bodyA !== def.bodyB, 'a joint needs two different bodies');
     b2Assert(def.bodyA !== null && def.bodyB !== null, 'joint bodyA and bodyB must be set');
