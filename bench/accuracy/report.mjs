@@ -163,7 +163,11 @@ export function accuracyMarkdown(run) {
     };
     lines.push('## Stability limits', '', `| method | ${ids.map((id) => `${id} (${run.limits.find((l) => l.id === id).unit})`).join(' | ')} |`, `| --- |${' ---: |'.repeat(ids.length)}`);
     for (const owner of owners) {
-      const label = owner.startsWith('webgpu ') ? labelOf(run, { backend: 'webgpu', method: owner.slice(7) }) : labels[owner] ?? labelOf(run, { backend: owner, method: 'default' });
+      // A GPU limit found on another device than this run's says which (merge.mjs).
+      const device = run.limits.find((l) => l.method === owner && l.device !== undefined)?.device;
+      const label =
+        (owner.startsWith('webgpu ') ? labelOf(run, { backend: 'webgpu', method: owner.slice(7) }) : labels[owner] ?? labelOf(run, { backend: owner, method: 'default' })) +
+        (device !== undefined ? ` (on ${device})` : '');
       lines.push(`| ${label} | ${ids.map((id) => value(run.limits.find((l) => l.method === owner && l.id === id))).join(' | ')} |`);
     }
     lines.push('', 'The tests (each limit found by bisection; – : not tested for that engine):', '');

@@ -40,6 +40,8 @@ export interface AccuracyLimit extends LimitResult {
   method: string;
   range: [number, number];
   smallest: boolean;
+  /** A GPU limit merged from a run on another device (merge.mjs): that device. */
+  device?: string;
 }
 
 export interface AccuracyRun {
@@ -62,7 +64,7 @@ export interface GpuRunner {
 export interface AccuracyOptions {
   gpu?: GpuRunner | null;
   gpuMethods?: string[];
-  /** With `gpu`: the default method's stability limits on the GPU too (default true). */
+  /** With `gpu`: the GPU methods' stability limits too (the default method's with `quick`; default true). */
   gpuLimits?: boolean;
   peers?: { engine: unknown; api: unknown }[];
   quick?: boolean;

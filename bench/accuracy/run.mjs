@@ -305,8 +305,10 @@ export async function runAccuracy(b2, options = {}) {
   if (options.limits !== false) {
     for (const m of quick ? [DEFAULT_METHOD] : methods) limits.push(...(await stabilityLimits(b2, m, { quick })));
     for (const { engine, api } of peers) limits.push(...(await peerLimits(engine, api)));
-    // The GPU's, of the default method (a test is seconds of simulated time, frame by frame synchronised).
-    if (gpu !== null && options.gpuLimits !== false) limits.push(...(await stabilityLimits(b2, DEFAULT_METHOD, { quick, gpu })));
+    // The GPU's (a test is seconds of simulated time, frame by frame synchronised); --quick: the default method's only.
+    if (gpu !== null && options.gpuLimits !== false) {
+      for (const m of quick ? [DEFAULT_METHOD] : gpuMethods) limits.push(...(await stabilityLimits(b2, m, { quick, gpu })));
+    }
   }
   for (const l of limits) log(`limit ${l.id}: ${l.limit} ${l.unit}${l.outside ? ` (${l.outside} the range)` : ''} after ${l.tests} tests`);
   const cpus = os.cpus();
@@ -358,15 +360,17 @@ export async function loadPeers(ids, oursBundle) {
   return out;
 }
 
-const USAGE = `usage: node bench/accuracy/run.mjs [--scenes a,b] [--methods a,b] [--peers a,b] [--quick] [--no-limits] [--gpu] [--out DIR] [--ours FILE]
-  scenes:  ${ACCURACY_SCENE_IDS.join(', ')}
-  methods: ${METHODS.map((m) => m.id).join(', ')}`;
+const USAGE = `usage: node bench/accuracy/run.mjs [--scenes a,b] [--methods a,b] [--gpu-methods a,b] [--peers a,b] [--quick] [--no-limits] [--gpu] [--out DIR] [--ours FILE]
+  scenes:  ${ACCURACY_SCENE_IDS.join(', ')} ('' for none: the limits only)
+  methods: ${METHODS.map((m) => m.id).join(', ')} ('' for none: the GPU's only)
+  gpu methods (default): ${GPU_METHODS.join(', ')}`;
 
 async function main() {
   const { values } = parseArgs({
     options: {
       scenes: { type: 'string' },
       methods: { type: 'string' },
+      'gpu-methods': { type: 'string' },
       quick: { type: 'boolean', default: false },
       'no-limits': { type: 'boolean', default: false },
       gpu: { type: 'boolean', default: false },
@@ -393,8 +397,9 @@ async function main() {
     gpu,
     peers,
     quick: values.quick,
-    scenes: values.scenes?.split(','),
-    methods: values.methods?.split(','),
+    scenes: values.scenes === '' ? [] : values.scenes?.split(','),
+    methods: values.methods === '' ? [] : values.methods?.split(','),
+    gpuMethods: values['gpu-methods']?.split(','),
     limits: !values['no-limits'],
     log: (s) => process.stderr.write(s + '\n'),
   });

@@ -17,6 +17,7 @@ import { b2RevoluteJointDef } from '../../src/dynamics/joints/b2RevoluteJoint';
 import { b2WeldJointDef } from '../../src/dynamics/joints/b2WeldJoint';
 import { agm, freeFall, pendulumPeriod } from '../../bench/accuracy/analytic.mjs';
 import { bisectLimit } from '../../bench/accuracy/limits.mjs';
+import { mergeLimits } from '../../bench/accuracy/merge.mjs';
 import { loadPeers, peerLimits, runAccuracy, writeAccuracy } from '../../bench/accuracy/run.mjs';
 import { energyAndMomentum, jointErrors, penetration, restingDrift, trajectoryError } from '../../bench/accuracy/measures.mjs';
 
@@ -264,6 +265,38 @@ describe('runAccuracy --quick', () => {
       expect(JSON.parse(readFileSync(path.join(dir, 'accuracy.json'), 'utf8')).scenes).toHaveLength(4);
       expect(readFileSync(path.join(dir, 'accuracy.md'), 'utf8')).toMatch(/## Stability limits/);
       expect(readFileSync(path.join(dir, 'accuracy-chain-joint-error.svg'), 'utf8')).toMatch(/^<svg[\s\S]*<polyline[\s\S]*<\/svg>\n$/);
+    } finally {
+      rmSync(dir, { recursive: true, force: true });
+    }
+  });
+});
+
+describe('merging limits found elsewhere', () => {
+  it("puts another run's limits in place of the same methods' and names the device a GPU limit was found on", () => {
+    const limit = (method: string, value: number) => ({ id: 'stack height', test: 'a column', unit: 'boxes', method, range: [2, 80] as [number, number], smallest: false, limit: value, tests: 7, bracket: [value, value + 1] as [number, number], outside: null });
+    const run = (gpu: object | null, limits: ReturnType<typeof limit>[]) => ({
+      schema: 's',
+      date: 'd',
+      quick: false,
+      machine: { cpus: 1, cpuModel: 'cpu', node: 'v20', gpu },
+      methods: [],
+      peers: [],
+      scenes: [],
+      limits,
+    });
+    const base = run({ device: 'swiftshader', software: true }, [limit('iter-8-3', 31), limit('webgpu iter-8-3', 19)]);
+    const h100 = run({ device: 'nvidia-h100' }, [limit('webgpu iter-8-3', 20), limit('webgpu iter-4-2', 15)]);
+    const merged = mergeLimits(base, [h100]);
+    expect(merged.limits.map((l) => [l.method, l.limit, l.device])).toEqual([
+      ['iter-8-3', 31, undefined],
+      ['webgpu iter-8-3', 20, 'nvidia-h100'],
+      ['webgpu iter-4-2', 15, 'nvidia-h100'],
+    ]);
+    expect(base.limits).toHaveLength(2);
+    const dir = mkdtempSync(path.join(tmpdir(), 'accuracy-'));
+    try {
+      writeAccuracy(merged, dir);
+      expect(readFileSync(path.join(dir, 'accuracy.md'), 'utf8')).toMatch(/\| WebGPU, iter-8-3[^|]* \(on nvidia-h100\) \| 20\.0 \|/);
     } finally {
       rmSync(dir, { recursive: true, force: true });
     }
