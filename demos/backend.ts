@@ -12,19 +12,29 @@
  * A test whose listener has its own PreSolve stays on JavaScript (Test.GpuRefusal says why); the
  * others get a listener with only the callbacks they use (Test.GpuContactListener), since the
  * backend logs and reads back only what a listener asks for.
+ *
+ * A large world on WebGPU (GPU_DRAW_BODIES bodies or more) is drawn by GpuRenderer from the GPU's
+ * own buffers into a WebGPU canvas under the 2D one, which then holds only the text and the other
+ * debug layers: drawing every body through DrawDebugData would fetch every body's state each frame
+ * (b2World.PullState), which costs more than the step at that size.
  */
 
 import { WebGPUBackend } from '../src-gpu/backend/backend';
+import { GpuRenderer } from '../src-gpu/render/render';
 import { requestGpu } from '../src-gpu/device/device';
 import type { GpuContext } from '../src-gpu/device/device';
 import type { GpuReadStats } from '../src-gpu/stepper';
 import { adapterName, StepTimes } from './framework/demo';
+import type { TestbedDraw } from './framework/render';
 import type { Settings } from './framework/settings';
 import type { Test } from './framework/test';
 
 export type BackendName = 'js' | 'webgpu';
 
 export const BACKEND_NAMES: readonly BackendName[] = ['js', 'webgpu'];
+
+/** Bodies from which a world stepped on WebGPU is drawn by GpuRenderer. */
+export const GPU_DRAW_BODIES = 1000;
 
 export class TestbedBackend {
   /** What the page asks for; a test the GPU refuses still runs on JavaScript (`refusal` says why). */
@@ -41,9 +51,25 @@ export class TestbedBackend {
   private test: Test | null = null;
   private backend: WebGPUBackend | null = null;
   private pending: Promise<void> | null = null;
+  /** Draws the world of `backend` on WebGPU when it is large; made for each backend. */
+  private renderer: GpuRenderer | null = null;
+  private gpuCanvasContext: GPUCanvasContext | null = null;
 
-  /** Called with what failed (a lost device, a synchronisation that threw); the test goes on on JavaScript. */
-  constructor(private readonly report: (error: unknown, what: string) => void) {}
+  /**
+   * `report` is called with what failed (a lost device, a synchronisation that threw); the test
+   * goes on on JavaScript. `gpuCanvas` (under the 2D canvas, the same size) is where GpuRenderer
+   * draws large worlds, with `view`'s camera.
+   */
+  constructor(
+    private readonly report: (error: unknown, what: string) => void,
+    private readonly gpuCanvas: HTMLCanvasElement | null = null,
+    private readonly view: TestbedDraw | null = null,
+  ) {}
+
+  /** Whether GpuRenderer draws `test`'s world this frame (WebGPU steps it and it is large). */
+  drawsOnGpu(test: Test): boolean {
+    return this.backend !== null && this.gpuCanvas !== null && test.m_world.GetBodyCount() >= GPU_DRAW_BODIES;
+  }
 
   /** What steps the current test. */
   get active(): BackendName {
@@ -104,6 +130,7 @@ export class TestbedBackend {
       const oldBackend = this.backend;
       this.adopt(test);
       this.backend = null;
+      this.dropRenderer();
       // The old world is thrown away: its GPU buffers go, without a read-back.
       if (oldBackend !== null) await oldBackend.destroy().catch(() => undefined);
     }
@@ -112,6 +139,7 @@ export class TestbedBackend {
     if (this.chosen === 'js') {
       if (this.backend === null) return;
       this.backend = null;
+      this.dropRenderer();
       this.adopt(test);
       try {
         await world.SetBackend(null);
@@ -154,8 +182,12 @@ export class TestbedBackend {
     return this.context;
   }
 
-  /** Before the test's Step: on WebGPU, the listener that records contact points when they are drawn or used. */
+  /**
+   * Before the test's Step: on WebGPU, the listener that records contact points when they are drawn
+   * or used, and whether the test leaves its shapes and joints to GpuRenderer.
+   */
   beforeStep(test: Test, settings: Settings): void {
+    test.m_gpuDrawsWorld = this.drawsOnGpu(test);
     if (this.backend === null) return;
     test.m_world.SetContactListener(test.GpuContactListener(settings.drawContactPoints !== 0 || test.UsesContactPoints()));
   }
@@ -169,6 +201,7 @@ export class TestbedBackend {
       this.times.add(performance.now(), test.m_world.GetProfile().step);
       return;
     }
+    if (test.m_gpuDrawsWorld) this.drawOnGpu(this.backend);
     // The synchronisation's PostSolve calls record the points the next frame draws.
     test.m_pointCount = 0;
     const started = test.m_stepStart;
@@ -183,10 +216,36 @@ export class TestbedBackend {
     );
   }
 
+  /** Records a frame of the world after the step just called, with the 2D canvas's camera. */
+  private drawOnGpu(backend: WebGPUBackend): void {
+    const canvas = this.gpuCanvas!;
+    const view = this.view!;
+    if (this.renderer === null || this.renderer.backend !== backend) {
+      this.dropRenderer();
+      this.gpuCanvasContext ??= canvas.getContext('webgpu');
+      if (this.gpuCanvasContext === null) throw new Error('the testbed could not get a WebGPU context for its GPU canvas');
+      this.renderer = new GpuRenderer(backend, this.gpuCanvasContext, { background: [0, 0, 0, 1] });
+    }
+    const width = Math.round(view.width * view.dpr);
+    const height = Math.round(view.height * view.dpr);
+    if (canvas.width !== width || canvas.height !== height) {
+      canvas.width = width;
+      canvas.height = height;
+    }
+    Object.assign(this.renderer.camera, { x: view.viewCenter.x, y: view.viewCenter.y, scale: view.PixelsPerMetre() * view.dpr });
+    this.renderer.draw().catch((error) => this.report(error, 'GpuRenderer failed to draw the world'));
+  }
+
+  private dropRenderer(): void {
+    this.renderer?.destroy();
+    this.renderer = null;
+  }
+
   /** The GPU failed: say so and carry on with the JavaScript engine from the last synchronised state. */
   private async fall(test: Test, error: unknown): Promise<void> {
     this.report(error, 'The WebGPU backend failed; the test goes on with the JavaScript engine');
     this.backend = null;
+    this.dropRenderer();
     this.refusal = `the GPU failed: ${error instanceof Error ? error.message : String(error)}`;
     this.adopt(test);
     await test.m_world.SetBackend(null).catch(() => undefined);
@@ -202,10 +261,14 @@ export class TestbedBackend {
       return [`backend: JavaScript engine${why}, step ${step} (median, last second)`];
     }
     const read = this.backend.readStats;
-    return [
+    const lines = [
       `backend: WebGPU, step + read-back ${step} (median, last second)`,
       `adapter: ${this.adapter}`,
       `read-back per frame: ${read === null ? '–' : `${(read.bytes / 1024).toFixed(1)} KB, ${read.unpackMs.toFixed(2)} ms to unpack, ${read.pullMs.toFixed(2)} ms to update the bodies`}`,
     ];
+    if (this.renderer !== null && this.test !== null && this.drawsOnGpu(this.test)) {
+      lines.push(`drawn by GpuRenderer from the GPU's buffers (${GPU_DRAW_BODIES} bodies or more): no body read back to draw`);
+    }
+    return lines;
   }
 }

@@ -22,6 +22,7 @@ import { g_testEntries } from './tests/index';
 
 
 const canvas = $<HTMLCanvasElement>('canvas');
+const gpuCanvas = $<HTMLCanvasElement>('gpu-canvas');
 const testList = $<HTMLSelectElement>('tests');
 const webgpuStatus = $<HTMLParagraphElement>('webgpu-status');
 const backendList = $<HTMLSelectElement>('backend');
@@ -43,7 +44,7 @@ let savedStepSettings: StepSettings | null = null;
 /** Errors thrown by tests (also sent to the console). */
 const errors: string[] = [];
 let frameCount = 0;
-const backends = new TestbedBackend((error, what) => report(error, what));
+const backends = new TestbedBackend((error, what) => report(error, what), gpuCanvas, draw);
 
 function syncView(): void {
   draw.viewCenter.Set(settings.viewCenter.x, settings.viewCenter.y);
@@ -148,6 +149,10 @@ function simulationLoop(): void {
     return;
   }
   syncView();
+  // A large world on WebGPU is drawn under the 2D canvas (TestbedBackend).
+  const onGpu = backends.drawsOnGpu(test);
+  draw.transparent = onGpu;
+  gpuCanvas.hidden = !onGpu;
   draw.BeginFrame();
   test.SetTextLine(30);
   settings.hz = settingsHz;
@@ -499,7 +504,10 @@ function refreshBackend(): void {
     text =
       `Stepping on WebGPU (${backends.adapter}). Each frame reads the world back once (world.Synchronize: positions, ` +
       `velocities, contact events)${read === null ? '' : `: ${(read.bytes / 1024).toFixed(1)} KB, ${read.unpackMs.toFixed(2)} ms on the host to unpack and ${read.pullMs.toFixed(2)} ms to update the bodies drawn`}; ` +
-      `the drawing is one step behind the GPU. ${backends.skippedFrames} frames skipped while a read-back ran.`;
+      (backends.drawsOnGpu(test)
+        ? "this large world is drawn from the GPU's own buffers after each step (GpuRenderer): no body is read back to draw it. "
+        : 'the drawing is one step behind the GPU. ') +
+      `${backends.skippedFrames} frames skipped while a read-back ran.`;
   }
   backendNote.textContent = text;
   backendNote.className = `note ${backends.refusal !== null ? 'warn' : ''}`;
@@ -564,7 +572,20 @@ const hooks = {
   /** Choose the backend; resolves with what steps the current test. */
   setBackend: chooseBackend,
   /** The backend chosen, the one stepping the test, and why they differ. */
-  backend: () => ({ chosen: backends.chosen, active: backends.active, refusal: backends.refusal, adapter: backends.adapter }),
+  backend: () => ({
+    chosen: backends.chosen,
+    active: backends.active,
+    refusal: backends.refusal,
+    adapter: backends.adapter,
+    drawsOnGpu: backends.drawsOnGpu(test),
+  }),
+  /** Bodies that have fetched the last synchronisation's state (on WebGPU, a body fetches it when read). */
+  fetchedBodies() {
+    const world = test.m_world;
+    let fetched = 0;
+    for (let b = world.m_bodyList; b !== null; b = b.m_next) if (b.m_stateEpoch === world.m_stateEpoch) fetched++;
+    return fetched;
+  },
   settings,
   /** The current test and its world. */
   state() {

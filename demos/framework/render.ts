@@ -30,6 +30,8 @@ export class TestbedDraw extends b2DebugDraw {
   width = 640;
   height = 480;
   dpr = 1;
+  /** Clear frames to transparent, not to the background: GpuRenderer draws the world underneath. */
+  transparent = false;
   /** Where text was drawn since the last BeginFrame, in CSS pixels. */
   readonly textRects: Rect[] = [];
   /** The text drawn since the last BeginFrame. */
@@ -90,8 +92,12 @@ export class TestbedDraw extends b2DebugDraw {
 
     this.m_batch?.flush();
     ctx.setTransform(1, 0, 0, 1, 0, 0);
-    ctx.fillStyle = kBackground;
-    ctx.fillRect(0, 0, bw, bh);
+    if (this.transparent) {
+      ctx.clearRect(0, 0, bw, bh);
+    } else {
+      ctx.fillStyle = kBackground;
+      ctx.fillRect(0, 0, bw, bh);
+    }
 
     const k = this.PixelsPerMetre() * dpr;
     this.SetDrawScale(k);

@@ -137,6 +137,12 @@ export class Test extends b2ContactListener {
   readonly m_totalProfile = new b2Profile();
   /** Not in the C++: performance.now() when Step last called the world's Step (the GPU step's timer starts there). */
   m_stepStart = 0;
+  /**
+   * Set by the testbed while GpuRenderer draws the shapes and joints from the GPU's buffers (a
+   * large world on WebGPU): DrawDebugData then draws only the other layers, and is not called at
+   * all without one, so that no body is read back for drawing.
+   */
+  m_gpuDrawsWorld = false;
   /** The listener set while the WebGPU backend steps the world, and whether it records points. */
   private m_gpuListener: b2ContactListener | null = null;
   private m_gpuListenerRecords = false;
@@ -380,6 +386,7 @@ export class Test extends b2ContactListener {
     flags += settings.drawAABBs * b2Draw.e_aabbBit;
     flags += settings.drawPairs * b2Draw.e_pairBit;
     flags += settings.drawCOMs * b2Draw.e_centerOfMassBit;
+    if (this.m_gpuDrawsWorld) flags &= ~(b2Draw.e_shapeBit | b2Draw.e_jointBit);
     this.m_debugDraw.SetFlags(flags);
 
     // The Sleep setting is Box2D 2.3's; a no-op while it keeps the world's value.
@@ -396,7 +403,7 @@ export class Test extends b2ContactListener {
     this.m_stepStart = performance.now();
     this.m_world.Step(timeStep, settings.velocityIterations, settings.positionIterations);
 
-    this.m_world.DrawDebugData();
+    if (flags !== 0) this.m_world.DrawDebugData();
 
     if (settings.drawPairs) {
       this.DrawPairs();

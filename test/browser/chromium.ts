@@ -128,3 +128,27 @@ export function slug(name: string): string {
     .replace(/[^a-z0-9]+/g, '-')
     .replace(/^-|-$/g, '');
 }
+
+/**
+ * Pixels of the element `selector` that are not the black background, counted in a screenshot
+ * (a WebGPU canvas cannot be read back from the page once presented).
+ */
+export async function screenshotPixels(page: Page, selector: string): Promise<number> {
+  const element = await page.$(selector);
+  if (element === null) throw new Error(`screenshotPixels: no element ${selector}`);
+  const png = Buffer.from(await element.screenshot({ type: 'png' })).toString('base64');
+  return page.evaluate(async (data) => {
+    const image = new Image();
+    image.src = `data:image/png;base64,${data}`;
+    await image.decode();
+    const copy = document.createElement('canvas');
+    copy.width = image.width;
+    copy.height = image.height;
+    const ctx = copy.getContext('2d')!;
+    ctx.drawImage(image, 0, 0);
+    const pixels = ctx.getImageData(0, 0, copy.width, copy.height).data;
+    let n = 0;
+    for (let i = 0; i < pixels.length; i += 4) if (pixels[i] + pixels[i + 1] + pixels[i + 2] > 30) n++;
+    return n;
+  }, png);
+}

@@ -9,7 +9,7 @@
 import path from 'node:path';
 import type { Page } from 'puppeteer-core';
 import { describe, expect, it } from 'vitest';
-import { collectErrors, ensureArtifactsDir, launchChromium, useBrowser, useTestbed } from './chromium';
+import { collectErrors, ensureArtifactsDir, launchChromium, screenshotPixels, useBrowser, useTestbed } from './chromium';
 import type { LaunchedBrowser } from './chromium';
 import { launchFirefox } from './firefox';
 
@@ -49,29 +49,6 @@ async function framesDone(page: Page, frames: number): Promise<Demo> {
   return state(page);
 }
 
-/**
- * Pixels of the page's canvas that are not the black background, counted in a screenshot (a
- * WebGPU canvas cannot be read back from the page once presented).
- */
-async function drawnPixels(page: Page): Promise<number> {
-  const canvas = (await page.$('#world'))!;
-  const png = Buffer.from(await canvas.screenshot({ type: 'png' })).toString('base64');
-  return page.evaluate(async (data) => {
-    const image = new Image();
-    image.src = `data:image/png;base64,${data}`;
-    await image.decode();
-    const copy = document.createElement('canvas');
-    copy.width = image.width;
-    copy.height = image.height;
-    const ctx = copy.getContext('2d')!;
-    ctx.drawImage(image, 0, 0);
-    const pixels = ctx.getImageData(0, 0, copy.width, copy.height).data;
-    let n = 0;
-    for (let i = 0; i < pixels.length; i += 4) if (pixels[i] + pixels[i + 1] + pixels[i + 2] > 30) n++;
-    return n;
-  }, png);
-}
-
 describe('the large-world page with WebGPU (Chromium, SwiftShader)', () => {
   const chromium = useBrowser(() => launchChromium({ webgpu: true }));
 
@@ -84,7 +61,7 @@ describe('the large-world page with WebGPU (Chromium, SwiftShader)', () => {
       expect(after.bodies).toBe(10_001); // the pyramids' boxes and their ground; the mouse joint's body comes on top
       expect(after.drawn!.proxies).toBeGreaterThanOrEqual(10_000);
       expect(after.steps).toBeGreaterThan(before.steps);
-      expect(await drawnPixels(page)).toBeGreaterThan(5_000);
+      expect(await screenshotPixels(page, '#world')).toBeGreaterThan(5_000);
       // The step's own small read-backs (counts, overflow) are all there is: nothing the size of
       // the bodies' transforms (16 bytes or more a body) is ever mapped.
       const maps = await page.evaluate(() => (window as unknown as { maps: Mapped[] }).maps);
@@ -157,7 +134,7 @@ for (const [name, launch, prefix] of [
         expect(s.bodies).toBe(2_001);
         expect(await page.$eval('#adapter', (e) => e.textContent)).toMatch(/^This browser (lacks WebGPU|has WebGPU but no adapter).*: the JavaScript engine runs, with at most 10,000 bodies drawn on a 2D canvas\.$/);
         expect(await page.$$eval('#bodies option', (o) => o.map((e) => e.textContent))).toEqual(['1,000', '2,000', '5,000', '10,000']);
-        expect(await drawnPixels(page)).toBeGreaterThan(1_000);
+        expect(await screenshotPixels(page, '#world')).toBeGreaterThan(1_000);
         await page.screenshot({ path: path.join(artifacts, `${prefix}large-no-webgpu.png`) });
         expect(errors).toEqual([]);
       } finally {

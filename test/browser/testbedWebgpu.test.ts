@@ -10,7 +10,7 @@
 import path from 'node:path';
 import type { Page } from 'puppeteer-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { ensureArtifactsDir, launchChromium, openTestbed, serveTestbed } from './chromium';
+import { ensureArtifactsDir, launchChromium, openTestbed, screenshotPixels, serveTestbed } from './chromium';
 import type { LaunchedBrowser, Testbed } from './chromium';
 
 /**
@@ -242,6 +242,46 @@ describe('the testbed on the WebGPU backend (Chromium, SwiftShader)', () => {
       window.testbed.settings.drawStats = 0;
       await window.testbed.setBackend('js');
     });
+    expect(await allErrors()).toEqual([]);
+  }, 300_000);
+
+  it("draws a large world on WebGPU with GpuRenderer from the GPU's buffers under the 2D canvas's text: the bodies show and none is fetched to draw them; back on JavaScript the 2D canvas draws them again", async () => {
+    const onGpu = await page.evaluate(async () => {
+      const tb = window.testbed;
+      tb.select('Benchmark: many pyramids');
+      tb.settings.drawStats = 1;
+      await tb.setBackend('webgpu');
+      await tb.frameAsync(10);
+      return {
+        backend: tb.backend(),
+        bodies: tb.state().bodyCount,
+        fetched: tb.fetchedBodies(),
+        drawn2d: tb.drawnPixels(),
+        text: tb.text(),
+        gpuCanvasHidden: document.querySelector<HTMLCanvasElement>('#gpu-canvas')!.hidden,
+        note: document.getElementById('backend-note')!.textContent,
+      };
+    });
+    expect(onGpu.bodies).toBeGreaterThanOrEqual(1000);
+    expect(onGpu.backend.active).toBe('webgpu');
+    expect(onGpu.backend.drawsOnGpu).toBe(true);
+    expect(onGpu.gpuCanvasHidden).toBe(false);
+    // Nothing but text on the 2D canvas, and no body has fetched the synchronised state to be drawn.
+    expect(onGpu.drawn2d).toBe(0);
+    expect(onGpu.fetched).toBe(0);
+    expect(onGpu.text).toContain("drawn by GpuRenderer from the GPU's buffers (1000 bodies or more): no body read back to draw");
+    expect(await screenshotPixels(page, '#gpu-canvas')).toBeGreaterThan(5_000);
+    await page.screenshot({ path: path.join(artifacts, 'testbed-large-webgpu.png') });
+    const onJs = await page.evaluate(async () => {
+      const tb = window.testbed;
+      await tb.setBackend('js');
+      await tb.frameAsync(2);
+      tb.settings.drawStats = 0;
+      return { backend: tb.backend(), drawn2d: tb.drawnPixels(), gpuCanvasHidden: document.querySelector<HTMLCanvasElement>('#gpu-canvas')!.hidden };
+    });
+    expect(onJs.backend.drawsOnGpu).toBe(false);
+    expect(onJs.gpuCanvasHidden).toBe(true);
+    expect(onJs.drawn2d).toBeGreaterThan(5_000);
     expect(await allErrors()).toEqual([]);
   }, 300_000);
 
