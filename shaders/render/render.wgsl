@@ -1,27 +1,20 @@
-// render.wgsl: draws the world straight from the solver's buffers (GpuRenderer): every live
-// proxy's shape filled (`fill_vertex`: circles and polygons) and outlined (`outline_vertex`:
-// circles with their radius line, polygons, edges and chain children), and every live joint as
-// b2World::DrawJoint draws it (`joint_vertex`), in b2World::DrawDebugData's colours or the
-// application's colour per body.
+// render.wgsl: draws the world straight from the solver's buffers (GpuRenderer): the proxies that
+// cull.wgsl listed, each list with its own pipeline (LIST) and indirect draw: shapes filled
+// (`fill_vertex`: circles and polygons), outlined (`outline_vertex`: circles with their radius
+// line, polygons, edges and chain children) or, too small to see, drawn as one pixel at their
+// centre (`point_vertex`); and every live joint as b2World::DrawJoint draws it (`joint_vertex`),
+// in the colour cull.wgsl gave each body.
 //
-// In:  view (camera cell and offset, clip units per metre, cell size, colour mode), proxyRef, fixtureShape, shapePool, bodyXf, bodyCell, bodyFlags, bodyAwake,
-//      bodyColour (rgba8 per body slot, read when view.colourMode is COLOUR_BODY); joints,
-//      jointParams, and the body transforms for the joints' lines.
+// In:  view (camera cell and offset, clip units per metre, cell size, list stride), visible (the
+//      draw lists), proxyRef, fixtureShape, shapePool, bodyXf, bodyCell, bodyRgba (each body
+//      slot's colour, rgba8); joints, jointParams, and the body transforms for the joints' lines.
 // Out: the colour attachment only.
 // Invariants: reads the world and never writes it, so a frame can be drawn between any two steps;
-//      an instance whose proxy or joint slot is dead, and a vertex beyond what its shape needs,
+//      every listed proxy is live; a vertex beyond what its shape needs, and a dead joint slot's,
 //      is a degenerate primitive outside the clip volume.
 
-struct View {
-  cameraCell: vec2<i32>,
-  cameraOffset: vec2<f32>,
-  clipScale: vec2<f32>,
-  cellSize: f32,
-  colourMode: u32,
-}
-
-const COLOUR_STATE: u32 = 0u;
-const COLOUR_BODY: u32 = 1u;
+// The draw list this pipeline draws (LIST_* in renderView.wgsl): set per pipeline by the host.
+override LIST: u32;
 // Sides of a circle's outline (its radius line is one more): RENDER_CIRCLE_SEGMENTS in layout.ts.
 const CIRCLE_SEGMENTS: u32 = 16u;
 const JOINT_PARAMS_VEC4: u32 = 5u;
@@ -29,12 +22,11 @@ const JOINT_PARAMS_VEC4: u32 = 5u;
 @group(0) @binding(0) var<uniform> view: View;
 @group(0) @binding(1) var<storage, read> bodyXf: array<vec4<f32>>;
 @group(0) @binding(2) var<storage, read> bodyCell: array<vec2<i32>>;
-@group(0) @binding(3) var<storage, read> bodyFlags: array<u32>;
-@group(0) @binding(4) var<storage, read> bodyAwake: array<u32>;
-@group(0) @binding(5) var<storage, read> bodyColour: array<u32>;
+@group(0) @binding(3) var<storage, read> bodyRgba: array<u32>;
 @group(1) @binding(0) var<storage, read> proxyRef: array<vec4<u32>>;
 @group(1) @binding(1) var<storage, read> fixtureShape: array<vec4<u32>>;
 @group(1) @binding(2) var<storage, read> shapePool: array<vec2<f32>>;
+@group(1) @binding(3) var<storage, read> visible: array<u32>;
 @group(2) @binding(0) var<storage, read> joints: array<vec4<u32>>;
 @group(2) @binding(1) var<storage, read> jointParams: array<vec4<f32>>;
 
@@ -57,8 +49,7 @@ fn hidden() -> Varyings {
 
 // A world point given as a cell and an offset in it, in clip coordinates.
 fn to_clip(cell: vec2<i32>, offset: vec2<f32>) -> vec4<f32> {
-  let rel = vec2<f32>(cell - view.cameraCell) * view.cellSize + (offset - view.cameraOffset);
-  return vec4<f32>(rel * view.clipScale, 0.0, 1.0);
+  return vec4<f32>(view_clip(view, cell, offset), 0.0, 1.0);
 }
 
 // A point in body `b`'s frame, in clip coordinates.
@@ -68,45 +59,16 @@ fn body_point_clip(b: u32, p: vec2<f32>) -> vec4<f32> {
   return to_clip(bodyCell[b], offset);
 }
 
-// b2World::DrawDebugData's colour of a body's shapes, or the application's.
-fn body_colour(b: u32) -> vec3<f32> {
-  // A body the application never coloured (a zero word: its alpha byte is 0) keeps its state's.
-  if (view.colourMode == COLOUR_BODY && bodyColour[b] != 0u) {
-    return unpack4x8unorm(bodyColour[b]).rgb;
-  }
-  let flags = bodyFlags[b];
-  if ((flags & BODY_ACTIVE) == 0u) {
-    return vec3<f32>(0.5, 0.5, 0.3);
-  }
-  let bodyType = body_type(flags);
-  if (bodyType == STATIC_BODY) {
-    return vec3<f32>(0.5, 0.9, 0.5);
-  }
-  if (bodyType != DYNAMIC_BODY) {
-    return vec3<f32>(0.5, 0.5, 0.9);
-  }
-  if (bodyAwake[b] == 0u) {
-    return vec3<f32>(0.6, 0.6, 0.6);
-  }
-  return vec3<f32>(0.9, 0.7, 0.7);
+// Body `b`'s colour (cull.wgsl `colours`).
+fn body_rgb(b: u32) -> vec3<f32> {
+  return unpack4x8unorm(bodyRgba[b]).rgb;
 }
 
-// A proxy slot's shape record: whether the slot is live, its body, its child index, and the
-// fixture's shape type, vertex count, pool offset and radius.
-struct ProxyShape {
-  live: bool,
-  body: u32,
-  child: u32,
-  shapeType: u32,
-  count: u32,
-  base: u32,
-  radius: f32,
-}
-
-fn proxy_shape(proxy: u32) -> ProxyShape {
+// The shape of the proxy at `instance` of this pipeline's list.
+fn listed_shape(instance: u32) -> ProxyShape {
+  let proxy = visible[LIST * view.listStride + instance];
   let info = proxyRef[proxy];
-  let shape = fixtureShape[info.x];
-  return ProxyShape((info.w & PROXY_LIVE) != 0u, info.z, info.y, shape.x & 0xfu, shape.x >> 8u, shape.y, bitcast<f32>(shape.w));
+  return decode_proxy(info, fixtureShape[info.x]);
 }
 
 // The corners of a quad as two triangles, in [-1, 1]^2.
@@ -120,11 +82,8 @@ fn quad_corner(i: u32) -> vec2<f32> {
 // (3 (n - 2) vertices, at most 18): filled at half the colour, half transparent, as
 // b2Draw::DrawSolidPolygon and DrawSolidCircle fill.
 @vertex
-fn fill_vertex(@builtin(vertex_index) v: u32, @builtin(instance_index) proxy: u32) -> Varyings {
-  let s = proxy_shape(proxy);
-  if (!s.live) {
-    return hidden();
-  }
+fn fill_vertex(@builtin(vertex_index) v: u32, @builtin(instance_index) instance: u32) -> Varyings {
+  let s = listed_shape(instance);
   var out: Varyings;
   if (s.shapeType == SHAPE_CIRCLE) {
     if (v >= 6u) {
@@ -146,18 +105,15 @@ fn fill_vertex(@builtin(vertex_index) v: u32, @builtin(instance_index) proxy: u3
   } else {
     return hidden();
   }
-  out.colour = vec4<f32>(0.5 * body_colour(s.body), 0.5);
+  out.colour = vec4<f32>(0.5 * body_rgb(s.body), 0.5);
   return out;
 }
 
 // Line-list outlines: a polygon's n sides, a circle's CIRCLE_SEGMENTS sides and its radius line
 // along the body's x axis (b2Draw::DrawSolidCircle's axis), an edge or chain child's segment.
 @vertex
-fn outline_vertex(@builtin(vertex_index) v: u32, @builtin(instance_index) proxy: u32) -> Varyings {
-  let s = proxy_shape(proxy);
-  if (!s.live) {
-    return hidden();
-  }
+fn outline_vertex(@builtin(vertex_index) v: u32, @builtin(instance_index) instance: u32) -> Varyings {
+  let s = listed_shape(instance);
   let side = v / 2u;
   let end = v % 2u;
   var p: vec2<f32>;
@@ -177,15 +133,33 @@ fn outline_vertex(@builtin(vertex_index) v: u32, @builtin(instance_index) proxy:
     }
     p = shapePool[s.base + (side + end) % s.count];
   } else {
-    // An edge's vertices 1 and 2 come first in its record; a chain's child i is (v[i], v[i+1]).
     if (side > 0u) {
       return hidden();
     }
-    p = shapePool[s.base + select(0u, s.child, s.shapeType == SHAPE_CHAIN) + end];
+    p = shapePool[segment_start(s) + end];
   }
   var out: Varyings;
   out.position = body_point_clip(s.body, p);
-  out.colour = vec4<f32>(body_colour(s.body), 1.0);
+  out.colour = vec4<f32>(body_rgb(s.body), 1.0);
+  out.local = vec2<f32>(0.0);
+  out.circle = 0u;
+  return out;
+}
+
+// A point-list vertex at the shape's centre in its outline colour: a circle's centre, a
+// polygon's centroid (after its vertices and normals in the pool), an edge's vertex 1, a chain
+// child's first vertex.
+@vertex
+fn point_vertex(@builtin(instance_index) instance: u32) -> Varyings {
+  let s = listed_shape(instance);
+  // segment_start is also a circle's centre and an edge's vertex 1: the base of their records.
+  var centre = segment_start(s);
+  if (s.shapeType == SHAPE_POLYGON) {
+    centre = s.base + 2u * s.count;
+  }
+  var out: Varyings;
+  out.position = body_point_clip(s.body, shapePool[centre]);
+  out.colour = vec4<f32>(body_rgb(s.body), 1.0);
   out.local = vec2<f32>(0.0);
   out.circle = 0u;
   return out;

@@ -142,6 +142,21 @@ export const USAGE = {
 /** Sides of a circle's outline drawn by the renderer (shaders/render/render.wgsl CIRCLE_SEGMENTS). */
 export const RENDER_CIRCLE_SEGMENTS = 16;
 
+/**
+ * The renderer's draw lists, in drawing order (shaders/shared/renderView.wgsl LIST_*): each is a
+ * region of the list buffer and a drawIndirect record of RENDER_DRAW_ARGS_WORDS words.
+ */
+export const RENDER_LIST = { FILL_SMALL: 0, FILL: 1, OUTLINE_SMALL: 2, OUTLINE: 3, POINT: 4 } as const;
+export const RENDER_LIST_COUNT = 5;
+/** vertexCount, instanceCount, firstVertex, firstInstance (renderView.wgsl DRAW_ARGS_WORDS). */
+export const RENDER_DRAW_ARGS_WORDS = 4;
+/** Polygons of at most this many vertices take the small lists (shaders/render/cull.wgsl SMALL_POLYGON_VERTICES). */
+export const RENDER_SMALL_POLYGON_VERTICES = 4;
+/** A shape narrower than this many pixels on screen is drawn as one point (cull.wgsl POINT_PIXELS). */
+export const RENDER_POINT_PIXELS = 2;
+/** view.colourMode: colours by body state or the application's per body (cull.wgsl COLOUR_*). */
+export const RENDER_COLOUR_MODE = { STATE: 0, BODY: 1 } as const;
+
 /** GPUShaderStage, without relying on the WebGPU globals being installed. */
 export const SHADER_STAGE = { VERTEX: 0x1, FRAGMENT: 0x2, COMPUTE: 0x4 } as const;
 

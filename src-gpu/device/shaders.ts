@@ -6,8 +6,9 @@
  * parameters, constants and helpers) to the solver stages, and shaders/shared/solveJointsCommon.wgsl (the
  * joints' share of the colour passes) to the stages that solve joints; shaders/shared/distance.wgsl (GJK)
  * to the sensor test and to continuous collision, which also takes manifold.wgsl's shape helpers.
- * The renderer's shader (shaders/render/render.wgsl), the point query's and the bulk transform
- * read's take common.wgsl only.
+ * The renderer's two stages (shaders/render/cull.wgsl and render.wgsl) take
+ * shaders/shared/renderView.wgsl (their view uniform, draw list numbers and shape decoding); the
+ * point query's and the bulk transform read's take common.wgsl only.
  */
 
 import { ENGINE_WGSL } from './engineWgsl';
@@ -41,6 +42,8 @@ import solveJoints from '../../shaders/solver/solveJoints.wgsl';
 import timeOfImpact from '../../shaders/solver/timeOfImpact.wgsl';
 import solveJointsCommon from '../../shaders/shared/solveJointsCommon.wgsl';
 import islands from '../../shaders/solver/islands.wgsl';
+import renderView from '../../shaders/shared/renderView.wgsl';
+import cull from '../../shaders/render/cull.wgsl';
 import render from '../../shaders/render/render.wgsl';
 import pointQuery from '../../shaders/query/pointQuery.wgsl';
 import transforms from '../../shaders/query/transforms.wgsl';
@@ -74,7 +77,8 @@ export const SHADERS = {
   solveJoints: `${common}\n${solverCommon}\n${solveJointsCommon}\n${solveJoints}`,
   islands: `${common}\n${solverCommon}\n${islands}`,
   timeOfImpact: `${common}\n${manifold}\n${distance}\n${timeOfImpact}`,
-  render: `${common}\n${render}`,
+  cull: `${common}\n${renderView}\n${cull}`,
+  render: `${common}\n${renderView}\n${render}`,
   pointQuery: `${common}\n${pointQuery}`,
   transforms: `${common}\n${transforms}`,
 } as const;

@@ -1,16 +1,22 @@
 /*
  * GpuRenderer: draws a world stepped by a WebGPUBackend straight from the solver's buffers, with
  * instanced geometry (shaders/render/render.wgsl): no body's position ever comes back to
- * JavaScript to be drawn. A frame is a render pass submitted to the backend's queue after the
- * steps called so far, so it shows the latest step without waiting for it to finish.
+ * JavaScript to be drawn. A frame is one command encoder submitted to the backend's queue after
+ * the steps called so far, so it shows the latest step without waiting for it to finish: the cull
+ * pass (src-gpu/render/cull.ts) lists the proxies on screen by the geometry they need, then the
+ * render pass draws each list with drawIndirect, so a frame's vertex work follows what is
+ * visible, not the world's size.
  *
  * In:  the attached world's mirror (src-gpu/world/world.ts): bodyXf, bodyCell, bodyFlags,
  *      bodyAwake, proxyRef, fixtureShape, shapePool, joints, jointParams; the camera; the
  *      application's body colours (setBodyColour).
- * Out: one render pass into the canvas's current texture (draw) or a given texture (drawTo):
- *      filled circles and polygons, outlines of every shape, joints as lines.
- * Invariants: only reads the world's buffers; bind groups follow the tables when they grow; a
- *      body's colour stays with its slot until set again.
+ * Out: a compute pass and a render pass into the canvas's current texture (draw) or a given
+ *      texture (drawTo): filled circles and polygons and outlines of every shape at least
+ *      RENDER_POINT_PIXELS across on screen, one pixel in the outline colour for each smaller
+ *      one, joints as lines.
+ * Invariants: only reads the world's buffers; shapes outside the view cost no vertex work; bind
+ *      groups follow the tables when they grow; a body's colour stays with its slot until set
+ *      again.
  */
 
 import type { b2Body } from '../../src/dynamics/b2Body';
@@ -18,9 +24,19 @@ import type { WebGPUBackend } from '../backend/backend';
 import type { GpuContext } from '../device/device';
 import { bufferId } from '../device/device';
 import { b2_maxPolygonVertices } from '../../src/common/b2Settings';
-import { RENDER_CIRCLE_SEGMENTS, SHADER_STAGE, USAGE } from '../device/layout';
+import {
+  RENDER_CIRCLE_SEGMENTS,
+  RENDER_COLOUR_MODE,
+  RENDER_DRAW_ARGS_WORDS,
+  RENDER_LIST,
+  RENDER_LIST_COUNT,
+  RENDER_SMALL_POLYGON_VERTICES,
+  SHADER_STAGE,
+  USAGE,
+} from '../device/layout';
 import { SHADERS } from '../device/shaders';
 import type { GpuWorld } from '../world/world';
+import { GpuCull } from './cull';
 
 /** Where the view is centred (metres) and how many pixels a metre covers. */
 export interface GpuCamera {
@@ -38,7 +54,7 @@ export interface GpuRendererOptions {
 
 /** What the last frame drew. */
 export interface GpuFrameStats {
-  /** Proxy slots drawn (a chain contributes one per edge), live or dead. */
+  /** Proxy slots the cull pass examined (a chain contributes one per edge), live or dead. */
   readonly proxies: number;
   /** Joint slots drawn. */
   readonly joints: number;
@@ -46,12 +62,24 @@ export interface GpuFrameStats {
   readonly recordMs: number;
 }
 
-const VIEW_WORDS = 8;
-/** Vertices per instance: the fan of the largest polygon; a circle's sides and its radius line, two each; a joint's three lines. */
-const FILL_VERTICES = 3 * (b2_maxPolygonVertices - 2);
-const OUTLINE_VERTICES = 2 * (RENDER_CIRCLE_SEGMENTS + 1);
+const VIEW_WORDS = 12;
+/** A circle's fill: a quad as two triangles. */
+const QUAD_VERTICES = 6;
+type ListName = keyof typeof RENDER_LIST;
+/**
+ * How each draw list is drawn: its vertex entry point, its topology, and its vertices per
+ * instance: the fan of the largest polygon it holds (or a circle's quad), a line list of its
+ * sides (a circle's with its radius line), one point.
+ */
+const LISTS: Readonly<Record<ListName, { entryPoint: string; topology: GPUPrimitiveTopology; vertices: number }>> = {
+  FILL_SMALL: { entryPoint: 'fill_vertex', topology: 'triangle-list', vertices: Math.max(QUAD_VERTICES, 3 * (RENDER_SMALL_POLYGON_VERTICES - 2)) },
+  FILL: { entryPoint: 'fill_vertex', topology: 'triangle-list', vertices: 3 * (b2_maxPolygonVertices - 2) },
+  OUTLINE_SMALL: { entryPoint: 'outline_vertex', topology: 'line-list', vertices: 2 * RENDER_SMALL_POLYGON_VERTICES },
+  OUTLINE: { entryPoint: 'outline_vertex', topology: 'line-list', vertices: 2 * Math.max(RENDER_CIRCLE_SEGMENTS + 1, b2_maxPolygonVertices) },
+  POINT: { entryPoint: 'point_vertex', topology: 'point-list', vertices: 1 },
+};
+/** A joint's three lines. */
 const JOINT_VERTICES = 6;
-const COLOUR_MODE = { state: 0, body: 1 } as const;
 
 function preferredFormat(): GPUTextureFormat {
   const gpu = (globalThis.navigator as { gpu?: GPU } | undefined)?.gpu;
@@ -74,9 +102,10 @@ export class GpuRenderer {
   private readonly viewI32 = new Int32Array(this.viewWords);
   private readonly viewF32 = new Float32Array(this.viewWords);
   private readonly viewU32 = new Uint32Array(this.viewWords);
-  private readonly fill: GPURenderPipeline;
-  private readonly outline: GPURenderPipeline;
+  /** The pipeline drawing each list (RENDER_LIST). */
+  private readonly lists: GPURenderPipeline[];
   private readonly jointLines: GPURenderPipeline;
+  private readonly cull: GpuCull;
   private readonly bodyLayout: GPUBindGroupLayout;
   private readonly shapeLayout: GPUBindGroupLayout;
   private readonly jointLayout: GPUBindGroupLayout;
@@ -105,9 +134,9 @@ export class GpuRenderer {
     const storage = (binding: number): GPUBindGroupLayoutEntry => ({ binding, visibility: vertex, buffer: { type: 'read-only-storage' } });
     this.bodyLayout = device.createBindGroupLayout({
       label: 'render.bodies',
-      entries: [{ binding: 0, visibility: vertex, buffer: { type: 'uniform' } }, storage(1), storage(2), storage(3), storage(4), storage(5)],
+      entries: [{ binding: 0, visibility: vertex, buffer: { type: 'uniform' } }, storage(1), storage(2), storage(3)],
     });
-    this.shapeLayout = device.createBindGroupLayout({ label: 'render.shapes', entries: [storage(0), storage(1), storage(2)] });
+    this.shapeLayout = device.createBindGroupLayout({ label: 'render.shapes', entries: [storage(0), storage(1), storage(2), storage(3)] });
     this.jointLayout = device.createBindGroupLayout({ label: 'render.joints', entries: [storage(0), storage(1)] });
     const empty = device.createBindGroupLayout({ label: 'render.none', entries: [] });
     const module = this.ctx.shaderModule('render', SHADERS.render);
@@ -115,17 +144,25 @@ export class GpuRenderer {
       color: { srcFactor: 'src-alpha', dstFactor: 'one-minus-src-alpha', operation: 'add' },
       alpha: { srcFactor: 'one', dstFactor: 'one-minus-src-alpha', operation: 'add' },
     };
-    const pipeline = (label: string, entryPoint: string, topology: GPUPrimitiveTopology, layouts: GPUBindGroupLayout[]) =>
+    const shapes = device.createPipelineLayout({ bindGroupLayouts: [this.bodyLayout, this.shapeLayout] });
+    const pipeline = (label: string, entryPoint: string, topology: GPUPrimitiveTopology, layout: GPUPipelineLayout, constants?: Record<string, number>) =>
       device.createRenderPipeline({
         label: `render.${label}`,
-        layout: device.createPipelineLayout({ bindGroupLayouts: layouts }),
-        vertex: { module, entryPoint },
+        layout,
+        vertex: { module, entryPoint, constants },
         fragment: { module, entryPoint: 'shade', targets: [{ format: this.format, blend }] },
         primitive: { topology },
       });
-    this.fill = pipeline('fill', 'fill_vertex', 'triangle-list', [this.bodyLayout, this.shapeLayout]);
-    this.outline = pipeline('outline', 'outline_vertex', 'line-list', [this.bodyLayout, this.shapeLayout]);
-    this.jointLines = pipeline('joints', 'joint_vertex', 'line-list', [this.bodyLayout, empty, this.jointLayout]);
+    this.lists = new Array<GPURenderPipeline>(RENDER_LIST_COUNT);
+    const vertices = new Array<number>(RENDER_LIST_COUNT);
+    for (const [name, list] of Object.entries(RENDER_LIST) as [ListName, number][]) {
+      const { entryPoint, topology } = LISTS[name];
+      this.lists[list] = pipeline(`list.${name}`, entryPoint, topology, shapes, { LIST: list });
+      vertices[list] = LISTS[name].vertices;
+    }
+    const joints = device.createPipelineLayout({ bindGroupLayouts: [this.bodyLayout, empty, this.jointLayout] });
+    this.jointLines = pipeline('joints', 'joint_vertex', 'line-list', joints);
+    this.cull = new GpuCull(this.ctx, vertices);
   }
 
   /**
@@ -166,6 +203,7 @@ export class GpuRenderer {
   destroy(): void {
     this.view.destroy();
     this.colourBuffer.destroy();
+    this.cull.destroy();
     this.groups.clear();
   }
 
@@ -174,34 +212,29 @@ export class GpuRenderer {
     const stepper = this.backend.stepper;
     if (stepper === null) throw new Error('GpuRenderer: the backend is not attached to a world (world.SetBackend(backend) attaches it)');
     const mirror = stepper.mirror;
+    const proxies = mirror.proxySlotCount;
+    const joints = this.drawJoints ? mirror.jointSlotCount : 0;
+    this.cull.reserve(mirror.proxyRef.capacity, mirror.bodySlotCount);
     this.writeView(mirror, width, height);
-    const useColours = this.colourBy === 'body';
-    if (useColours) this.uploadColours(mirror.bodySlotCount);
+    if (this.colourBy === 'body') this.uploadColours(mirror.bodySlotCount);
 
     const encoder = this.ctx.device.createCommandEncoder({ label: 'render' });
+    const cull = this.cull;
+    if (proxies > 0) cull.record(encoder, this.view, mirror, this.colourBuffer);
     const [r, g, b, a] = this.background;
     const pass = encoder.beginRenderPass({
       label: 'render',
       colorAttachments: [{ view: target, loadOp: 'clear', storeOp: 'store', clearValue: { r, g, b, a } }],
     });
-    const proxies = mirror.proxySlotCount;
-    const joints = this.drawJoints ? mirror.jointSlotCount : 0;
     if (proxies > 0 || joints > 0) {
-      pass.setBindGroup(0, this.group(this.bodyLayout, 'bodies', [
-        this.view,
-        mirror.bodyXf.buffer,
-        mirror.bodyCell.buffer,
-        mirror.bodyFlags.buffer,
-        mirror.bodyAwake.buffer,
-        this.colourBuffer,
-      ]));
+      pass.setBindGroup(0, this.group(this.bodyLayout, 'bodies', [this.view, mirror.bodyXf.buffer, mirror.bodyCell.buffer, cull.bodyRgba]));
     }
     if (proxies > 0) {
-      pass.setBindGroup(1, this.group(this.shapeLayout, 'shapes', [mirror.proxyRef.buffer, mirror.fixtureShape.buffer, mirror.shapePool.buffer]));
-      pass.setPipeline(this.fill);
-      pass.draw(FILL_VERTICES, proxies);
-      pass.setPipeline(this.outline);
-      pass.draw(OUTLINE_VERTICES, proxies);
+      pass.setBindGroup(1, this.group(this.shapeLayout, 'shapes', [mirror.proxyRef.buffer, mirror.fixtureShape.buffer, mirror.shapePool.buffer, cull.visible]));
+      for (let list = 0; list < RENDER_LIST_COUNT; ++list) {
+        pass.setPipeline(this.lists[list]);
+        pass.drawIndirect(cull.args, 4 * RENDER_DRAW_ARGS_WORDS * list);
+      }
     }
     if (joints > 0) {
       pass.setBindGroup(2, this.group(this.jointLayout, 'joints', [mirror.joints.buffer, mirror.jointParams.buffer]));
@@ -213,7 +246,10 @@ export class GpuRenderer {
     this.stats = { proxies, joints, recordMs: performance.now() - t0 };
   }
 
-  /** The camera as a cell and an offset in it (as the bodies are stored), and the clip scale. */
+  /**
+   * The view uniform (shaders/shared/renderView.wgsl View): the camera as a cell and an offset in
+   * it (as the bodies are stored), the clip and pixel scales, the lists' stride and the slot counts.
+   */
   private writeView(mirror: GpuWorld, width: number, height: number): void {
     const { x, y, scale } = this.camera;
     if (!(scale > 0) || !Number.isFinite(scale)) throw new RangeError(`GpuRenderer.camera.scale must be a positive number of pixels per metre, got ${scale}`);
@@ -229,7 +265,11 @@ export class GpuRenderer {
     f32[4] = (2 * scale) / width;
     f32[5] = (2 * scale) / height;
     f32[6] = cellSize;
-    u32[7] = COLOUR_MODE[this.colourBy];
+    u32[7] = this.colourBy === 'body' ? RENDER_COLOUR_MODE.BODY : RENDER_COLOUR_MODE.STATE;
+    f32[8] = scale;
+    u32[9] = this.cull.stride;
+    u32[10] = mirror.proxySlotCount;
+    u32[11] = mirror.bodySlotCount;
     this.ctx.device.queue.writeBuffer(this.view, 0, this.viewWords);
   }
 

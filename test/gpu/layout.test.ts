@@ -85,6 +85,7 @@ const STAGES = [
   'integratePositions',
   'solvePosition',
   'solveJoints',
+  'cull',
   'render',
   'pointQuery',
   'transforms',
@@ -235,6 +236,18 @@ it('uses the tile sizes the host dispatches with, and the circle outline the ren
   expect(constants(wgsl('contacts')).get('SORT_TILE')).toBe(layout.SORT_TILE);
   expect(constants(wgsl('contacts')).get('SCAN_BLOCK')).toBe(layout.SCAN_BLOCK);
   expect(constants(wgsl('render')).get('CIRCLE_SEGMENTS')).toBe(layout.RENDER_CIRCLE_SEGMENTS);
+});
+
+it("declares the renderer's draw lists, their argument records, its point size, small polygons and colour modes as the host uses them", () => {
+  const view = constants(wgsl('renderView'));
+  for (const [name, value] of Object.entries(layout.RENDER_LIST)) expect(view.get(`LIST_${name}`), name).toBe(value);
+  expect(view.get('LIST_COUNT')).toBe(layout.RENDER_LIST_COUNT);
+  expect(Object.keys(layout.RENDER_LIST)).toHaveLength(layout.RENDER_LIST_COUNT);
+  expect(view.get('DRAW_ARGS_WORDS')).toBe(layout.RENDER_DRAW_ARGS_WORDS);
+  const cull = constants(wgsl('cull'));
+  expect(cull.get('POINT_PIXELS')).toBe(layout.RENDER_POINT_PIXELS);
+  expect(cull.get('SMALL_POLYGON_VERTICES')).toBe(layout.RENDER_SMALL_POLYGON_VERTICES);
+  for (const [name, value] of Object.entries(layout.RENDER_COLOUR_MODE)) expect(cull.get(`COLOUR_${name}`), name).toBe(value);
 });
 
 it('has one WGSL file and one host module per stage, each opening with what it reads and writes', () => {
