@@ -4,7 +4,7 @@
 // (demos/large/main.ts) into large.js, and the sand, Brownian motion and touch pages
 // (demos/sand, demos/brownian, demos/touch) into sand.js, brownian.js and touch.js with esbuild,
 // and copies the
-// HTML and CSS beside them, and the accuracy study's results (accuracy.json). `node scripts/build-demos.mjs [outDir]`
+// HTML and CSS beside them, and the accuracy studies' results (accuracy.json, accuracy-h100.json). `node scripts/build-demos.mjs [outDir]`
 // (default demos/dist); `npm start` calls buildDemos() and serves the folder. The WebGPU backend's
 // WGSL is inlined as text; its Node-only imports (Dawn, node:*) are on a code path a browser never
 // takes, so they stay external.
@@ -67,8 +67,11 @@ const kEntries = {
   touch: path.join(repoRoot, 'demos', 'touch', 'main.ts'),
 };
 const kStatic = ['index.html', 'page.css', 'testbed.css', 'header.css', 'compare.html', 'compare.css', 'accuracy.html', 'accuracy.css', 'large.html', 'large.css', 'sand.html', 'brownian.html', 'touch.html'];
-/** The accuracy study's results, which the accuracy page draws (bench/accuracy/run.mjs writes them). */
-const kAccuracyResults = path.join(repoRoot, 'bench', 'results', 'accuracy', 'accuracy.json');
+/**
+ * The accuracy studies the accuracy page draws (bench/accuracy/run.mjs writes them): this
+ * machine's, and one on an H100 where the GPU's runs are timed.
+ */
+const kAccuracyResults = ['accuracy.json', 'accuracy-h100.json'];
 
 function options(outDir) {
   return {
@@ -90,7 +93,7 @@ function options(outDir) {
 
 function copyStatic(outDir) {
   for (const file of kStatic) copyFileSync(path.join(repoRoot, 'demos', file), path.join(outDir, file));
-  copyFileSync(kAccuracyResults, path.join(outDir, 'accuracy.json'));
+  for (const file of kAccuracyResults) copyFileSync(path.join(repoRoot, 'bench', 'results', 'accuracy', file), path.join(outDir, file));
 }
 
 /** Build the page into outDir. With watch, rebuild on every change (returns the esbuild context). */

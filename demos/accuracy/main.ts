@@ -1,8 +1,9 @@
 /*
- * The accuracy page (accuracy.html): the study's results (accuracy.json, copied beside the page
- * from bench/results/accuracy when the demos are built) drawn as one chart per scene and measure,
- * a tooltip naming the method under the pointer, and a replay of the chosen method's run of the
- * scene that measures it again in the page. ?scene=&measure=&method= select them.
+ * The accuracy page (accuracy.html): a study's results (accuracy.json, or accuracy-h100.json where
+ * the GPU's runs are timed; copied beside the page from bench/results/accuracy when the demos are
+ * built) drawn as one chart per scene and measure, a tooltip naming the method under the pointer,
+ * and a replay of the chosen method's run of the scene that measures it again in the page.
+ * ?study=&scene=&measure=&method= select them.
  * `window.webphysicsAccuracy` is the state tests read.
  */
 
@@ -16,6 +17,8 @@ import type { ReplayState } from './replay';
 export interface AccuracyPageState {
   ready: boolean;
   error: string | null;
+  /** The study's file. */
+  study: string;
   scene: string;
   measure: string;
   /** The chart's points in CSS pixels of the chart canvas. */
@@ -33,9 +36,10 @@ declare global {
   }
 }
 
-const state: AccuracyPageState = { ready: false, error: null, scene: '', measure: '', points: [], tip: '', replay: null, expected: null };
+const state: AccuracyPageState = { ready: false, error: null, study: '', scene: '', measure: '', points: [], tip: '', replay: null, expected: null };
 window.webphysicsAccuracy = state;
 
+const studySelect = $<HTMLSelectElement>('study');
 const sceneSelect = $<HTMLSelectElement>('scene');
 const measureSelect = $<HTMLSelectElement>('measure');
 const methodSelect = $<HTMLSelectElement>('method');
@@ -79,6 +83,7 @@ function drawChart(): void {
   state.measure = measure;
   state.points = chart.points.map((p) => ({ key: p.result.key, x: p.x, y: p.y, front: p.front }));
   const url = new URL(location.href);
+  url.searchParams.set('study', studySelect.value);
   url.searchParams.set('scene', scene.id);
   url.searchParams.set('measure', measure);
   history.replaceState(null, '', url);
@@ -117,8 +122,13 @@ function startReplay(): void {
       return;
     }
     const same = Object.entries(s.measures!).every(([k, v]) => Object.is(v, result.measures[k]));
-    // The GPU's numbers are this device's; the study's came from Dawn's SwiftShader in Node.
-    const verdict = same ? 'the same as the study, bit for bit' : gpu ? 'on this device; the study measured it on SwiftShader' : "NOT the study's numbers";
+    // The GPU's numbers are this device's; the study's came from its own adapter, through Dawn in Node.
+    const studyGpu = run!.machine.gpu as { description?: string; device?: string } | null;
+    const verdict = same
+      ? 'the same as the study, bit for bit'
+      : gpu
+        ? `on this device; the study measured it on ${studyGpu?.description || studyGpu?.device || 'another adapter'}`
+        : "NOT the study's numbers";
     replayResult.textContent = `${label}: ${Object.entries(s.measures!)
       .map(([k, v]) => `${k} ${formatNumber(v)}`)
       .join(', ')}; ${verdict}`;
@@ -130,19 +140,39 @@ function startReplay(): void {
   replay(scene.id, result.method, gpu, worldCanvas, onFrame, onError).then((stop) => (stopReplay = stop), onError);
 }
 
-async function main(): Promise<void> {
-  const response = await fetch('accuracy.json');
-  if (!response.ok) throw new Error(`accuracy.json: ${response.status} ${response.statusText} (npm run bench:accuracy writes it)`);
+/** Loads the study chosen in studySelect and shows it, keeping the scene, measure and method where it has them. */
+async function loadStudy(wanted: { scene: string | null; measure: string | null; method: string | null }): Promise<void> {
+  state.ready = false;
+  const file = studySelect.value;
+  const response = await fetch(file);
+  if (!response.ok) throw new Error(`${file}: ${response.status} ${response.statusText} (npm run bench:accuracy writes it)`);
   run = (await response.json()) as AccuracyRun;
-  const params = new URLSearchParams(location.search);
+  state.study = file;
   sceneSelect.replaceChildren(...run.scenes.map((s) => new Option(s.title, s.id)));
-  const wantedScene = params.get('scene');
-  if (wantedScene !== null && run.scenes.some((s) => s.id === wantedScene)) sceneSelect.value = wantedScene;
-  fillMeasures(currentScene(), params.get('measure'));
-  const wantedMethod = params.get('method');
-  if (wantedMethod !== null && Array.from(methodSelect.options).some((o) => o.value === wantedMethod)) methodSelect.value = wantedMethod;
+  if (wanted.scene !== null && run.scenes.some((s) => s.id === wanted.scene)) sceneSelect.value = wanted.scene;
+  fillMeasures(currentScene(), wanted.measure);
+  if (wanted.method !== null && Array.from(methodSelect.options).some((o) => o.value === wanted.method)) methodSelect.value = wanted.method;
   const gpu = run.machine.gpu as { description?: string; device?: string; software?: boolean } | null;
-  about.textContent = `The study of ${run.date.slice(0, 10)}: ${run.scenes.length} scenes, ${run.methods.length} methods; JavaScript engine timed on ${run.machine.cpus} x ${run.machine.cpuModel}, Node ${run.machine.node}${gpu ? `; WebGPU on ${gpu.description || gpu.device}${gpu.software ? ' (software: errors only, not timed)' : ''}` : ''}.`;
+  about.textContent = `The study of ${run.date.slice(0, 10)}: ${run.scenes.length} scenes, ${run.methods.length} methods; JavaScript engine timed on ${run.machine.cpus} x ${run.machine.cpuModel}, Node ${run.machine.node}${gpu ? `; WebGPU on ${gpu.description || gpu.device}${gpu.software ? ' (software: errors only, not timed)' : ' (timed)'}` : ''}.`;
+  about.className = 'note';
+  drawChart();
+  state.ready = true;
+}
+
+function failed(e: unknown): void {
+  state.error = e instanceof Error ? e.message : String(e);
+  about.textContent = `Could not load the study: ${state.error}`;
+  about.className = 'note warn';
+}
+
+async function main(): Promise<void> {
+  const params = new URLSearchParams(location.search);
+  const wantedStudy = params.get('study');
+  if (wantedStudy !== null && Array.from(studySelect.options).some((o) => o.value === wantedStudy)) studySelect.value = wantedStudy;
+  await loadStudy({ scene: params.get('scene'), measure: params.get('measure'), method: params.get('method') });
+  studySelect.addEventListener('change', () => {
+    loadStudy({ scene: sceneSelect.value, measure: measureSelect.value, method: methodSelect.value }).catch(failed);
+  });
   sceneSelect.addEventListener('change', () => {
     fillMeasures(currentScene(), measureSelect.value);
     drawChart();
@@ -155,12 +185,6 @@ async function main(): Promise<void> {
   });
   replayButton.addEventListener('click', startReplay);
   window.addEventListener('resize', drawChart);
-  drawChart();
-  state.ready = true;
 }
 
-main().catch((e: unknown) => {
-  state.error = e instanceof Error ? e.message : String(e);
-  about.textContent = `Could not load the study: ${state.error}`;
-  about.className = 'note warn';
-});
+main().catch(failed);

@@ -16,7 +16,9 @@ import type { AccuracyPageState } from '../../demos/accuracy/main';
 import { collectErrors, ensureArtifactsDir, launchChromium, repoRoot, serveTestbed } from './chromium';
 import type { LaunchedBrowser, Testbed } from './chromium';
 
-const study = JSON.parse(readFileSync(path.join(repoRoot, 'bench', 'results', 'accuracy', 'accuracy.json'), 'utf8')) as AccuracyRun;
+const readStudy = (file: string) => JSON.parse(readFileSync(path.join(repoRoot, 'bench', 'results', 'accuracy', file), 'utf8')) as AccuracyRun;
+const study = readStudy('accuracy.json');
+const h100 = readStudy('accuracy-h100.json');
 
 let testbed: Testbed;
 let chromium: LaunchedBrowser;
@@ -69,6 +71,24 @@ describe('the accuracy page (Chromium)', () => {
     expect((await pageState(page)).tip).toMatch(/^8\/3 iterations \(Box2D default\): [0-9.]+ ms per simulated second, drift /);
     expect(await page.$eval('#tip', (e) => (e as HTMLElement).hidden)).toBe(false);
     await page.screenshot({ path: path.join(artifacts, 'accuracy-pyramid-drift.png') });
+    expect(errors).toEqual([]);
+    await page.close();
+  }, 120_000);
+
+  it("switches to the H100 study, where the GPU's points are timed and drawn beside the engine's; the URL keeps the choice", async () => {
+    const { page, errors } = await open('?scene=stack&measure=drift');
+    expect((await pageState(page)).points.some((p) => p.key.startsWith('webgpu '))).toBe(false);
+    await page.select('#study', 'accuracy-h100.json');
+    await page.waitForFunction(() => window.webphysicsAccuracy.ready && window.webphysicsAccuracy.study === 'accuracy-h100.json');
+    const state = await pageState(page);
+    expect([state.scene, state.measure]).toEqual(['stack', 'drift']);
+    const scene = h100.scenes.find((s) => s.id === 'stack')!;
+    const gpuKeys = scene.results.filter((r) => r.backend === 'webgpu').map((r) => r.key);
+    expect(gpuKeys.length).toBeGreaterThan(0);
+    expect(state.points.map((p) => p.key).sort()).toEqual(scene.results.map((r) => r.key).sort());
+    expect(await page.$eval('#about', (e) => e.textContent)).toMatch(/WebGPU on NVIDIA.* \(timed\)\.$/);
+    expect(new URL(page.url()).searchParams.get('study')).toBe('accuracy-h100.json');
+    await page.screenshot({ path: path.join(artifacts, 'accuracy-stack-drift-h100.png') });
     expect(errors).toEqual([]);
     await page.close();
   }, 120_000);
