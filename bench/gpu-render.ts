@@ -49,7 +49,7 @@ interface Row {
   frameMs: number;
   stepMs: number;
   drawMs: number;
-  /** Proxy slots the renderer drew. */
+  /** Proxy slots the renderer examined (its cull pass, on the GPU, picks those drawn; none is read back). */
   drawn: number;
   error: string | null;
 }
