@@ -590,7 +590,15 @@ export class b2World {
       this.m_backend.Step(dt, velocityIterations, positionIterations);
       return;
     }
+    this.StepOnEngine(dt, velocityIterations, positionIterations);
+  }
 
+  /**
+   * Not in the C++: the body of b2World::Step, run on this engine whether or not a backend is
+   * attached (a backend that steps the world here, webphysics/gpu's AutoBackend, calls it through
+   * b2WorldBackendEngine.step). Step checks the arguments and the lock first.
+   */
+  StepOnEngine(dt: number, velocityIterations: number, positionIterations: number): void {
     const profiling = this.m_profiling;
     const stepTimer = this.m_stepTimer;
     if (profiling) stepTimer.Reset();

@@ -15,6 +15,7 @@ import { b2Contact } from './contacts/b2Contact';
 import type { b2Body } from './b2Body';
 import type { b2Fixture } from './b2Fixture';
 import type { b2World } from './b2World';
+import { b2CreatePyramidWorld } from './b2PyramidWorld';
 import { b2ContactFilter, b2ContactImpulse, b2ContactListener } from './b2WorldCallbacks';
 
 /** Engine functions a backend calls at run time (it imports the engine's types only). */
@@ -28,6 +29,13 @@ export interface b2WorldBackendEngine {
   /** b2Contact.Create: the contact for a pair of fixture children (A/B as the registry orders them). */
   createContact(fixtureA: b2Fixture, indexA: number, fixtureB: b2Fixture, indexB: number): b2Contact | null;
   createImpulse(): b2ContactImpulse;
+  /**
+   * b2World.Step on the JavaScript engine although a backend is attached (the arguments already
+   * checked by b2World.Step): for a backend that lets the engine step the world.
+   */
+  step(world: b2World, dt: number, velocityIterations: number, positionIterations: number): void;
+  /** b2CreatePyramidWorld: a standard load for a backend to measure its step against the engine's. */
+  createPyramidWorld(rows: number, copies: number): b2World;
 }
 
 export type b2OverridableCallback = 'BeginContact' | 'EndContact' | 'PreSolve' | 'PostSolve' | 'ShouldCollide';
@@ -67,4 +75,6 @@ export const b2WorldBackendEngineFunctions: b2WorldBackendEngine = {
   listenerOverrides,
   createContact: (fixtureA, indexA, fixtureB, indexB) => b2Contact.Create(fixtureA, indexA, fixtureB, indexB),
   createImpulse: () => new b2ContactImpulse(),
+  step: (world, dt, velocityIterations, positionIterations) => world.StepOnEngine(dt, velocityIterations, positionIterations),
+  createPyramidWorld: (rows, copies) => b2CreatePyramidWorld(rows, copies),
 };
