@@ -11,6 +11,9 @@
  *   await new GpuRenderer(backend, canvas.getContext('webgpu')).draw(); // or draw from the GPU's buffers, no read-back
  *   await world.SetBackend(null);       // back to the JavaScript engine, contacts and impulses kept
  *
+ * Or let the world's size decide (JavaScript below the adapter's crossover, the GPU above it):
+ *   await world.SetBackend(await AutoBackend.create());  // world.GetBackend().choice says which and why
+ *
  * Advanced (marked @internal: for tools, benchmarks and tests; their API may change): the
  * pieces WebGPUBackend is built from. GpuWorld mirrors a world; GpuBroadPhase finds its pairs
  * (alone, or on a GpuProxySet); GpuPipeline records a step's stages (GpuStage) for the broad
@@ -20,6 +23,9 @@
 // The documented path.
 export { WebGPUBackend } from './backend/backend';
 export type { WebGPUBackendOptions } from './backend/backend';
+export { AutoBackend, AUTO_UP, AUTO_DOWN } from './backend/auto';
+export type { AutoBackendOptions, AutoChoice } from './backend/auto';
+export type { AutoCalibration } from './backend/calibration';
 export { GpuRenderer } from './render/render';
 export type { GpuCamera, GpuRendererOptions, GpuFrameStats } from './render/render';
 export { GpuPointQuery } from './query/pointQuery';

@@ -33,6 +33,7 @@ import { b2ContactFlags, b2WorldFlags } from '../../src/common/b2Constants';
 import { requestGpu } from '../device/device';
 import type { GpuContext, GpuContextOptions } from '../device/device';
 import { GpuContactEvents, wantsEvents } from './events';
+import { gpuRefusal } from './refusal';
 import type { GpuContactSet } from './events';
 import type { NarrowPhaseResult } from '../narrowphase/narrowPhase';
 import { GpuStepper } from '../stepper';
@@ -190,6 +191,14 @@ export class WebGPUBackend implements b2WorldBackend {
     return this.stepperNow?.readStats ?? null;
   }
 
+  /**
+   * The error that stopped the attached world's steps (a lost device, a GPU failure), which
+   * Synchronize rejects with and Step throws; null while the steps run.
+   */
+  get failed(): unknown {
+    return this.failure;
+  }
+
   /** The slot of `body` in readTransforms' output; -1 for a body the GPU has not seen yet. */
   bodySlot(body: b2Body): number {
     return this.attached('bodySlot').stepper.mirror.bodySlot(body);
@@ -277,22 +286,8 @@ export class WebGPUBackend implements b2WorldBackend {
 
   /** Throws when the world asks for what must run inside the solver or per pair on the host. */
   private refuseUnsupported(world: b2World, engine: b2WorldBackendEngine): void {
-    const cm = world.m_contactManager;
-    if (engine.listenerOverrides(cm.m_contactListener, 'PreSolve')) {
-      throw new Error(
-        'WebGPUBackend: the contact listener has PreSolve, which must run inside the solver (between collision and the velocity ' +
-          'solve, where it may disable a contact or change its manifold); the GPU solves the whole step without calling back into ' +
-          'JavaScript. Remove PreSolve (BeginContact, EndContact and PostSolve are delivered after the step), or step this world ' +
-          'on the JavaScript engine (world.SetBackend(null)).',
-      );
-    }
-    if (engine.listenerOverrides(cm.m_contactFilter, 'ShouldCollide')) {
-      throw new Error(
-        "WebGPUBackend: the world has a custom b2ContactFilter (ShouldCollide); the GPU's broad phase applies the default rules " +
-          '(category bits, mask bits, group index) and cannot call JavaScript per pair. Express the filter with b2Filter data on ' +
-          'the fixtures, or step this world on the JavaScript engine (world.SetBackend(null)).',
-      );
-    }
+    const refusal = gpuRefusal(world, engine);
+    if (refusal !== null) throw new Error(refusal.message);
   }
 
   private attached(method: string): { world: b2World; engine: b2WorldBackendEngine; stepper: GpuStepper; events: GpuContactEvents } {
