@@ -52,6 +52,10 @@ function count(n: number): string {
   return n.toLocaleString('en-US');
 }
 
+function errorText(err: unknown): string {
+  return err instanceof Error ? err.message : String(err);
+}
+
 function checkOptions(options: unknown): asserts options is AutoBackendOptions {
   const fail = (rule: string): never => {
     throw new TypeError(`AutoBackend.create: ${rule}`);
@@ -113,7 +117,7 @@ export class AutoBackend implements b2WorldBackend {
       try {
         ctx = await requestGpu(options);
       } catch (err) {
-        ruledOut = `no WebGPU adapter (${err instanceof Error ? err.message : String(err)})`;
+        ruledOut = `no WebGPU adapter (${errorText(err)})`;
       }
     }
     if (ctx !== null && ctx.adapterInfo.software && options.calibration === undefined) {
@@ -239,7 +243,7 @@ export class AutoBackend implements b2WorldBackend {
     const lost = this.ctx?.lossInfo ?? null;
     if (lost !== null) return `the WebGPU device was lost (${lost.reason}${lost.message ? `: ${lost.message}` : ''})`;
     const failure = this.inner?.failed ?? null;
-    if (failure !== null) return `the GPU failed (${failure instanceof Error ? failure.message : String(failure)})`;
+    if (failure !== null) return `the GPU failed (${errorText(failure)})`;
     return null;
   }
 
@@ -249,7 +253,7 @@ export class AutoBackend implements b2WorldBackend {
     const world = this.world;
     if (world === null || this.engine === null) return 'not attached to a world';
     const failure = this.gpuFailure();
-    if (failure !== null) return `${failure}; the JavaScript engine takes over at the next Synchronize`;
+    if (failure !== null) return this.onGpu ? `${failure}; the JavaScript engine takes over at the next Synchronize` : failure;
     const refusal = gpuRefusal(world, this.engine);
     if (refusal !== null) return refusal.summary;
     const bodies = `${count(world.GetBodyCount())} bodies`;
@@ -269,7 +273,7 @@ export class AutoBackend implements b2WorldBackend {
       try {
         this.calibration = await calibrationFor(this.ctx!, engine);
       } catch (err) {
-        this.ruledOut = `the calibration failed on this adapter (${err instanceof Error ? err.message : String(err)})`;
+        this.ruledOut = `the calibration failed on this adapter (${errorText(err)})`;
       }
     }
     const target = this.target();
@@ -293,7 +297,7 @@ export class AutoBackend implements b2WorldBackend {
       this.inner!.Attach(world, engine);
     } catch (err) {
       // The GPU cannot hold this world (a buffer over the device's limits, a lost device).
-      this.ruledOut = `the GPU could not take the world (${err instanceof Error ? err.message : String(err)})`;
+      this.ruledOut = `the GPU could not take the world (${errorText(err)})`;
       return;
     }
     this.onGpu = true;
@@ -303,32 +307,33 @@ export class AutoBackend implements b2WorldBackend {
 
   /**
    * Hands the world back to the engine with the GPU's state. After a failure the read-back
-   * cannot come: the bodies keep the last synchronised state (fetched here where the last
-   * read-back is still mapped) and the engine finds the contacts afresh.
+   * cannot come, and a lost device takes the last one's mapping with it: each body keeps the
+   * state it last fetched (the last synchronisation's for those read since), and the engine finds
+   * the contacts afresh.
    */
   private async leaveGpu(): Promise<void> {
     const { world } = this.attached('settle');
     const inner = this.inner!;
     this.switching = true;
+    let error: unknown = null;
     try {
       if (this.gpuFailure() !== null) {
         try {
           inner.PullAll();
         } catch {
-          // The last read-back went with the device: bodies keep what they last fetched.
+          // The last read-back went with the device.
         }
       }
       await inner.Detach();
     } catch (err) {
-      const failure = this.gpuFailure() ?? `the GPU failed (${err instanceof Error ? err.message : String(err)})`;
-      this.ruledOut = `${failure}; carried on from the last synchronised state`;
+      error = err;
     } finally {
       this.onGpu = false;
       this.switching = false;
       world.m_toiCandidatesStale = true;
     }
-    const failure = this.gpuFailure();
-    if (this.ruledOut === null && failure !== null) this.ruledOut = `${failure}; carried on from the last synchronised state`;
+    const failure = this.gpuFailure() ?? (error === null ? null : `the GPU failed (${errorText(error)})`);
+    if (failure !== null) this.ruledOut = `${failure}; carried on from the state the bodies last fetched`;
   }
 
   private takeKeptSteps(): void {

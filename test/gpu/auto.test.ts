@@ -239,7 +239,7 @@ describeGpu('AutoBackend on WebGPU (SwiftShader)', (ctx) => {
     expect(listener.calls).toBeGreaterThan(0);
   });
 
-  it('a lost device while the GPU steps the world: the next Synchronize carries on with JavaScript from the last synchronised state, says why, calls onChange, loses no body', async () => {
+  it('a lost device while the GPU steps the world: the next Synchronize carries on with JavaScript from the state the bodies last fetched (here the last synchronisation), says why, calls onChange, loses no body', async () => {
     const lossCtx = await requestGpu();
     const changes: AutoChoice[] = [];
     const auto = await AutoBackend.create({ context: lossCtx, calibration: { crossoverBodies: 20, source: 'test stub' }, onChange: (c) => changes.push(c) });
@@ -247,6 +247,7 @@ describeGpu('AutoBackend on WebGPU (SwiftShader)', (ctx) => {
     await world.SetBackend(auto);
     expect(auto.choice.backend).toBe('webgpu');
     for (let i = 0; i < 10; ++i) await world.StepAsync(DT, 8, 3);
+    // Every body read after the last synchronisation: what the engine carries on from.
     const synced = positions(boxes);
 
     lossCtx.device.destroy();
@@ -254,7 +255,7 @@ describeGpu('AutoBackend on WebGPU (SwiftShader)', (ctx) => {
     world.Step(DT, 8, 3);
     await world.Synchronize();
     expect(auto.choice.backend).toBe('js');
-    expect(auto.choice.reason).toMatch(/^js: the WebGPU device was lost \(destroyed.*\); carried on from the last synchronised state$/);
+    expect(auto.choice.reason).toMatch(/^js: the WebGPU device was lost \(destroyed.*\); carried on from the state the bodies last fetched$/);
     expect(changes.map((c) => c.backend)).toEqual(['js']);
     expect(world.GetBodyCount()).toBe(60);
     // The step taken after the loss ran on the engine, from the last synchronised state.
