@@ -11,3 +11,4 @@ export function agm(a: number, b: number): number;
 export function pendulumPeriod(length: number, g: number, amplitude: number): number;
 export function bounceHeights(h0: number, restitution: number, count: number): number[];
 export function slidingDistance(v0: number, mu: number, g: number): number;
+export function projectileRange(v: number, theta: number, g: number): number;

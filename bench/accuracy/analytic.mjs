@@ -48,3 +48,8 @@ export function bounceHeights(h0, restitution, count) {
 export function slidingDistance(v0, mu, g) {
   return (v0 * v0) / (2 * mu * g);
 }
+
+/** The range (m) of a projectile launched at speed v and angle theta on level ground in gravity g, without drag: v² sin(2 theta) / g. */
+export function projectileRange(v, theta, g) {
+  return (v * v * Math.sin(2 * theta)) / g;
+}

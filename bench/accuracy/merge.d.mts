@@ -1,4 +1,4 @@
 // Types for bench/accuracy/merge.mjs.
 import type { AccuracyRun } from './run.mjs';
 
-export function mergeLimits(base: AccuracyRun, extras: AccuracyRun[]): AccuracyRun;
+export function mergeStudies(base: AccuracyRun, extras: AccuracyRun[]): AccuracyRun;

@@ -8,6 +8,8 @@ export const MEASURE_UNITS = {
   drift: 'm',
   jitter: 'm/s',
   'joint error': 'm',
+  'joint angle error': 'rad',
+  'range error': 'relative',
   'period error': 'relative',
   'rebound error': 'relative',
   'stopping error': 'relative',

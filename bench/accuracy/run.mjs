@@ -288,7 +288,7 @@ export async function runAccuracy(b2, options = {}) {
     // The GPU's runs: one each (untimed on a software adapter; deterministic either way).
     for (const m of gpuMethods) record('webgpu', m.id, await runScene(gpu.timed ? rounds : 1, `${id} webgpu ${m.id}`, () => runSceneOnce(b2, id, m, gpu)));
     // The peers, at their own settings, where the scene's measures need only positions.
-    for (const { engine, api } of peers) {
+    for (const { engine, api } of scene.worldOnly ? [] : peers) {
       const unsupported = engine.supports(scene.data());
       if (unsupported !== null) {
         log(`${id} / ${engine.id}: not run (${unsupported})`);

@@ -32,16 +32,19 @@ export interface AccuracySceneDef {
   seconds: number;
   /** Measured against the converged reference's final positions (trajectory error). */
   trajectory?: boolean;
+  /** Measured on a Box2D 2.2.1 world only: the peers do not run it. */
+  worldOnly?: boolean;
   data(): SceneData;
   probe(view: SceneView): AccuracyProbe;
 }
 
-export type AccuracySceneId = 'stack' | 'pyramid' | 'chain' | 'pendulum' | 'bounce' | 'slide' | 'elastic' | 'drop';
+export type AccuracySceneId = 'stack' | 'pyramid' | 'chain' | 'mechanisms' | 'projectile' | 'pendulum' | 'bounce' | 'slide' | 'elastic' | 'drop';
 export const ACCURACY_SCENES: Record<AccuracySceneId, AccuracySceneDef>;
 export const ACCURACY_SCENE_IDS: AccuracySceneId[];
 export function stackData(height: number): SceneData;
 export function pyramidData(base: number): SceneData;
 export function chainData(links: number, ratio?: number): SceneData;
+export function mechanismsData(): SceneData;
 export function plateData(speed: number, x0: number): SceneData;
 export function scenePositions(data: SceneData, view: Pick<SceneView, 'position'>): Float64Array;
 export function buildScene(b2: unknown, id: AccuracySceneId): { world: b2World; data: SceneData; view: SceneView; probe: AccuracyProbe };

@@ -8,7 +8,7 @@
 // simulated time, whatever the method's step), `result()` once at the end.
 
 import { createBox2D221World } from '../engines/box2d221.mjs';
-import { bounceHeights, pendulumPeriod, slidingDistance } from './analytic.mjs';
+import { bounceHeights, pendulumPeriod, projectileRange, slidingDistance } from './analytic.mjs';
 import { energyAndMomentum, jointErrors, penetration, restingDrift, rmsSpeed } from './measures.mjs';
 import { REFERENCE, applyMethod, stepFrame } from './methods.mjs';
 
@@ -108,7 +108,64 @@ function restingProbe(data, seconds) {
   };
 }
 
+/**
+ * The mechanisms scene: a bridge of 12 planks pinned at both ends, a ragdoll with joint limits
+ * dropped on the ground, two geared discs (the large one spinning), a box falling onto the limit
+ * of a vertical prismatic joint, two unequal boxes on a pulley, and a cantilever of three welded
+ * beams. Every joint kind of 2.2.1 that has a position constraint except the wheel and rope.
+ */
+export function mechanismsData() {
+  const bodies = [ground(40)];
+  const joints = [];
+  const add = (b) => bodies.push(b) - 1;
+  // Anchors on the ground body (at y = -0.5) given in world coordinates.
+  const onGround = (x, y) => [x, y + 0.5];
+  const revolute = (a, b, [ax, ay], [bx, by], extra = {}) => joints.push({ kind: 'revolute', a, b, ax, ay, bx, by, refAngle: 0, collideConnected: false, motor: null, ...extra }) - 1;
+  // The bridge, 5 m up.
+  let previous = 0;
+  for (let i = 0; i < 12; ++i) {
+    const plank = add(body('dynamic', -5.5 + i, 5, [{ kind: 'box', hx: 0.5, hy: 0.125 }]));
+    revolute(previous, plank, previous === 0 ? onGround(-6, 5) : [0.5, 0], [-0.5, 0]);
+    previous = plank;
+  }
+  revolute(previous, 0, [0.5, 0], onGround(6, 5));
+  // The ragdoll, falling from 4 m at x = -12.
+  const torso = add(body('dynamic', -12, 4, [{ kind: 'box', hx: 0.3, hy: 0.6 }]));
+  const head = add(body('dynamic', -12, 4.9, [{ kind: 'circle', r: 0.25 }]));
+  revolute(torso, head, [0, 0.6], [0, -0.3], { limit: [-0.5, 0.5] });
+  for (const side of [-1, 1]) {
+    const arm = add(body('dynamic', -12 + side * 0.8, 4.45, [{ kind: 'box', hx: 0.5, hy: 0.1 }]));
+    revolute(torso, arm, [side * 0.3, 0.45], [-side * 0.5, 0], { limit: [-1.5, 1.5] });
+    const leg = add(body('dynamic', -12 + side * 0.15, 3, [{ kind: 'box', hx: 0.12, hy: 0.5 }]));
+    revolute(torso, leg, [side * 0.15, -0.5], [0, 0.5], { limit: [-0.8, 0.8] });
+  }
+  // The gears: a disc of radius 1 spinning at 4 rad/s drives one of radius 0.5 at ratio 2.
+  const large = add(body('dynamic', 12, 3, [{ kind: 'circle', r: 1 }], { w: 4 }));
+  const small = add(body('dynamic', 13.6, 3, [{ kind: 'circle', r: 0.5 }]));
+  const pinLarge = revolute(0, large, onGround(12, 3), [0, 0]);
+  const pinSmall = revolute(0, small, onGround(13.6, 3), [0, 0]);
+  joints.push({ kind: 'gear', a: large, b: small, joint1: pinLarge, joint2: pinSmall, ratio: 2 });
+  // The elevator: a box 1 m above the lower limit of a vertical prismatic joint.
+  const car = add(body('dynamic', 12, 7, [{ kind: 'box', hx: 0.4, hy: 0.4 }]));
+  joints.push({ kind: 'prismatic', a: 0, b: car, ax: 12, ay: 7.5, bx: 0, by: 0, axis: [0, 1], refAngle: 0, collideConnected: false, limit: [-1, 0.5], motor: null });
+  // The pulley: a box of twice the other's mass on the left.
+  const heavy = add(body('dynamic', 17, 4, [{ kind: 'box', hx: 0.5, hy: 0.5, density: 2 }]));
+  const light = add(body('dynamic', 19, 5, [{ kind: 'box', hx: 0.5, hy: 0.5 }]));
+  joints.push({ kind: 'pulley', a: heavy, b: light, groundA: [17, 9], groundB: [19, 9], anchorA: [17, 4], anchorB: [19, 5], ratio: 1 });
+  // The cantilever: three 2 m beams welded end to end out of a wall at x = -18, 4 m up.
+  let base = 0;
+  let baseAnchor = onGround(-20, 4);
+  for (let i = 0; i < 3; ++i) {
+    const beam = add(body('dynamic', -19 + 2 * i, 4, [{ kind: 'box', hx: 1, hy: 0.1 }]));
+    joints.push({ kind: 'weld', a: base, b: beam, ax: baseAnchor[0], ay: baseAnchor[1], bx: -1, by: 0, refAngle: 0, collideConnected: false, motor: null });
+    base = beam;
+    baseAnchor = [1, 0];
+  }
+  return sceneData('mechanisms', 'a bridge, a ragdoll, gears, a prismatic lift, a pulley and a welded cantilever', bodies, { joints });
+}
+
 const PENDULUM = { L: 2, r: 0.1 };
+const PROJECTILE = { v: 10, r: 0.1 };
 const BOUNCE = { h0: 4, r: 0.25, e: 0.5 };
 const SLIDE = { v0: 5, mu: 0.4 };
 
@@ -137,6 +194,48 @@ export const ACCURACY_SCENES = {
           if (view.world) linear = Math.max(linear, jointErrors(view.world).linear);
         },
         result: () => (view.world ? { 'joint error': linear } : {}),
+      };
+    },
+  },
+  mechanisms: {
+    title: 'a bridge, a ragdoll, gears, a prismatic lift, a pulley and a welded cantilever',
+    seconds: 5,
+    // Its measures read the joints of a Box2D 2.2.1 world, and its joints are more than the peers' adapters build.
+    worldOnly: true,
+    data: () => mechanismsData(),
+    probe(view) {
+      let linear = 0;
+      let angular = 0;
+      return {
+        sample() {
+          const e = jointErrors(view.world);
+          linear = Math.max(linear, e.linear);
+          angular = Math.max(angular, e.angular);
+        },
+        result: () => ({ 'joint error': linear, 'joint angle error': angular }),
+      };
+    },
+  },
+  projectile: {
+    title: 'a ball thrown at 10 m/s and 45 degrees, without drag',
+    seconds: 2,
+    data() {
+      // cos and sin of 45 degrees: sqrt is correctly rounded in every JavaScript engine.
+      const { v, r } = PROJECTILE;
+      return sceneData('projectile', this.title, [body('dynamic', 0, 0, [{ kind: 'circle', r }], { vx: v / Math.sqrt(2), vy: v / Math.sqrt(2) })]);
+    },
+    probe(view) {
+      const expected = projectileRange(PROJECTILE.v, Math.PI / 4, G);
+      // Where the ball comes back down through y = 0, interpolated within the frame.
+      let range = null;
+      let prev = view.position(0);
+      return {
+        sample() {
+          const p = view.position(0);
+          if (range === null && prev[1] >= 0 && p[1] < 0) range = prev[0] + ((p[0] - prev[0]) * prev[1]) / (prev[1] - p[1]);
+          prev = p;
+        },
+        result: () => ({ 'range error': range === null ? Infinity : Math.abs(range - expected) / expected }),
       };
     },
   },

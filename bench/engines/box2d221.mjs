@@ -2,6 +2,50 @@
 // the WebPhysics adapter's world, and the accuracy study's (bench/accuracy/scenes.mjs), which also
 // reads the b2World itself (`world`). Imports nothing, so the accuracy page can bundle it.
 
+/** The definition of joint `j` of a scene, between `bodies`; `joints`, the joints made before it. */
+function jointDef(B, j, bodies, joints) {
+  const kind = j.kind ?? 'revolute';
+  if (kind === 'pulley') {
+    const jd = new B.b2PulleyJointDef();
+    const [ga, gb, aa, ab] = [j.groundA, j.groundB, j.anchorA, j.anchorB].map((p) => new B.b2Vec2(p[0], p[1]));
+    jd.Initialize(bodies[j.a], bodies[j.b], ga, gb, aa, ab, j.ratio);
+    return jd;
+  }
+  if (kind === 'gear') {
+    const jd = new B.b2GearJointDef();
+    jd.bodyA = bodies[j.a];
+    jd.bodyB = bodies[j.b];
+    jd.joint1 = joints[j.joint1];
+    jd.joint2 = joints[j.joint2];
+    jd.ratio = j.ratio;
+    return jd;
+  }
+  const jd = kind === 'prismatic' ? new B.b2PrismaticJointDef() : kind === 'weld' ? new B.b2WeldJointDef() : new B.b2RevoluteJointDef();
+  jd.bodyA = bodies[j.a];
+  jd.bodyB = bodies[j.b];
+  jd.localAnchorA.Set(j.ax, j.ay);
+  jd.localAnchorB.Set(j.bx, j.by);
+  jd.referenceAngle = j.refAngle;
+  jd.collideConnected = j.collideConnected;
+  if (kind === 'prismatic') jd.localAxisA.Set(j.axis[0], j.axis[1]);
+  if (j.limit) {
+    jd.enableLimit = true;
+    if (kind === 'prismatic') {
+      jd.lowerTranslation = j.limit[0];
+      jd.upperTranslation = j.limit[1];
+    } else {
+      jd.lowerAngle = j.limit[0];
+      jd.upperAngle = j.limit[1];
+    }
+  }
+  if (j.motor) {
+    jd.enableMotor = true;
+    jd.motorSpeed = j.motor.speed;
+    jd.maxMotorTorque = j.motor.maxTorque;
+  }
+  return jd;
+}
+
 /** The scene's world and the adapter interface (engines/*.mjs), with the b2World as `world`. */
 export function createBox2D221World(B, scene, { sleep }) {
   const world = new B.b2World(new B.b2Vec2(scene.gravity[0], scene.gravity[1]));
@@ -56,21 +100,10 @@ export function createBox2D221World(B, scene, { sleep }) {
     bodies.push(b);
   };
   for (const d of scene.bodies) add(d);
-  for (const j of scene.joints) {
-    const jd = new B.b2RevoluteJointDef();
-    jd.bodyA = bodies[j.a];
-    jd.bodyB = bodies[j.b];
-    jd.localAnchorA.Set(j.ax, j.ay);
-    jd.localAnchorB.Set(j.bx, j.by);
-    jd.referenceAngle = j.refAngle;
-    jd.collideConnected = j.collideConnected;
-    if (j.motor) {
-      jd.enableMotor = true;
-      jd.motorSpeed = j.motor.speed;
-      jd.maxMotorTorque = j.motor.maxTorque;
-    }
-    world.CreateJoint(jd);
-  }
+  // Revolute joints (the benchmark's), and for the accuracy study's mechanisms prismatic, weld,
+  // pulley and gear joints; a gear names two earlier joints of the list.
+  const joints = [];
+  for (const j of scene.joints) joints.push(world.CreateJoint(jointDef(B, j, bodies, joints)));
 
   const dt = scene.dt;
   let vi = scene.velocityIterations;

@@ -15,11 +15,12 @@ import type { b2Body } from '../../src/dynamics/b2Body';
 import { b2World } from '../../src/dynamics/b2World';
 import { b2RevoluteJointDef } from '../../src/dynamics/joints/b2RevoluteJoint';
 import { b2WeldJointDef } from '../../src/dynamics/joints/b2WeldJoint';
-import { agm, freeFall, pendulumPeriod } from '../../bench/accuracy/analytic.mjs';
+import { agm, freeFall, pendulumPeriod, projectileRange } from '../../bench/accuracy/analytic.mjs';
 import { bisectLimit } from '../../bench/accuracy/limits.mjs';
-import { mergeLimits } from '../../bench/accuracy/merge.mjs';
+import { mergeStudies } from '../../bench/accuracy/merge.mjs';
 import { loadPeers, peerLimits, runAccuracy, writeAccuracy } from '../../bench/accuracy/run.mjs';
 import { energyAndMomentum, jointErrors, penetration, restingDrift, trajectoryError } from '../../bench/accuracy/measures.mjs';
+import { buildScene } from '../../bench/accuracy/scenes.mjs';
 
 const DT = 1 / 60;
 
@@ -122,6 +123,35 @@ describe('analytic answers', () => {
     expect(after.momentum).toEqual(before.momentum);
     expect(after.angular).toBeCloseTo(before.angular, 9);
     expect(before.kinetic).toBeGreaterThan(0.5);
+  });
+
+  it("a projectile lands short by v_x dt of the exact range v² sin(2θ) / g (semi-implicit Euler's lag: 1.18 % at 60 Hz), a quarter of that with 4 sub-steps", async () => {
+    expect(projectileRange(10, Math.PI / 4, 10)).toBeCloseTo(10, 12);
+    const run = await runAccuracy(b2, { scenes: ['projectile'], methods: ['iter-8-3', 'substeps-4'], limits: false, rounds: 1 });
+    const [frame, substeps] = run.scenes[0].results.map((r) => r.measures['range error']);
+    const lag = (10 / Math.sqrt(2)) * DT;
+    expect(frame).toBeCloseTo(lag / 10, 4);
+    expect(substeps).toBeCloseTo(lag / 4 / 10, 4);
+  });
+});
+
+describe('the mechanisms scene', () => {
+  it('builds every joint kind with a position constraint but the wheel and rope, and its joint errors fall with sub-steps', async () => {
+    const { world } = buildScene(b2, 'mechanisms');
+    const kinds = new Map<number, number>();
+    for (let j = world.GetJointList(); j !== null; j = j.GetNext()) kinds.set(j.GetType(), (kinds.get(j.GetType()) ?? 0) + 1);
+    expect(Object.fromEntries(kinds)).toEqual({
+      [b2.b2JointType.e_revoluteJoint]: 20,
+      [b2.b2JointType.e_gearJoint]: 1,
+      [b2.b2JointType.e_prismaticJoint]: 1,
+      [b2.b2JointType.e_pulleyJoint]: 1,
+      [b2.b2JointType.e_weldJoint]: 3,
+    });
+    const run = await runAccuracy(b2, { scenes: ['mechanisms'], methods: ['iter-8-3', 'substeps-4'], limits: false, rounds: 1 });
+    const [frame, substeps] = run.scenes[0].results.map((r) => r.measures);
+    expect(frame['joint error']).toBeGreaterThan(0);
+    expect(substeps['joint error']).toBeLessThan(frame['joint error'] / 2);
+    expect(substeps['joint angle error']).toBeLessThan(frame['joint angle error'] / 2);
   });
 });
 
@@ -271,22 +301,29 @@ describe('runAccuracy --quick', () => {
   });
 });
 
-describe('merging limits found elsewhere', () => {
-  it("puts another run's limits in place of the same methods' and names the device a GPU limit was found on", () => {
+describe('merging parts of a study run apart', () => {
+  it("puts another run's scenes and limits in place of the same scenes' and methods', and names the device a GPU limit was found on", () => {
     const limit = (method: string, value: number) => ({ id: 'stack height', test: 'a column', unit: 'boxes', method, range: [2, 80] as [number, number], smallest: false, limit: value, tests: 7, bracket: [value, value + 1] as [number, number], outside: null });
-    const run = (gpu: object | null, limits: ReturnType<typeof limit>[]) => ({
+    const scene = (id: string, drift: number) => ({ id, title: id, seconds: 1, measures: ['drift'], results: [{ key: 'iter-8-3', method: 'iter-8-3', backend: 'js', msPerSecond: 1, measures: { drift } }], fronts: { drift: ['iter-8-3'] } });
+    const run = (gpu: object | null, limits: ReturnType<typeof limit>[], scenes: ReturnType<typeof scene>[] = []) => ({
       schema: 's',
       date: 'd',
       quick: false,
       machine: { cpus: 1, cpuModel: 'cpu', node: 'v20', gpu },
       methods: [],
       peers: [],
-      scenes: [],
+      scenes,
       limits,
     });
-    const base = run({ device: 'swiftshader', software: true }, [limit('iter-8-3', 31), limit('webgpu iter-8-3', 19)]);
+    const base = run({ device: 'swiftshader', software: true }, [limit('iter-8-3', 31), limit('webgpu iter-8-3', 19)], [scene('stack', 1), scene('chain', 2)]);
     const h100 = run({ device: 'nvidia-h100' }, [limit('webgpu iter-8-3', 20), limit('webgpu iter-4-2', 15)]);
-    const merged = mergeLimits(base, [h100]);
+    const newScenes = run(null, [], [scene('chain', 3), scene('projectile', 4)]);
+    const merged = mergeStudies(base, [h100, newScenes]);
+    expect(merged.scenes.map((s) => [s.id, s.results[0].measures.drift])).toEqual([
+      ['stack', 1],
+      ['chain', 3],
+      ['projectile', 4],
+    ]);
     expect(merged.limits.map((l) => [l.method, l.limit, l.device])).toEqual([
       ['iter-8-3', 31, undefined],
       ['webgpu iter-8-3', 20, 'nvidia-h100'],
