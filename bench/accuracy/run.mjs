@@ -2,13 +2,13 @@
 // The accuracy study: every scene of scenes.mjs stepped by every method of methods.mjs, each a
 // point (milliseconds per simulated second, error) per measure, and the stability limits of
 // limits.mjs; docs/ACCURACY.md says what each number means.
-//   node bench/accuracy/run.mjs [--scenes a,b] [--methods a,b] [--peers a,b] [--quick]
-//                               [--no-limits] [--gpu] [--out DIR] [--ours FILE]
+//   node bench/accuracy/run.mjs [--scenes a,b] [--methods a,b] [--gpu-methods a,b] [--peers a,b]
+//                               [--quick] [--no-limits] [--gpu] [--out DIR] [--ours FILE]
 // writes accuracy.json, accuracy.md and one SVG chart per scene and measure (log axes, the
 // Pareto front highlighted) into bench/results/accuracy, or --out. `--quick` runs a small subset
-// in seconds (CI's tests run it). `--gpu` adds the WebGPU backend's runs of some methods and the
-// default method's stability limits (on a software adapter such as SwiftShader their errors are
-// reported and their times are not); the peer engines of `npm run bench` run every scene at their
+// in seconds (CI's tests run it). `--gpu` adds the WebGPU backend's runs of some methods and their
+// stability limits (on a software adapter such as SwiftShader their errors are reported and their
+// times are not; merge.mjs joins parts run apart); the peer engines of `npm run bench` run every scene at their
 // own settings, measured where positions suffice (default: all of them; --quick: none; --peers ''
 // for none). For programs: runAccuracy(b2, options) resolves to the results.
 
