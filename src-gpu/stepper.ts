@@ -51,6 +51,12 @@ export interface GpuStepperOptions {
   world?: GpuWorldOptions;
   broadPhase?: GpuBroadPhaseOptions;
   narrowPhase?: GpuNarrowPhaseOptions;
+  /**
+   * Copy each read-back's body state to the host whole, instead of taking it from the map a chunk
+   * at a time as bodies are read: the state then outlives the map, which a lost device takes
+   * with it, at the price of copying 76 bytes a body at every read (AutoBackend sets it).
+   */
+  keepReadBack?: boolean;
 }
 
 /** A range of a GPU buffer read back in readState()'s map (offset and size multiples of 4). */
@@ -75,11 +81,11 @@ const BODY_READ_BYTES = 76;
 const JOINT_STATE_BYTES = 32;
 /** The per-body fields of readState()'s staging buffer, in its order. */
 const STATE_FIELDS: readonly MappedField[] = [
-  { words: 4, view: (range) => new Float32Array(range) },
-  { words: 2, view: (range) => new Int32Array(range) },
-  { words: 8, view: (range) => new Float32Array(range) },
-  { words: 4, view: (range) => new Float32Array(range) },
-  { words: 1, view: (range) => new Uint32Array(range) },
+  { words: 4, view: (buffer, byteOffset, length) => new Float32Array(buffer, byteOffset, length) },
+  { words: 2, view: (buffer, byteOffset, length) => new Int32Array(buffer, byteOffset, length) },
+  { words: 8, view: (buffer, byteOffset, length) => new Float32Array(buffer, byteOffset, length) },
+  { words: 4, view: (buffer, byteOffset, length) => new Float32Array(buffer, byteOffset, length) },
+  { words: 1, view: (buffer, byteOffset, length) => new Uint32Array(buffer, byteOffset, length) },
 ];
 const XF = 0;
 const CELL = 1;
@@ -136,11 +142,13 @@ export class GpuStepper {
   private stateFresh = false;
   private readonly transformStaging: StagingBuffer;
   private readonly transformRead: GpuTransformRead;
+  private readonly keepReadBack: boolean;
   private readonly solverStep: SolverStep = { dt: 0, dtRatio: 0, velocityIterations: 0, positionIterations: 0, warmStarting: true, gravity: { x: 0, y: 0 } };
 
   constructor(ctx: GpuContext, world: b2World, options: GpuStepperOptions = {}) {
     this.ctx = ctx;
     this.world = world;
+    this.keepReadBack = options.keepReadBack === true;
     this.mirror = new GpuWorld(ctx, world, options.world);
     this.broadPhase = new GpuBroadPhase(ctx, options.broadPhase);
     this.narrowPhase = new GpuNarrowPhase(ctx, options.narrowPhase);
@@ -231,7 +239,7 @@ export class GpuStepper {
     this.releaseState();
     this.stagingNow = next;
     this.stateFresh = true;
-    this.state.open(target.current, n);
+    this.state.open(target.current, n, this.keepReadBack);
     if (joints > 0) mirror.unpackJointStates(new Float32Array(target.range(jointsAt, JOINT_STATE_BYTES * joints)));
     at = jointsAt + JOINT_STATE_BYTES * joints;
     for (const r of extras) {

@@ -124,7 +124,7 @@ export class AutoBackend implements b2WorldBackend {
       ruledOut = `the adapter is software (${ctx.adapterInfo.description || ctx.adapterInfo.vendor || ctx.adapterInfo.source}): never picked for speed`;
     }
     // Made now, so that a switch to the GPU attaches it at once (Attach is synchronous).
-    const inner = ctx !== null && ruledOut === null ? await WebGPUBackend.create({ context: ctx }) : null;
+    const inner = ctx !== null && ruledOut === null ? await WebGPUBackend.create({ context: ctx, stepper: { keepReadBack: true } }) : null;
     return new AutoBackend(ctx, inner, ruledOut, options);
   }
 
@@ -306,10 +306,10 @@ export class AutoBackend implements b2WorldBackend {
   }
 
   /**
-   * Hands the world back to the engine with the GPU's state. After a failure the read-back
-   * cannot come, and a lost device takes the last one's mapping with it: each body keeps the
-   * state it last fetched (the last synchronisation's for those read since), and the engine finds
-   * the contacts afresh.
+   * Hands the world back to the engine with the GPU's state. After a failure the read-back cannot
+   * come: every body takes the last synchronisation's state from the host copy the inner backend
+   * keeps of each read-back (keepReadBack: a lost device takes the map with it), and the engine
+   * finds the contacts afresh.
    */
   private async leaveGpu(): Promise<void> {
     const { world } = this.attached('settle');
@@ -318,11 +318,7 @@ export class AutoBackend implements b2WorldBackend {
     let error: unknown = null;
     try {
       if (this.gpuFailure() !== null) {
-        try {
-          inner.PullAll();
-        } catch {
-          // The last read-back went with the device.
-        }
+        inner.PullAll();
       }
       await inner.Detach();
     } catch (err) {
@@ -333,7 +329,7 @@ export class AutoBackend implements b2WorldBackend {
       world.m_toiCandidatesStale = true;
     }
     const failure = this.gpuFailure() ?? (error === null ? null : `the GPU failed (${errorText(error)})`);
-    if (failure !== null) this.ruledOut = `${failure}; carried on from the state the bodies last fetched`;
+    if (failure !== null) this.ruledOut = `${failure}; carried on from the last synchronisation`;
   }
 
   private takeKeptSteps(): void {

@@ -181,10 +181,10 @@ export class ReadbackRing {
 
 type FieldArray = Float32Array | Int32Array | Uint32Array;
 
-/** One per-body field of a mapped state: its 32-bit words per body, and the view its chunks get. */
+/** One per-body field of a mapped state: its 32-bit words per body, and the view its chunks get (`length` words from `byteOffset`). */
 export interface MappedField {
   words: number;
-  view: (range: ArrayBuffer) => FieldArray;
+  view: (buffer: ArrayBuffer, byteOffset: number, length: number) => FieldArray;
 }
 
 /** Bodies per chunk of a MappedState (a power of two). */
@@ -198,11 +198,16 @@ const STATE_CHUNK_SHIFT = Math.log2(STATE_CHUNK);
  * which the application reads a few bodies maps a few chunks, not the whole state. (V8 counts every
  * mapped range it is handed as memory it holds; a million bodies' whole state, 76 MB at each
  * synchronisation, kept it marking the heap.) Field f's chunk for `slot` is chunk(f, slot); the
- * body's words start at (slot % STATE_CHUNK) * words.
+ * body's words start at (slot % STATE_CHUNK) * words. Opened to keep a host copy, the whole state
+ * is copied out of the map at once instead, and the chunks are views of the copy: they outlive
+ * the map, and a lost device, at the price of a copy of every body's state at each read.
  */
 export class MappedState {
   private buffer: GPUBuffer | null = null;
   private count = 0;
+  /** The host copy of the state when open() was asked to keep one; null when chunks come from the map. */
+  private copy: ArrayBuffer | null = null;
+  private copyStore = new ArrayBuffer(0);
   private readonly offsets: number[];
   private readonly chunks: FieldArray[][];
   /** Bytes taken from the map since open(). */
@@ -218,7 +223,7 @@ export class MappedState {
    * even number of words a body, so that every chunk starts at a multiple of 8 bytes, as
    * getMappedRange requires.
    */
-  open(buffer: GPUBuffer, count: number): void {
+  open(buffer: GPUBuffer, count: number, keepCopy = false): void {
     this.close();
     this.buffer = buffer;
     this.count = count;
@@ -227,11 +232,18 @@ export class MappedState {
       this.offsets[f] = at;
       at += 4 * this.fields[f].words * count;
     }
+    if (keepCopy && at > 0) {
+      if (this.copyStore.byteLength < at) this.copyStore = new ArrayBuffer(Math.max(at, 2 * this.copyStore.byteLength));
+      new Uint8Array(this.copyStore, 0, at).set(new Uint8Array(buffer.getMappedRange(0, at)));
+      this.copy = this.copyStore;
+      this.bytes = at;
+    }
   }
 
   /** Forgets the chunks (before the buffer is unmapped, which detaches them). */
   close(): void {
     this.buffer = null;
+    this.copy = null;
     this.count = 0;
     this.bytes = 0;
     for (const list of this.chunks) list.length = 0;
@@ -250,9 +262,14 @@ export class MappedState {
       const words = this.fields[f].words;
       const first = c * STATE_CHUNK;
       const size = 4 * words * Math.min(STATE_CHUNK, this.count - first);
-      a = this.fields[f].view(this.buffer!.getMappedRange(this.offsets[f] + 4 * words * first, size));
+      const offset = this.offsets[f] + 4 * words * first;
+      if (this.copy !== null) {
+        a = this.fields[f].view(this.copy, offset, size / 4);
+      } else {
+        a = this.fields[f].view(this.buffer!.getMappedRange(offset, size), 0, size / 4);
+        this.bytes += size;
+      }
       list[c] = a;
-      this.bytes += size;
     }
     return a;
   }
