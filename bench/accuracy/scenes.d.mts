@@ -34,6 +34,8 @@ export interface AccuracySceneDef {
   trajectory?: boolean;
   /** Measured on a Box2D 2.2.1 world only: the peers do not run it. */
   worldOnly?: boolean;
+  /** Where the accuracy page's replay looks (centre and half the height, in metres), when framing the bodies at the start would not do. */
+  view?: { x: number; y: number; half: number };
   data(): SceneData;
   probe(view: SceneView): AccuracyProbe;
 }

@@ -219,6 +219,8 @@ export const ACCURACY_SCENES = {
   projectile: {
     title: 'a ball thrown at 10 m/s and 45 degrees, without drag',
     seconds: 2,
+    // Its whole flight, which framing the bodies where they start would not show (the accuracy page's replay).
+    view: { x: 7, y: -1.5, half: 6.5 },
     data() {
       // cos and sin of 45 degrees: sqrt is correctly rounded in every JavaScript engine.
       const { v, r } = PROJECTILE;

@@ -152,7 +152,7 @@ export async function replay(
   const backend = gpu ? await WebGPUBackend.create() : null;
   if (backend !== null) await world.SetBackend(backend);
   const frames = Math.round(scene.seconds * method.frameHz);
-  const camera = frameDynamic(world);
+  const camera = scene.view ?? frameDynamic(world);
   const state: ReplayState = { scene: sceneId, method: methodId, gpu, frame: 0, frames, done: false, measures: null };
   let handle = 0;
   let stopped = false;

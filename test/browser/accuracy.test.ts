@@ -110,6 +110,17 @@ describe('the accuracy page (Chromium)', () => {
     expect(drop.replay!.measures).toEqual(dropExpected);
     expect(dropExpected['trajectory error']).toBeGreaterThan(0);
     await page.screenshot({ path: path.join(artifacts, 'accuracy-drop-replay.png') });
+    // Every joint kind of the mechanisms scene, and the projectile's whole flight in view.
+    for (const [scene, method] of [
+      ['mechanisms', 'iter-8-3'],
+      ['projectile', 'substeps-2'],
+    ]) {
+      await page.select('#scene', scene);
+      await page.select('#method', method);
+      const replay = await replayed(page);
+      expect(replay.replay!.measures, scene).toEqual(study.scenes.find((s) => s.id === scene)!.results.find((r) => r.backend === 'js' && r.method === method)!.measures);
+      await page.screenshot({ path: path.join(artifacts, `accuracy-${scene}-replay.png`) });
+    }
     expect(errors).toEqual([]);
     await page.close();
   }, 300_000);
