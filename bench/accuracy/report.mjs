@@ -14,6 +14,8 @@ export const MEASURE_UNITS = {
   'rebound error': 'relative',
   'stopping error': 'relative',
   'energy drift': 'relative',
+  'momentum drift': 'relative',
+  'angular momentum drift': 'relative',
   'trajectory error': 'm',
 };
 

@@ -40,7 +40,7 @@ export interface AccuracySceneDef {
   probe(view: SceneView): AccuracyProbe;
 }
 
-export type AccuracySceneId = 'stack' | 'pyramid' | 'chain' | 'mechanisms' | 'projectile' | 'pendulum' | 'bounce' | 'slide' | 'elastic' | 'drop';
+export type AccuracySceneId = 'stack' | 'pyramid' | 'chain' | 'mechanisms' | 'projectile' | 'pendulum' | 'bounce' | 'slide' | 'elastic' | 'collide' | 'drop';
 export const ACCURACY_SCENES: Record<AccuracySceneId, AccuracySceneDef>;
 export const ACCURACY_SCENE_IDS: AccuracySceneId[];
 export function stackData(height: number): SceneData;

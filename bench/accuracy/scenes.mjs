@@ -9,7 +9,7 @@
 
 import { createBox2D221World } from '../engines/box2d221.mjs';
 import { bounceHeights, pendulumPeriod, projectileRange, slidingDistance } from './analytic.mjs';
-import { energyAndMomentum, jointErrors, penetration, restingDrift, rmsSpeed } from './measures.mjs';
+import { dynamicBodies as dynamicBodiesOf, energyAndMomentum, jointErrors, penetration, restingDrift, rmsSpeed } from './measures.mjs';
 import { REFERENCE, applyMethod, stepFrame } from './methods.mjs';
 
 const G = 10;
@@ -343,6 +343,45 @@ export const ACCURACY_SCENES = {
       if (!view.world) return { sample() {}, result: () => ({}) };
       const start = energyAndMomentum(view.world).total;
       return { sample() {}, result: () => ({ 'energy drift': Math.abs(energyAndMomentum(view.world).total - start) / start }) };
+    },
+  },
+  collide: {
+    title: '24 elastic balls colliding in free space, without walls or gravity',
+    seconds: 4,
+    // Its measures read the world's masses and velocities (the peers' adapters give positions only).
+    worldOnly: true,
+    data() {
+      // Two triangles of frictionless, perfectly elastic balls thrown at each other, slightly off centre.
+      const balls = [];
+      for (const [side, x0, vx, dy] of [[-1, -6, 4, 0], [1, 6, -4, 0.15]]) {
+        for (let row = 0; row < 6; ++row) {
+          for (let k = 0; k <= row && balls.length < (side < 0 ? 12 : 24); ++k) {
+            balls.push(body('dynamic', x0 + side * 0.62 * row, dy + 0.64 * (k - row / 2), [{ kind: 'circle', r: 0.3, friction: 0, restitution: 1 }], { vx }));
+          }
+        }
+      }
+      return sceneData('collide', this.title, balls, { gravity: [0, 0] });
+    },
+    probe(view) {
+      const start = energyAndMomentum(view.world);
+      // Drifts relative to the sums of the bodies' own momenta, which stay of the order of the start's.
+      let scaleP = 0;
+      let scaleL = 0;
+      for (const b of dynamicBodiesOf(view.world)) {
+        scaleP += b.m_mass * Math.sqrt(b.m_linearVelocity.x * b.m_linearVelocity.x + b.m_linearVelocity.y * b.m_linearVelocity.y);
+        scaleL += Math.abs(b.m_mass * (b.m_sweep.c.x * b.m_linearVelocity.y - b.m_sweep.c.y * b.m_linearVelocity.x) + b.m_I * b.m_angularVelocity);
+      }
+      return {
+        sample() {},
+        result() {
+          const end = energyAndMomentum(view.world);
+          return {
+            'energy drift': Math.abs(end.total - start.total) / start.total,
+            'momentum drift': Math.hypot(end.momentum.x - start.momentum.x, end.momentum.y - start.momentum.y) / scaleP,
+            'angular momentum drift': Math.abs(end.angular - start.angular) / scaleL,
+          };
+        },
+      };
     },
   },
   drop: {

@@ -135,6 +135,17 @@ describe('analytic answers', () => {
   });
 });
 
+describe('the collision scene in free space', () => {
+  it('conserves linear momentum to rounding on the engine, and reports the energy and angular momentum drifts', async () => {
+    const run = await runAccuracy(b2, { scenes: ['collide'], methods: ['iter-8-3'], limits: false, rounds: 1 });
+    const m = run.scenes[0].results[0].measures;
+    expect(m['momentum drift']).toBeLessThan(1e-12);
+    expect(m['energy drift']).toBeGreaterThan(0);
+    expect(m['energy drift']).toBeLessThan(0.01);
+    expect(m['angular momentum drift']).toBeLessThan(1e-3);
+  });
+});
+
 describe('the mechanisms scene', () => {
   it('builds every joint kind with a position constraint but the wheel and rope, and its joint errors fall with sub-steps', async () => {
     const { world } = buildScene(b2, 'mechanisms');
