@@ -22,9 +22,9 @@ import { fitCanvas } from '../canvas';
 import { rng } from '../../bench/gpu-support';
 import { DT, POSITION_ITERATIONS, VELOCITY_ITERATIONS } from '../compare/config';
 import { Camera } from '../compare/view';
-import { CanvasWorldView } from '../framework/canvasView';
 import { $, fmtCount, fmtMs, showNote } from '../framework/demo';
-import { FrameLoop, GpuWorldView, openGpu } from '../framework/gpuView';
+import { FrameLoop, GpuWorldView, openGpu, openWorldView } from '../framework/gpuView';
+import type { WorldView } from '../framework/gpuView';
 
 const GPU_PARTICLES = 100_000;
 const JS_PARTICLES = 3_000;
@@ -182,8 +182,7 @@ function drawHistogram(h: Histogram): void {
 
 let gpuContext: GpuContext | null = null;
 let gas: Gas | null = null;
-let gpuView: GpuWorldView | null = null;
-let canvasView: CanvasWorldView | null = null;
+let view: WorldView | null = null;
 let steps = 0;
 let histogram: Histogram | null = null;
 let heavyStart: { x: number; y: number }[] = [];
@@ -191,7 +190,7 @@ let heavyMoved = 0;
 let fitPending = true;
 
 async function sample(current: Gas): Promise<void> {
-  if (gpuView !== null) await current.world.Synchronize();
+  if (view instanceof GpuWorldView) await current.world.Synchronize();
   histogram = current.histogram();
   heavyMoved = Math.max(...current.heavy.map((b, i) => Math.hypot(b.GetPosition().x - heavyStart[i].x, b.GetPosition().y - heavyStart[i].y)));
   drawHistogram(histogram);
@@ -212,7 +211,7 @@ const loop = new FrameLoop(
       current.world.Step(DT, VELOCITY_ITERATIONS, POSITION_ITERATIONS);
       steps++;
     };
-    const frame = gpuView !== null ? gpuView.frame(step, camera) : canvasView !== null ? canvasView.frame(step, camera) : null;
+    const frame = view !== null ? view.frame(step, camera) : null;
     if (frame === null) return null;
     return frame.then(() => (steps % SAMPLE_EVERY === 1 ? sample(current) : undefined));
   },
@@ -234,11 +233,10 @@ function particleCount(): number {
 async function restart(): Promise<void> {
   gas = null;
   await loop.idle();
-  await gpuView?.close();
-  gpuView = null;
+  await view?.close();
+  view = null;
   const next = new Gas(particleCount(), 1);
-  if (gpuContext !== null) gpuView = await GpuWorldView.create(next.world, gpuContext, canvas);
-  else canvasView = new CanvasWorldView(next.world, canvas);
+  view = await openWorldView(next.world, gpuContext, canvas);
   fitPending = true;
   heavyStart = next.heavy.map((b) => ({ x: b.GetPosition().x, y: b.GetPosition().y }));
   heavyMoved = 0;
@@ -275,7 +273,7 @@ window.brownianDemo = { ready: false, backend: null, particles: 0, steps: 0, his
 
 function publish(now: number): void {
   if (gas === null) return;
-  const backend = gpuView !== null ? 'webgpu' : 'js';
+  const backend = view instanceof GpuWorldView ? 'webgpu' : 'js';
   const workMs = loop.workTimes.median(now);
   Object.assign(window.brownianDemo, { ready: loop.frames > 0, backend, particles: gas.particles.length, steps, histogram, heavyMoved });
   window.webphysicsDemo.panes = [{ backend, adapter: backend === 'webgpu' ? adapterNote.dataset.adapter ?? null : null, bodies: gas.world.GetBodyCount(), steps, stepMs: workMs }];

@@ -9,6 +9,7 @@
 import { GEOMETRY_CIRCLE, TRANSFORM_STRIDE } from './config';
 import type { SceneGeometry, SceneView } from './config';
 import { fitCanvas } from '../canvas';
+import { b2Vec2 } from '../../src/common/b2Math';
 
 /** The view shared by both panes: a centre in metres and a scale in CSS pixels per metre. */
 export class Camera {
@@ -38,10 +39,10 @@ export class Camera {
     this.y += dy / this.scale;
   }
 
-  /** The world point under the page point (clientX, clientY) of `canvas`. */
-  toWorld(canvas: HTMLCanvasElement, clientX: number, clientY: number): { x: number; y: number } {
+  /** The world point under a pointer event's page point (clientX, clientY) in `canvas`. */
+  toWorld(canvas: HTMLCanvasElement, event: { clientX: number; clientY: number }): b2Vec2 {
     const rect = canvas.getBoundingClientRect();
-    return { x: this.x + (clientX - rect.left - rect.width / 2) / this.scale, y: this.y - (clientY - rect.top - rect.height / 2) / this.scale };
+    return new b2Vec2(this.x + (event.clientX - rect.left - rect.width / 2) / this.scale, this.y - (event.clientY - rect.top - rect.height / 2) / this.scale);
   }
 
   /** The page point of a world point in `canvas`. */

@@ -46,6 +46,9 @@ export class CanvasWorldView {
     this.draw.SetLineThickness(1 / s);
     this.world.DrawDebugData();
   }
+
+  /** Nothing to free: the world stays on the engine (a page closes whichever view it holds). */
+  async close(): Promise<void> {}
 }
 
 /** The Testbed's MouseDown: a tiny box queried, the first dynamic fixture that holds the point. */

@@ -15,6 +15,7 @@ import { GpuRenderer } from '../../src-gpu/render/render';
 import { requestGpu } from '../../src-gpu/device/device';
 import type { GpuFrameStats } from '../../src-gpu/render/render';
 import { fitCanvas } from '../canvas';
+import { CanvasWorldView } from './canvasView';
 import { detectWebGpu, StepTimes } from './demo';
 
 /** A view's centre in metres and its scale in CSS pixels per metre. */
@@ -88,6 +89,17 @@ export class GpuWorldView {
     this.renderer.destroy();
     await this.backend.destroy();
   }
+}
+
+/** A page's view of its world: drawn from the GPU's buffers, or by the engine on a 2D canvas. */
+export type WorldView = GpuWorldView | CanvasWorldView;
+
+/**
+ * `world` shown in `canvas`: attached to a WebGPU backend on `context` and drawn by GpuRenderer,
+ * or, without a context, stepped by the engine and drawn on a 2D canvas.
+ */
+export async function openWorldView(world: b2World, context: GpuContext | null, canvas: HTMLCanvasElement): Promise<WorldView> {
+  return context !== null ? GpuWorldView.create(world, context, canvas) : new CanvasWorldView(world, canvas);
 }
 
 /**

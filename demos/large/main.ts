@@ -182,17 +182,13 @@ async function rebuild(next: SceneConfig): Promise<void> {
 
 // ---- Pointer: drag a body with a mouse joint, or pan; wheel zooms ----
 
-function toWorld(event: PointerEvent): b2Vec2 {
-  const p = camera.toWorld(canvas, event.clientX, event.clientY);
-  return new b2Vec2(p.x, p.y);
-}
 
 let pan: { x: number; y: number } | null = null;
 
 canvas.addEventListener('pointerdown', (event) => {
   if (stage === null || building) return;
   canvas.setPointerCapture(event.pointerId);
-  const p = toWorld(event);
+  const p = camera.toWorld(canvas, event);
   const current = stage;
   pan = { x: event.clientX, y: event.clientY };
   void current.bodyAt(p.x, p.y).then((hit) => {
@@ -214,7 +210,7 @@ canvas.addEventListener('pointerdown', (event) => {
 });
 
 canvas.addEventListener('pointermove', (event) => {
-  if (mouse !== null) mouse.target = toWorld(event);
+  if (mouse !== null) mouse.target = camera.toWorld(canvas, event);
   else if (pan !== null) {
     camera.pan(event.clientX - pan.x, event.clientY - pan.y);
     pan = { x: event.clientX, y: event.clientY };

@@ -20,8 +20,8 @@ import type { GpuContext } from '../../src-gpu/device/device';
 import { Camera } from '../compare/view';
 import { DT, POSITION_ITERATIONS, VELOCITY_ITERATIONS } from '../compare/config';
 import { $, fmtCount, fmtMs, showNote } from '../framework/demo';
-import { CanvasWorldView } from '../framework/canvasView';
-import { FrameLoop, GpuWorldView, openGpu } from '../framework/gpuView';
+import { FrameLoop, GpuWorldView, openGpu, openWorldView } from '../framework/gpuView';
+import type { WorldView } from '../framework/gpuView';
 
 const GPU_GRAINS = 200_000;
 const JS_GRAINS = 5_000;
@@ -101,8 +101,7 @@ class Sandbox {
 
 let gpuContext: GpuContext | null = null;
 let sandbox: Sandbox | null = null;
-let gpuView: GpuWorldView | null = null;
-let canvasView: CanvasWorldView | null = null;
+let view: WorldView | null = null;
 let pouring = true;
 let steps = 0;
 let stroke: b2Vec2[] | null = null;
@@ -116,8 +115,7 @@ const loop = new FrameLoop(
       box.world.Step(DT, VELOCITY_ITERATIONS, POSITION_ITERATIONS);
       steps++;
     };
-    if (gpuView !== null) return gpuView.frame(step, camera);
-    return canvasView !== null ? canvasView.frame(step, camera) : null;
+    return view !== null ? view.frame(step, camera) : null;
   },
   (now) => publish(now),
   showMessage,
@@ -126,11 +124,10 @@ const loop = new FrameLoop(
 async function restart(): Promise<void> {
   sandbox = null;
   await loop.idle();
-  await gpuView?.close();
-  gpuView = null;
+  await view?.close();
+  view = null;
   const box = new Sandbox(gpuContext !== null ? GPU_GRAINS : JS_GRAINS, gpuContext !== null ? GPU_POUR : JS_POUR);
-  if (gpuContext !== null) gpuView = await GpuWorldView.create(box.world, gpuContext, canvas);
-  else canvasView = new CanvasWorldView(box.world, canvas);
+  view = await openWorldView(box.world, gpuContext, canvas);
   const rect = canvas.getBoundingClientRect();
   camera.fit({ x: 0, y: 20, halfWidth: 30, halfHeight: 24 }, rect.width, rect.height);
   steps = 0;
@@ -140,20 +137,16 @@ async function restart(): Promise<void> {
 
 // ---- Pointer: a stroke draws a container; the wheel zooms ----
 
-function toWorld(event: PointerEvent): b2Vec2 {
-  const p = camera.toWorld(canvas, event.clientX, event.clientY);
-  return new b2Vec2(p.x, p.y);
-}
 
 canvas.addEventListener('pointerdown', (event) => {
   canvas.setPointerCapture(event.pointerId);
-  stroke = [toWorld(event)];
+  stroke = [camera.toWorld(canvas, event)];
   event.preventDefault();
 });
 
 canvas.addEventListener('pointermove', (event) => {
   if (stroke === null) return;
-  const p = toWorld(event);
+  const p = camera.toWorld(canvas, event);
   const last = stroke[stroke.length - 1];
   if (Math.hypot(p.x - last.x, p.y - last.y) >= MIN_SEGMENT) stroke.push(p);
 });
@@ -213,7 +206,7 @@ window.sandDemo = {
 
 function publish(now: number): void {
   if (sandbox === null) return;
-  const backend = gpuView !== null ? 'webgpu' : 'js';
+  const backend = view instanceof GpuWorldView ? 'webgpu' : 'js';
   const frameMs = loop.frameTimes.median(now);
   const workMs = loop.workTimes.median(now);
   Object.assign(window.sandDemo, {

@@ -23,9 +23,10 @@ import type { GpuContext } from '../../src-gpu/device/device';
 import type { GpuPointHit } from '../../src-gpu/query/pointQuery';
 import { DT, POSITION_ITERATIONS, VELOCITY_ITERATIONS } from '../compare/config';
 import { Camera } from '../compare/view';
-import { bodyAtPoint, CanvasWorldView } from '../framework/canvasView';
+import { bodyAtPoint } from '../framework/canvasView';
 import { $, fmtCount, fmtMs, showNote } from '../framework/demo';
-import { FrameLoop, GpuWorldView, openGpu } from '../framework/gpuView';
+import { FrameLoop, GpuWorldView, openGpu, openWorldView } from '../framework/gpuView';
+import type { WorldView } from '../framework/gpuView';
 
 /** Half the box's width and its height (m). */
 const HALF_WIDTH = 10;
@@ -109,15 +110,14 @@ interface Finger {
 
 let gpuContext: GpuContext | null = null;
 let playground: Playground | null = null;
-let gpuView: GpuWorldView | null = null;
-let canvasView: CanvasWorldView | null = null;
+let view: WorldView | null = null;
 let steps = 0;
 let spawned = 0;
 let pinned = 0;
 const fingers = new Map<number, Finger>();
 
 function bodyAt(x: number, y: number): Promise<GpuPointHit | null> {
-  if (gpuView !== null) return gpuView.bodyAt(x, y);
+  if (view instanceof GpuWorldView) return view.bodyAt(x, y);
   return Promise.resolve(playground === null ? null : bodyAtPoint(playground.world, x, y));
 }
 
@@ -141,8 +141,7 @@ const loop = new FrameLoop(
       current.world.Step(DT, VELOCITY_ITERATIONS, POSITION_ITERATIONS);
       steps++;
     };
-    if (gpuView !== null) return gpuView.frame(step, camera);
-    return canvasView !== null ? canvasView.frame(step, camera) : null;
+    return view !== null ? view.frame(step, camera) : null;
   },
   (now) => publish(now),
   showMessage,
@@ -152,11 +151,10 @@ async function restart(): Promise<void> {
   playground = null;
   fingers.clear();
   await loop.idle();
-  await gpuView?.close();
-  gpuView = null;
+  await view?.close();
+  view = null;
   const next = new Playground();
-  if (gpuContext !== null) gpuView = await GpuWorldView.create(next.world, gpuContext, canvas);
-  else canvasView = new CanvasWorldView(next.world, canvas);
+  view = await openWorldView(next.world, gpuContext, canvas);
   const rect = canvas.getBoundingClientRect();
   camera.fit({ x: 0, y: HEIGHT / 2, halfWidth: HALF_WIDTH + 1.5, halfHeight: HEIGHT / 2 + 1 }, rect.width, rect.height);
   steps = 0;
@@ -168,16 +166,12 @@ async function restart(): Promise<void> {
 
 // ---- Fingers ----
 
-function toWorld(event: PointerEvent): b2Vec2 {
-  const p = camera.toWorld(canvas, event.clientX, event.clientY);
-  return new b2Vec2(p.x, p.y);
-}
 
 canvas.addEventListener('pointerdown', (event) => {
   const current = playground;
   if (current === null) return;
   canvas.setPointerCapture(event.pointerId);
-  const p = toWorld(event);
+  const p = camera.toWorld(canvas, event);
   const finger: Finger = { downAt: performance.now(), start: p, at: p.Clone(), hit: null, joint: null, held: false };
   fingers.set(event.pointerId, finger);
   event.preventDefault();
@@ -206,7 +200,7 @@ canvas.addEventListener('pointerdown', (event) => {
 
 canvas.addEventListener('pointermove', (event) => {
   const finger = fingers.get(event.pointerId);
-  if (finger !== undefined) finger.at = toWorld(event);
+  if (finger !== undefined) finger.at = camera.toWorld(canvas, event);
 });
 
 function lift(event: PointerEvent): void {
@@ -258,7 +252,7 @@ window.touchDemo = {
     if (playground === null) throw new Error('no playground yet');
     const body = playground.bodies[index];
     if (body === undefined) throw new RangeError(`index must be a body of the playground (0 to ${playground.bodies.length - 1}); got ${index}`);
-    if (gpuView !== null) await playground.world.Synchronize();
+    if (view instanceof GpuWorldView) await playground.world.Synchronize();
     const p = body.GetPosition();
     return { x: p.x, y: p.y };
   },
@@ -266,7 +260,7 @@ window.touchDemo = {
 
 function publish(now: number): void {
   if (playground === null) return;
-  const backend = gpuView !== null ? 'webgpu' : 'js';
+  const backend = view instanceof GpuWorldView ? 'webgpu' : 'js';
   const workMs = loop.workTimes.median(now);
   const bodies = playground.bodies;
   const dragging = [...fingers.values()].filter((f) => f.joint !== null && f.hit !== null).map((f) => bodies.indexOf(f.hit!.body));
