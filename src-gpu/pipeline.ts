@@ -159,7 +159,7 @@ export class GpuPipeline {
           break;
         case GpuStage.Collide:
           if (np.timeBins) {
-            for (const bin of np.bins) pass(`collide ${BIN_NAMES[bin]}`, (rec) => np.encodeCollideBin(rec, bin));
+            for (const bin of np.bins) if (np.binInUse(bin)) pass(`collide ${BIN_NAMES[bin]}`, (rec) => np.encodeCollideBin(rec, bin));
           } else {
             pass(STAGE_PASS[stage], np.encodeCollide);
           }
@@ -193,7 +193,8 @@ export class GpuPipeline {
           pass(STAGE_PASS[stage], solver!.encodeSleep);
           break;
         case GpuStage.TimeOfImpact:
-          if (mirror.world.m_continuousPhysics) pass(STAGE_PASS[stage], solver!.encodeTimeOfImpact);
+          // Without bullets or static and kinematic bodies no contact is a candidate.
+          if (mirror.world.m_continuousPhysics && (mirror.census.bullets > 0 || mirror.census.nonDynamic > 0)) pass(STAGE_PASS[stage], solver!.encodeTimeOfImpact);
           break;
       }
     }

@@ -40,7 +40,7 @@ import { GpuNarrowPhase } from './narrowphase/narrowPhase';
 import type { GpuNarrowPhaseOptions, NarrowPhaseResult } from './narrowphase/narrowPhase';
 import { GpuPipeline } from './pipeline';
 import { GpuSolver } from './solver/solver';
-import type { SolverStep } from './solver/solver';
+import type { GpuSolverOptions, SolverStep } from './solver/solver';
 import { GpuWorld } from './world/world';
 import { GpuTransformRead } from './query/transforms';
 import type { GpuWorldOptions } from './world/world';
@@ -51,6 +51,7 @@ export interface GpuStepperOptions {
   world?: GpuWorldOptions;
   broadPhase?: GpuBroadPhaseOptions;
   narrowPhase?: GpuNarrowPhaseOptions;
+  solver?: GpuSolverOptions;
   /**
    * Copy each read-back's body state to the host whole, instead of taking it from the map a chunk
    * at a time as bodies are read: the state then outlives the map, which a lost device takes
@@ -152,7 +153,7 @@ export class GpuStepper {
     this.mirror = new GpuWorld(ctx, world, options.world);
     this.broadPhase = new GpuBroadPhase(ctx, options.broadPhase);
     this.narrowPhase = new GpuNarrowPhase(ctx, options.narrowPhase);
-    this.solver = new GpuSolver(ctx);
+    this.solver = new GpuSolver(ctx, options.solver);
     this.pipeline = new GpuPipeline(ctx, this.broadPhase, this.narrowPhase, this.solver);
     this.bodyStaging = [
       new StagingBuffer(ctx, 'stepper body read-back 0', 64 * BODY_READ_BYTES),

@@ -29,6 +29,10 @@ struct SolverParams {
   warmStarting: u32,
   bodySlots: u32,
   jointSlots: u32,
+  velocityIterations: u32, // the fused passes (one workgroup for a small world) loop over these
+  positionIterations: u32,
+  pad0: u32,
+  pad1: u32,
 }
 
 // The pass over one colour: `colour`, and `serial` for the overflow set (one invocation, in order).

@@ -24,10 +24,11 @@
 //      (round COLOUR_CAP) puts what is left in the overflow set (colour COLOUR_CAP), writes
 //      colourKeys[i] = (colour, i) for the sort (radixSort.wgsl, stable: items ascending per
 //      colour, so each colour lists its joints, then its contacts) and the item's signature.
+//      `rounds` (one workgroup): every round of `mark` and `pick` with barriers, for a small world.
 //      `offsets` (one workgroup, every step: the early exit zeroes the position passes' sizes):
 //      SV_COLOUR_START (first entry of each colour in the sorted keys), the indirect size of each
 //      colour's warm-start, velocity and position passes (one invocation for the overflow set,
-//      which is solved in order).
+//      which is solved in order), SV_COLOURS_USED (the colours up to the last non-empty one).
 // Invariants: bodyMark holds two words per body (round parity); round r posts to parity r & 1
 //      and clears parity (r - 1) & 1 for the items that posted there in round r - 1, so both
 //      are zero again after the last round, and colours depend on nothing but the items' dynamic
@@ -71,6 +72,7 @@ fn begin() {
   atomicStore(&solverState[SV_JOINT_ERROR], 0u);
   atomicStore(&solverState[SV_MIN_SEPARATION], sortable_key(0.0));
   atomicStore(&solverState[SV_COLOUR_CHANGED], 0u);
+  atomicStore(&solverState[SV_COLOURS_USED], 0u);
   write_args(SV_ARGS_CONTACTS, dispatch_size(count, WORKGROUP_SIZE));
   write_args(SV_ARGS_ITEMS, dispatch_size(items, WORKGROUP_SIZE));
 }
@@ -160,20 +162,15 @@ fn compare(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: 
   }
 }
 
-@compute @workgroup_size(256)
-fn mark(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: vec3<u32>,
-        @builtin(local_invocation_index) lid: u32) {
-  let i = item_index(wid, nwg, lid);
-  if (i == NO_CONTACT) {
-    return;
-  }
-  if (round.colour == 0u) {
+// Round r of item i: post its priority to its dynamic bodies (uncoloured items; round 0 uncolours all).
+fn mark_item(i: u32, r: u32) {
+  if (r == 0u) {
     colours[i] = UNCOLOURED;
   } else if (colours[i] != UNCOLOURED) {
     return;
   }
   let bodies = item_bodies(i);
-  let parity = round.colour & 1u;
+  let parity = r & 1u;
   let p = priority(i);
   for (var n = 0u; n < 4u; n = n + 1u) {
     if ((bodies.dynamic & (1u << n)) != 0u) {
@@ -182,14 +179,8 @@ fn mark(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: vec
   }
 }
 
-@compute @workgroup_size(256)
-fn pick(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: vec3<u32>,
-        @builtin(local_invocation_index) lid: u32) {
-  let i = item_index(wid, nwg, lid);
-  if (i == NO_CONTACT) {
-    return;
-  }
-  let r = round.colour;
+// Round r of item i: clear what it posted in round r - 1, take colour r where its priority won.
+fn pick_item(i: u32, r: u32) {
   let bodies = item_bodies(i);
   if (r == COLOUR_CAP) {
     signatures[i] = signature(bodies);
@@ -228,6 +219,44 @@ fn pick(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: vec
   }
 }
 
+@compute @workgroup_size(256)
+fn mark(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: vec3<u32>,
+        @builtin(local_invocation_index) lid: u32) {
+  let i = item_index(wid, nwg, lid);
+  if (i != NO_CONTACT) {
+    mark_item(i, round.colour);
+  }
+}
+
+@compute @workgroup_size(256)
+fn pick(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: vec3<u32>,
+        @builtin(local_invocation_index) lid: u32) {
+  let i = item_index(wid, nwg, lid);
+  if (i != NO_CONTACT) {
+    pick_item(i, round.colour);
+  }
+}
+
+// Every round of a small world in one dispatch of one workgroup: a round's marks, a storage
+// barrier, its picks, a barrier; the items of `mark` and `pick` (none when the last colouring
+// stands), so the same colours.
+@compute @workgroup_size(256)
+fn rounds(@builtin(local_invocation_index) lid: u32) {
+  let count = atomicLoad(&solverState[SV_COLOUR_SORT_COUNT]);
+  for (var r = 0u; r <= COLOUR_CAP; r = r + 1u) {
+    if (r < COLOUR_CAP) {
+      for (var i = lid; i < count; i = i + WORKGROUP_SIZE) {
+        mark_item(i, r);
+      }
+    }
+    storageBarrier();
+    for (var i = lid; i < count; i = i + WORKGROUP_SIZE) {
+      pick_item(i, r);
+    }
+    storageBarrier();
+  }
+}
+
 // Entries of colourKeys[0, count) with a colour below c (lower bound in the sorted keys).
 fn colour_start(c: u32, count: u32) -> u32 {
   var lo = 0u;
@@ -258,6 +287,8 @@ fn offsets(@builtin(local_invocation_index) lid: u32) {
   var size = dispatch_size(end - start, WORKGROUP_SIZE);
   if (lid == COLOUR_CAP) {
     size = vec3<u32>(select(0u, 1u, end > start), 1u, 1u);
+  } else if (end > start) {
+    atomicMax(&solverState[SV_COLOURS_USED], lid + 1u);
   }
   write_args(SV_ARGS_COLOURS + 3u * lid, size);
   write_args(SV_ARGS_POSITION + 3u * lid, size);

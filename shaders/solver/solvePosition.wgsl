@@ -18,6 +18,8 @@
 //      remaining iterations dispatch no workgroups; resets the minimum to 0 (b2ContactSolver
 //      starts each iteration at 0) and SV_JOINT_ERROR. colour.wgsl's `offsets` restores the
 //      sizes each step.
+//      `fused` (one workgroup, for a small world): every iteration of `main` and `check` in one
+//      dispatch, the colours up to SV_COLOURS_USED, with barriers; it stops at the early exit.
 // Invariants: one writer per dynamic body per pass (the colouring); no read-back. 2.2.1 solves
 //      all of an island's contacts, then all its joints, per iteration; here each colour's
 //      contacts, then its joints (the same within a colour, whose items share no dynamic body;
@@ -129,41 +131,9 @@ fn solve_joint(j: u32) -> bool {
   return okay;
 }
 
-@compute @workgroup_size(256)
-fn main(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: vec3<u32>,
-        @builtin(local_invocation_index) lid: u32) {
-  let start = atomicLoad(&solverState[SV_COLOUR_START + colour.colour]);
-  let end = atomicLoad(&solverState[SV_COLOUR_START + colour.colour + 1u]);
-  let joints = atomicLoad(&solverState[SV_JOINTS]);
-  let t = group_index(wid, nwg) * WORKGROUP_SIZE + lid;
-  var minSeparation = 0.0;
-  var jointsOkay = true;
-  if (colour.serial != 0u) {
-    if (t != 0u) {
-      return;
-    }
-    // Joints sort first (lower items): the contacts' entries, then the joints'.
-    var firstContact = start;
-    while (firstContact < end && colourKeys[firstContact].y < joints) {
-      firstContact = firstContact + 1u;
-    }
-    for (var e = firstContact; e < end; e = e + 1u) {
-      minSeparation = min(minSeparation, solve(colourKeys[e].y - joints));
-    }
-    for (var e = start; e < firstContact; e = e + 1u) {
-      jointsOkay = solve_joint(colourKeys[e].y) && jointsOkay;
-    }
-  } else {
-    if (start + t >= end) {
-      return;
-    }
-    let item = colourKeys[start + t].y;
-    if (item < joints) {
-      jointsOkay = solve_joint(item);
-    } else {
-      minSeparation = solve(item - joints);
-    }
-  }
+// Adds an invocation's results to the iteration's: the minimum separation of its contacts and
+// whether its joints are within their slop.
+fn report(minSeparation: f32, jointsOkay: bool) {
   if (minSeparation < 0.0) {
     atomicMin(&solverState[SV_MIN_SEPARATION], sortable_key(minSeparation));
   }
@@ -172,10 +142,60 @@ fn main(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: vec
   }
 }
 
-@compute @workgroup_size(1)
-fn check() {
-  if (atomicLoad(&solverState[SV_POSITION_DONE]) != 0u) {
+// The colour's entries first, first + stride, ... below end, one invocation's share.
+fn solve_entries(first: u32, end: u32, stride: u32, joints: u32) {
+  var minSeparation = 0.0;
+  var jointsOkay = true;
+  for (var e = first; e < end; e = e + stride) {
+    let item = colourKeys[e].y;
+    if (item < joints) {
+      jointsOkay = solve_joint(item) && jointsOkay;
+    } else {
+      minSeparation = min(minSeparation, solve(item - joints));
+    }
+  }
+  report(minSeparation, jointsOkay);
+}
+
+// The overflow set in one invocation: its contacts, then its joints, as 2.2.1 orders an island's.
+fn solve_serial(start: u32, end: u32, joints: u32) {
+  var minSeparation = 0.0;
+  var jointsOkay = true;
+  // Joints sort first (lower items): the contacts' entries, then the joints'.
+  var firstContact = start;
+  while (firstContact < end && colourKeys[firstContact].y < joints) {
+    firstContact = firstContact + 1u;
+  }
+  for (var e = firstContact; e < end; e = e + 1u) {
+    minSeparation = min(minSeparation, solve(colourKeys[e].y - joints));
+  }
+  for (var e = start; e < firstContact; e = e + 1u) {
+    jointsOkay = solve_joint(colourKeys[e].y) && jointsOkay;
+  }
+  report(minSeparation, jointsOkay);
+}
+
+@compute @workgroup_size(256)
+fn main(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: vec3<u32>,
+        @builtin(local_invocation_index) lid: u32) {
+  let start = atomicLoad(&solverState[SV_COLOUR_START + colour.colour]);
+  let end = atomicLoad(&solverState[SV_COLOUR_START + colour.colour + 1u]);
+  let joints = atomicLoad(&solverState[SV_JOINTS]);
+  let t = group_index(wid, nwg) * WORKGROUP_SIZE + lid;
+  if (colour.serial != 0u) {
+    if (t == 0u) {
+      solve_serial(start, end, joints);
+    }
     return;
+  }
+  // One entry per invocation: the grid covers the colour.
+  solve_entries(start + t, min(end, start + t + 1u), 1u, joints);
+}
+
+// 2.2.1's early exit after an iteration; true when the iterations are done.
+fn check_iteration() -> bool {
+  if (atomicLoad(&solverState[SV_POSITION_DONE]) != 0u) {
+    return true;
   }
   atomicAdd(&solverState[SV_POSITION_ITERATIONS], 1u);
   let minSeparation = atomicLoad(&solverState[SV_MIN_SEPARATION]);
@@ -188,6 +208,47 @@ fn check() {
       solverIndirect[SV_ARGS_POSITION + 3u * c] = 0u;
       solverIndirect[SV_ARGS_POSITION + 3u * c + 1u] = 1u;
       solverIndirect[SV_ARGS_POSITION + 3u * c + 2u] = 1u;
+    }
+    return true;
+  }
+  return false;
+}
+
+@compute @workgroup_size(1)
+fn check() {
+  check_iteration();
+}
+
+var<workgroup> coloursUsed: u32;
+var<workgroup> done: u32;
+
+// A small world's position iterations in one dispatch of one workgroup: per iteration the colours
+// in order, a storage barrier after each (the next colour reads the positions it wrote), the
+// overflow set in one invocation, then `check`'s early exit: the items and order of the passes of
+// `main` and `check`, so the same bits and the same iteration count.
+@compute @workgroup_size(256)
+fn fused(@builtin(local_invocation_index) lid: u32) {
+  if (lid == 0u) {
+    coloursUsed = atomicLoad(&solverState[SV_COLOURS_USED]);
+  }
+  let colours = workgroupUniformLoad(&coloursUsed);
+  let joints = atomicLoad(&solverState[SV_JOINTS]);
+  for (var it = 0u; it < params.positionIterations; it = it + 1u) {
+    for (var c = 0u; c < colours; c = c + 1u) {
+      let start = atomicLoad(&solverState[SV_COLOUR_START + c]);
+      solve_entries(start + lid, atomicLoad(&solverState[SV_COLOUR_START + c + 1u]), WORKGROUP_SIZE, joints);
+      storageBarrier();
+    }
+    if (lid == 0u) {
+      solve_serial(atomicLoad(&solverState[SV_COLOUR_START + COLOUR_CAP]), atomicLoad(&solverState[SV_COLOUR_START + COLOUR_CAP + 1u]), joints);
+    }
+    storageBarrier();
+    if (lid == 0u) {
+      done = select(0u, 1u, check_iteration());
+    }
+    storageBarrier();
+    if (workgroupUniformLoad(&done) != 0u) {
+      break;
     }
   }
 }

@@ -13,6 +13,8 @@
 // Invariants: the items of a colour share no dynamic body (one writer per body per pass); the
 //      overflow set runs in one invocation, its joints, then its contacts, in item order, as
 //      b2Island::Solve orders joints before contacts; float32 in the engine's order.
+//      `fused` (one workgroup, for a small world) runs every iteration's passes in one dispatch,
+//      the colours up to SV_COLOURS_USED, with barriers between them.
 
 @group(0) @binding(0) var<uniform> colour: ColourParams;
 @group(0) @binding(1) var<storage, read> solverState: array<u32>;
@@ -197,5 +199,35 @@ fn main(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: vec
   }
   if (start + t < end) {
     solve_item(colourKeys[start + t].y, joints);
+  }
+}
+
+var<workgroup> coloursUsed: u32;
+
+// A small world's velocity iterations in one dispatch of one workgroup: per iteration the colours
+// in order, a storage barrier after each (the next colour reads the velocities it wrote), then the
+// overflow set in one invocation: the items and order of the passes of `main`, so the same bits.
+@compute @workgroup_size(256)
+fn fused(@builtin(local_invocation_index) lid: u32) {
+  if (lid == 0u) {
+    coloursUsed = solverState[SV_COLOURS_USED];
+  }
+  let colours = workgroupUniformLoad(&coloursUsed);
+  let joints = solverState[SV_JOINTS];
+  for (var it = 0u; it < params.velocityIterations; it = it + 1u) {
+    for (var c = 0u; c < colours; c = c + 1u) {
+      let end = solverState[SV_COLOUR_START + c + 1u];
+      for (var e = solverState[SV_COLOUR_START + c] + lid; e < end; e = e + WORKGROUP_SIZE) {
+        solve_item(colourKeys[e].y, joints);
+      }
+      storageBarrier();
+    }
+    if (lid == 0u) {
+      let end = solverState[SV_COLOUR_START + COLOUR_CAP + 1u];
+      for (var e = solverState[SV_COLOUR_START + COLOUR_CAP]; e < end; e = e + 1u) {
+        solve_item(colourKeys[e].y, joints);
+      }
+    }
+    storageBarrier();
   }
 }

@@ -300,8 +300,16 @@ export const SV = {
   COLOURED_ITEMS: 35,
   COLOURED_JOINTS: 36,
   COLOUR_SORT_COUNT: 37,
+  COLOURS_USED: 38,
 } as const;
 export const SV_STATE_WORDS = 40;
+
+/**
+ * Body slots up to which one workgroup runs the colouring rounds, the warm start and the velocity
+ * and position iterations of a step, each in one dispatch (the solver's fused passes): for a small
+ * world, hundreds of nearly empty per-colour dispatches cost more than the parallelism they buy.
+ */
+export const FUSED_SOLVER_BODIES = 2048;
 
 /** Colours of the graph colouring; colour COLOUR_CAP is the overflow set. */
 export const COLOUR_CAP = 24;

@@ -1,15 +1,17 @@
 /*
  * What the four collide stages share on the host (collideCircle.ts, collidePolygon.ts,
  * collideEdge.ts, overlap.ts): their bindings (shaders/shared/manifold.wgsl) and one indirect dispatch
- * per bin, sized by contacts.wgsl's bin_args (zero workgroups for an empty bin, so a scene
- * without a pair type runs nothing for it).
+ * per bin, sized by contacts.wgsl's bin_args (zero workgroups for an empty bin), recorded only
+ * for the bins the world's fixtures can fill (binInUse).
  */
 
 import type { GpuContext } from '../device/device';
 import { Kernel } from '../device/kernel';
 import type { Recorder } from '../device/kernel';
 import type { ShaderName } from '../device/shaders';
-import { NP_ARGS } from '../device/layout';
+import { b2ShapeType } from '../../src/common/b2Constants';
+import { BIN, NP_ARGS } from '../device/layout';
+import type { WorldCensus } from '../world/world';
 
 export interface CollideInputs {
   /** CollideParams (cellSize). */
@@ -24,6 +26,31 @@ export interface CollideInputs {
   bodyXf: GPUBuffer;
   bodyCell: GPUBuffer;
   manifolds: GPUBuffer;
+}
+
+/** Whether a world with these fixtures can have a pair in `bin` (BIN); false: its dispatch is left out. */
+export function binInUse(bin: number, census: WorldCensus): boolean {
+  const n = census.shapes;
+  switch (bin) {
+    case BIN.CIRCLES:
+      return n[b2ShapeType.e_circle] > 1;
+    case BIN.POLYGON_CIRCLE:
+      return n[b2ShapeType.e_polygon] > 0 && n[b2ShapeType.e_circle] > 0;
+    case BIN.POLYGONS:
+      return n[b2ShapeType.e_polygon] > 1;
+    case BIN.EDGE_CIRCLE:
+      return n[b2ShapeType.e_edge] > 0 && n[b2ShapeType.e_circle] > 0;
+    case BIN.EDGE_POLYGON:
+      return n[b2ShapeType.e_edge] > 0 && n[b2ShapeType.e_polygon] > 0;
+    case BIN.CHAIN_CIRCLE:
+      return n[b2ShapeType.e_chain] > 0 && n[b2ShapeType.e_circle] > 0;
+    case BIN.CHAIN_POLYGON:
+      return n[b2ShapeType.e_chain] > 0 && n[b2ShapeType.e_polygon] > 0;
+    case BIN.SENSOR:
+      return census.sensors > 0;
+    default:
+      return true;
+  }
 }
 
 export class CollideStage {

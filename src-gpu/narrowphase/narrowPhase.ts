@@ -31,6 +31,7 @@ import type { Recorder } from '../device/kernel';
 import type { BroadPhaseResult } from '../broadphase/broadPhase';
 import { ContactsStage } from './contacts';
 import type { ContactsInputs } from './contacts';
+import { binInUse } from './collide';
 import type { CollideInputs, CollideStage } from './collide';
 import { CollideCircleStage } from './collideCircle';
 import { CollidePolygonStage } from './collidePolygon';
@@ -53,7 +54,7 @@ import {
   NP_STATE_WORDS,
   USAGE,
 } from '../device/layout';
-import type { GpuWorld } from '../world/world';
+import type { GpuWorld, WorldCensus } from '../world/world';
 
 /** The label of the read-backs for tests and tools (readBuffer). */
 const DEBUG_READ = 'narrowphase debug read';
@@ -140,6 +141,7 @@ export class GpuNarrowPhase {
   private readonly collideIo: CollideInputs;
   private readonly setIo: PersistInputs & CompactInputs;
   private readonly solverIo: SolverInputs;
+  private census: WorldCensus | null = null;
 
   constructor(ctx: GpuContext, options: GpuNarrowPhaseOptions = {}) {
     this.ctx = ctx;
@@ -284,6 +286,7 @@ export class GpuNarrowPhase {
    * `cur` (the other set as the previous step's). After beginUpdate(), before encodeContacts().
    */
   bindStep(mirror: GpuWorld, pairs: GPUBuffer, broadState: GPUBuffer): void {
+    this.census = mirror.census;
     const curKey = this.keys[this.cur].buffer;
     const prevKey = this.keys[1 - this.cur].buffer;
     const manifolds = this.manifoldSets[this.cur].buffer;
@@ -322,9 +325,14 @@ export class GpuNarrowPhase {
     this.collideIo.binned = this.contacts.encode(rec, this.contactsIo, this.cur);
   };
 
-  /** GpuStage.Collide: every bin's kernel. */
+  /** Whether the world of the step being recorded can fill `bin` (binInUse). */
+  binInUse(bin: number): boolean {
+    return this.census === null || binInUse(bin, this.census);
+  }
+
+  /** GpuStage.Collide: the kernel of every bin the world can fill. */
   readonly encodeCollide = (rec: Recorder): void => {
-    for (const bin of this.bins) this.binStage[bin].encodeBin(rec, bin, this.collideIo);
+    for (const bin of this.bins) if (this.binInUse(bin)) this.binStage[bin].encodeBin(rec, bin, this.collideIo);
   };
 
   /** GpuStage.Collide, one bin (timeBins). */

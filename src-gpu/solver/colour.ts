@@ -16,7 +16,8 @@
  *      per-item indirect sizes.
  * Rounds: COLOUR_CAP rounds of two dispatches (post priorities with atomicMax, then pick the
  *      local maxima), whatever the contact count: no read-back decides when to stop. A round
- *      with nothing left to colour costs two empty-ish dispatches.
+ *      with nothing left to colour costs two empty-ish dispatches. A small world runs every
+ *      round in one dispatch of one workgroup (`rounds`, with barriers): the same colours.
  * Reuse: a colouring depends only on each item's dynamic bodies, so while the items and their
  *      dynamic bodies are those of the last colouring (a resting pile: same contacts in the same
  *      order), `compare` finds no change and the rounds and the sort are dispatched with zero
@@ -54,6 +55,7 @@ export class ColourStage {
   private readonly decide: Kernel;
   private readonly mark: Kernel;
   private readonly pick: Kernel;
+  private readonly rounds: Kernel;
   private readonly offsets: Kernel;
   private readonly sort: RadixSort;
   private readonly sortPasses: SortPass[] = digitPasses(Math.ceil(Math.log2(COLOUR_CAP + 1)), 0);
@@ -76,6 +78,7 @@ export class ColourStage {
     this.decide = new Kernel(ctx, 'colour', 'decide');
     this.mark = new Kernel(ctx, 'colour', 'mark');
     this.pick = new Kernel(ctx, 'colour', 'pick');
+    this.rounds = new Kernel(ctx, 'colour', 'rounds');
     this.offsets = new Kernel(ctx, 'colour', 'offsets');
     this.sort = new RadixSort(ctx);
     this.colours = new GpuArray(ctx, 'colours', 4, 64);
@@ -101,7 +104,8 @@ export class ColourStage {
     rec.dispatch(this.beginKernel, this.beginKernel.bind({ 1: io.broadState, 2: io.npState, 3: io.solverState, 4: io.solverIndirect, 9: io.params }), 1);
   }
 
-  encode(rec: Recorder, io: ColourInputs): void {
+  /** The colouring; `fused`: every round in one dispatch of one workgroup (a small world). */
+  encode(rec: Recorder, io: ColourInputs, fused: boolean): void {
     if (this.stale) {
       rec.dispatch(this.invalidate, this.invalidate.bind({ 3: io.solverState }), 1);
       this.stale = false;
@@ -110,7 +114,19 @@ export class ColourStage {
     rec.dispatchIndirect(this.compare, compare, io.solverIndirect, SV_ARGS.ITEMS * 4);
     rec.dispatch(this.decide, this.decide.bind({ 3: io.solverState, 4: io.solverIndirect }), 1);
     const args = SV_ARGS.ROUNDS * 4;
-    for (let round = 0; round <= COLOUR_CAP; ++round) {
+    if (fused) {
+      const group = this.rounds.bind({
+        3: io.solverState,
+        5: io.contactBodies,
+        6: this.colours.buffer,
+        7: this.bodyMark.buffer,
+        8: this.keys.buffer,
+        10: io.jointBodies,
+        11: this.signatures.buffer,
+      });
+      rec.dispatch(this.rounds, group, 1);
+    }
+    for (let round = 0; round <= COLOUR_CAP && !fused; ++round) {
       const u = io.rounds[round].buffer;
       if (round < COLOUR_CAP) {
         const group = this.mark.bind({ 0: u, 3: io.solverState, 5: io.contactBodies, 6: this.colours.buffer, 7: this.bodyMark.buffer, 10: io.jointBodies });

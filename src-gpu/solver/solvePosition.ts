@@ -5,6 +5,7 @@
  * in parallel (the overflow set: its contacts, then its joints, as 2.2.1 orders an island's), then
  * `check`: 2.2.1's early exit (minimum separation >= -3 b2_linearSlop and every joint within its
  * slop) zeroes the position passes' indirect sizes, so later iterations dispatch no workgroups.
+ * For a small world every iteration and the exit in one dispatch of one workgroup (encodeFused).
  * No read-back.
  *
  * In:  the colour lists (colour.ts; SV_ARGS.POSITION sizes), contactBodies, constraints,
@@ -24,10 +25,29 @@ export class SolvePositionStage {
   /** Per colour (and the overflow set): this step's bind group. */
   private readonly groups: GPUBindGroup[] = [];
   private readonly check: Kernel;
+  private readonly fused: Kernel;
 
   constructor(ctx: GpuContext) {
     this.kernel = new Kernel(ctx, 'solvePosition', 'main');
     this.check = new Kernel(ctx, 'solvePosition', 'check');
+    this.fused = new Kernel(ctx, 'solvePosition', 'fused');
+  }
+
+  /** Every iteration (SolverParams.positionIterations) and its early exit in one dispatch of one workgroup (a small world). */
+  encodeFused(rec: Recorder, io: ColourPassInputs, bodySweep: GPUBuffer): void {
+    const group = this.fused.bind({
+      1: io.solverState,
+      2: io.colourKeys,
+      3: io.contactBodies,
+      4: io.constraints,
+      5: bodySweep,
+      6: io.solverIndirect,
+      9: io.params,
+      10: io.jointBodies,
+      11: io.jointParams,
+      12: io.jointConstraints,
+    });
+    rec.dispatch(this.fused, group, 1);
   }
 
   encode(rec: Recorder, io: ColourPassInputs, bodySweep: GPUBuffer, iterations: number): void {

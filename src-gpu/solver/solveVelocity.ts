@@ -3,7 +3,8 @@
  * colour (the overflow set last, in one invocation), each solving its joints
  * (b2*Joint::SolveVelocityConstraints) and its contacts (b2ContactSolver::
  * SolveVelocityConstraints: friction, then the normal impulses, the two-point block solver
- * included) in parallel; the overflow set solves its joints, then its contacts.
+ * included) in parallel; the overflow set solves its joints, then its contacts. For a small world
+ * every iteration in one dispatch of one workgroup (encodeFused), the same bits.
  *
  * In:  the colour lists (colour.ts), contactBodies, constraints, jointBodies, jointParams,
  *      jointConstraints, bodyVel.
@@ -22,8 +23,27 @@ export class SolveVelocityStage {
   /** Per colour (and the overflow set): this step's bind group. */
   private readonly groups: GPUBindGroup[] = [];
 
+  private readonly fused: Kernel;
+
   constructor(ctx: GpuContext) {
     this.kernel = new Kernel(ctx, 'solveVelocity', 'main');
+    this.fused = new Kernel(ctx, 'solveVelocity', 'fused');
+  }
+
+  /** Every iteration (SolverParams.velocityIterations) in one dispatch of one workgroup (a small world). */
+  encodeFused(rec: Recorder, io: ColourPassInputs, bodyVel: GPUBuffer): void {
+    const group = this.fused.bind({
+      1: io.solverState,
+      2: io.colourKeys,
+      3: io.contactBodies,
+      4: io.constraints,
+      5: bodyVel,
+      9: io.params,
+      10: io.jointBodies,
+      11: io.jointParams,
+      12: io.jointConstraints,
+    });
+    rec.dispatch(this.fused, group, 1);
   }
 
   encode(rec: Recorder, io: ColourPassInputs, bodyVel: GPUBuffer, iterations: number): void {

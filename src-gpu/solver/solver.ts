@@ -31,7 +31,11 @@
  * Inputs set per step by configure(): dt, dtRatio, warm starting, gravity, iterations. Joints and
  * contacts in a colour's passes are solved in parallel: a colour's items share no dynamic body.
  * Results are the same bits on every run on one device (no float atomics; the colouring depends
- * only on the joints and contacts; the overflow set is solved in item order). 2.2.1 solves an
+ * only on the joints and contacts; the overflow set is solved in item order).
+ * A small world (FUSED_SOLVER_BODIES) runs the colouring rounds, the warm start and the velocity
+ * and position iterations each in one dispatch of one workgroup that walks the colours with
+ * barriers: the same items in the same order as the per-colour passes, so the same bits, in four
+ * dispatches instead of about 350. 2.2.1 solves an
  * island's joints, then its contacts, each velocity iteration (contacts, then joints, each
  * position iteration); the GPU analogue is per colour, so across colours the Gauss-Seidel order
  * differs from the engine's.
@@ -62,7 +66,7 @@ import { IslandsStage } from './islands';
 import { TimeOfImpactStage } from './timeOfImpact';
 import type { TimeOfImpactInputs } from './timeOfImpact';
 import type { IslandInputs } from './islands';
-import { COLOUR_CAP, CONSTRAINT_VEC4, ISLAND_WORDS, SV, SV_INDIRECT_WORDS, SV_STATE_WORDS, USAGE } from '../device/layout';
+import { COLOUR_CAP, CONSTRAINT_VEC4, FUSED_SOLVER_BODIES, ISLAND_WORDS, SV, SV_INDIRECT_WORDS, SV_STATE_WORDS, USAGE } from '../device/layout';
 import type { GpuWorld } from '../world/world';
 
 /** The label of the read-backs for tests and tools (readBuffer). */
@@ -91,6 +95,15 @@ export interface SolverInputs {
   contactCapacity: number;
 }
 
+export interface GpuSolverOptions {
+  /**
+   * One workgroup runs the colouring rounds, the warm start and the velocity and position
+   * iterations, each in one dispatch (the same bits as the per-colour passes). Default: when the
+   * world has at most FUSED_SOLVER_BODIES body slots.
+   */
+  fused?: boolean;
+}
+
 export interface SolverState {
   skipped: boolean;
   contacts: number;
@@ -116,6 +129,7 @@ export class GpuSolver {
   /** Indirect sizes (layout.ts SV_ARGS). */
   readonly indirect: GPUBuffer;
   private readonly params: Uniform;
+  private readonly fusedOption: boolean | undefined;
   /** ColourParams per colour / round: colour c, serial for the overflow set. */
   private readonly colourParams: Uniform[] = [];
   private readonly contactBodiesArray: GpuArray;
@@ -140,11 +154,12 @@ export class GpuSolver {
   private readonly islandIo: IslandInputs;
   private readonly toiIo: TimeOfImpactInputs;
 
-  constructor(ctx: GpuContext) {
+  constructor(ctx: GpuContext, options: GpuSolverOptions = {}) {
     this.ctx = ctx;
+    this.fusedOption = options.fused;
     this.state = ctx.createBuffer('solver state', 4 * SV_STATE_WORDS, USAGE.STORAGE | USAGE.COPY_SRC | USAGE.COPY_DST);
     this.indirect = ctx.createBuffer('solver indirect', 4 * SV_INDIRECT_WORDS, USAGE.STORAGE | USAGE.INDIRECT | USAGE.COPY_DST);
-    this.params = new Uniform(ctx, 'solver params', 8);
+    this.params = new Uniform(ctx, 'solver params', 12);
     for (let c = 0; c <= COLOUR_CAP; ++c) {
       const u = new Uniform(ctx, `solver colour ${c}`, 4);
       u.u32[0] = c;
@@ -234,6 +249,8 @@ export class GpuSolver {
     u.u32[5] = step.warmStarting ? 1 : 0;
     u.u32[6] = mirror.bodySlotCount;
     u.u32[7] = mirror.jointSlotCount;
+    u.u32[8] = step.velocityIterations;
+    u.u32[9] = step.positionIterations;
     u.upload();
     this.islands.configure(step.dt, mirror);
   }
@@ -300,15 +317,25 @@ export class GpuSolver {
     this.joints.encodePrepare(rec, this.params.buffer, this.mirror!);
   };
 
+  /** Whether the step being recorded runs the fused passes (GpuSolverOptions.fused). */
+  get fused(): boolean {
+    return this.fusedOption ?? this.mirror!.bodySlotCount <= FUSED_SOLVER_BODIES;
+  }
+
   /** GpuStage.Colour. */
-  readonly encodeColour = (rec: Recorder): void => this.colouring.encode(rec, this.colourIo);
+  readonly encodeColour = (rec: Recorder): void => this.colouring.encode(rec, this.colourIo, this.fused);
 
   /** GpuStage.Velocity: warm start, velocity iterations, impulses stored, positions integrated. */
   readonly encodeVelocity = (rec: Recorder): void => {
     const mirror = this.mirror!;
     // Joints need the pass without warm starting too: the mouse joint damps its body there.
-    if (this.step.warmStarting || mirror.jointSlotCount > 0) this.warmStart.encode(rec, this.passIo, mirror.bodyVel.buffer);
-    this.solveVelocity.encode(rec, this.passIo, mirror.bodyVel.buffer, this.step.velocityIterations);
+    const fused = this.fused;
+    if (this.step.warmStarting || mirror.jointSlotCount > 0) {
+      if (fused) this.warmStart.encodeFused(rec, this.passIo, mirror.bodyVel.buffer);
+      else this.warmStart.encode(rec, this.passIo, mirror.bodyVel.buffer);
+    }
+    if (fused) this.solveVelocity.encodeFused(rec, this.passIo, mirror.bodyVel.buffer);
+    else this.solveVelocity.encode(rec, this.passIo, mirror.bodyVel.buffer, this.step.velocityIterations);
     this.storeImpulses.encode(rec, this.state, this.indirect, this.contactBodiesArray.buffer, this.constraintArray.buffer, this.prepareIo.manifolds);
     this.joints.encodeStore(rec, this.params.buffer, this.state, mirror);
     this.integratePositions.encodeIntegrate(rec, this.params.buffer, this.state, mirror);
@@ -317,7 +344,8 @@ export class GpuSolver {
   /** GpuStage.Position: position iterations, then the transforms from the sweeps. */
   readonly encodePosition = (rec: Recorder): void => {
     const mirror = this.mirror!;
-    this.solvePosition.encode(rec, this.passIo, mirror.bodySweep.buffer, this.step.positionIterations);
+    if (this.fused) this.solvePosition.encodeFused(rec, this.passIo, mirror.bodySweep.buffer);
+    else this.solvePosition.encode(rec, this.passIo, mirror.bodySweep.buffer, this.step.positionIterations);
     this.integratePositions.encodeSynchronize(rec, this.params.buffer, this.state, mirror);
   };
 

@@ -1,7 +1,8 @@
 /*
  * Warm start (in GpuStage.Velocity) (shaders/solver/warmStart.wgsl): b2ContactSolver::WarmStart and the joints'
  * warm start (b2*Joint::InitVelocityConstraints), one pass per colour over its joints and
- * contacts (the overflow set last, in one invocation).
+ * contacts (the overflow set last, in one invocation); for a small world every colour in one
+ * dispatch of one workgroup (encodeFused).
  *
  * In:  the colour lists (colour.ts: colourKeys, SV.COLOUR_START, SV_ARGS.COLOURS), contactBodies,
  *      constraints (impulses already scaled by dtRatio), jointBodies, jointConstraints
@@ -33,9 +34,17 @@ export interface ColourPassInputs {
 
 export class WarmStartStage {
   private readonly kernel: Kernel;
+  private readonly fused: Kernel;
 
   constructor(ctx: GpuContext) {
     this.kernel = new Kernel(ctx, 'warmStart', 'main');
+    this.fused = new Kernel(ctx, 'warmStart', 'fused');
+  }
+
+  /** Every colour in one dispatch of one workgroup (a small world). */
+  encodeFused(rec: Recorder, io: ColourPassInputs, bodyVel: GPUBuffer): void {
+    const group = this.fused.bind({ 1: io.solverState, 2: io.colourKeys, 3: io.contactBodies, 4: io.constraints, 5: bodyVel, 10: io.jointBodies, 12: io.jointConstraints });
+    rec.dispatch(this.fused, group, 1);
   }
 
   encode(rec: Recorder, io: ColourPassInputs, bodyVel: GPUBuffer): void {

@@ -55,7 +55,7 @@ import type { b2CircleShape } from '../../src/collision/shapes/b2CircleShape';
 import type { b2EdgeShape } from '../../src/collision/shapes/b2EdgeShape';
 import type { b2PolygonShape } from '../../src/collision/shapes/b2PolygonShape';
 import type { b2ChainShape } from '../../src/collision/shapes/b2ChainShape';
-import { b2BodyFlags, b2ShapeType } from '../../src/common/b2Constants';
+import { b2BodyFlags, b2BodyType, b2ShapeType } from '../../src/common/b2Constants';
 import type { GpuContext } from '../device/device';
 import { MirrorTable } from '../device/buffers';
 import type { UploadStats } from '../device/buffers';
@@ -123,6 +123,21 @@ function isCustomContactFilter(filter: object | null): boolean {
  * @internal Advanced: exported for tools, benchmarks and tests; applications use WebGPUBackend
  * through b2World.SetBackend (docs/GPU.md, "The world API on the GPU").
  */
+/**
+ * What the world holds, for the step to leave out stages it cannot need: fixtures by
+ * b2Shape::Type and sensors (the collide kernel of each pair type), bullets and static or
+ * kinematic bodies with fixtures (the time of impact). Counted by every full walk of sync();
+ * between walks a changed fixture or body can only add to it, so it never undercounts.
+ */
+export interface WorldCensus {
+  /** Fixtures per b2Shape::Type (circle, edge, polygon, chain). */
+  readonly shapes: Int32Array;
+  sensors: number;
+  bullets: number;
+  /** Static and kinematic bodies with fixtures. */
+  nonDynamic: number;
+}
+
 export class GpuWorld {
   readonly ctx: GpuContext;
   readonly world: b2World;
@@ -209,6 +224,7 @@ export class GpuWorld {
   private generation = 0;
   private jointCount: Int32Array = new Int32Array(64);
   private readonly allTables: MirrorTable[];
+  readonly census: WorldCensus = { shapes: new Int32Array(4), sensors: 0, bullets: 0, nonDynamic: 0 };
 
   constructor(ctx: GpuContext, world: b2World, options: GpuWorldOptions = {}) {
     this.ctx = ctx;
@@ -450,7 +466,22 @@ export class GpuWorld {
   private readonly packChangedBody = (_motion: boolean, b: b2Body): void => {
     const slot = this.bodySlot(b);
     if (slot >= 0) this.packBody(slot, b, false);
+    this.countBody(b);
   };
+
+  private countBody(b: b2Body): void {
+    const census = this.census;
+    if (b.m_type !== b2BodyType.b2_dynamicBody) {
+      if (b.m_fixtureList) census.nonDynamic++;
+    } else if ((b.m_flags & b2BodyFlags.e_bulletFlag) !== 0) {
+      census.bullets++;
+    }
+  }
+
+  private countFixture(f: b2Fixture): void {
+    this.census.shapes[f.m_shape.m_type]++;
+    if (f.m_isSensor) this.census.sensors++;
+  }
 
   /** A body whose motion the API set: its motion records are uploaded over the GPU's. */
   private readonly packSetMotion = (motion: boolean, b: b2Body): void => {
@@ -463,6 +494,7 @@ export class GpuWorld {
     const slot = this.fixtureSlot(f);
     const bodySlot = this.bodySlot(f.m_body);
     if (slot < 0 || bodySlot < 0) return;
+    this.countFixture(f);
     this.packFixture(slot, f, bodySlot, false);
     this.packProxies(f, slot, bodySlot, f.m_body.m_type, this.jointCount[bodySlot] > 0, gen, stats);
   }
@@ -509,11 +541,16 @@ export class GpuWorld {
     if (this.pool.fragmented) this.compactPool();
     let index = 0;
     let fixtureWalked = 0;
+    const census = this.census;
+    census.shapes.fill(0);
+    census.sensors = census.bullets = census.nonDynamic = 0;
     this.fixtureSlots.beginWalk();
     for (let b = world.m_bodyList; b; b = b.m_next) {
       const bodySlot = this.walkSlots[index++];
       const jointed = this.jointCount[bodySlot] > 0;
+      this.countBody(b);
       for (let f = b.m_fixtureList; f; f = f.m_next) {
+        this.countFixture(f);
         const hint = fixtureWalked < this.fixtureWalkCount ? this.fixtureWalk[fixtureWalked] : -1;
         const slot = this.fixtureSlots.acquire(f, gen, hint);
         this.fixtureWalk = withRoom(this.fixtureWalk, fixtureWalked);

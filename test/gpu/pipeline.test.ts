@@ -1,10 +1,17 @@
 /*
  * GpuPipeline records a step as GpuStage lists it: the broad phase's passes, then the narrow
  * phase's, then the solver's, each once and in that order (read from the step's timestamps, which
- * name every pass), and only the stages a step needs.
+ * name every pass), and only the stages a step needs: no collide kernel for a pair type the
+ * world's fixtures cannot form, no time of impact without bullets or static and kinematic bodies.
  */
 
 import { expect, it } from 'vitest';
+import { b2CircleShape } from '../../src/collision/shapes/b2CircleShape';
+import { b2PolygonShape } from '../../src/collision/shapes/b2PolygonShape';
+import { b2Vec2 } from '../../src/common/b2Math';
+import { b2BodyDef, b2_dynamicBody } from '../../src/dynamics/b2Body';
+import type { b2Fixture } from '../../src/dynamics/b2Fixture';
+import { b2World } from '../../src/dynamics/b2World';
 import { GpuStage, STAGE_PASS } from '../../src-gpu/pipeline';
 import { GpuStepper } from '../../src-gpu/stepper';
 import { loadGoldenScene } from '../support/scene';
@@ -40,6 +47,50 @@ describeGpu('GPU pipeline', (ctx) => {
       expect(named(discrete.gpuTime)).toEqual(passes(GpuStage.BroadPhase, GpuStage.Sleep));
       expect(discrete.dispatches).toBeLessThan(full.dispatches);
       expect(collision.dispatches).toBeLessThan(discrete.dispatches);
+    } finally {
+      stepper.destroy();
+    }
+  });
+
+  it('records a collide kernel only for the pair types the fixtures can form, and time of impact only with bullets or static and kinematic bodies', async () => {
+    const world = new b2World(new b2Vec2(0, 0));
+    world.SetContinuousPhysics(true);
+    const add = (x: number, shape: b2CircleShape | b2PolygonShape, dynamic = true): b2Fixture => {
+      const def = new b2BodyDef();
+      if (dynamic) def.type = b2_dynamicBody;
+      def.position.Set(x, 0);
+      return world.CreateBody(def).CreateFixture(shape, 1);
+    };
+    const box = new b2PolygonShape();
+    box.SetAsBox(0.5, 0.5);
+    const circle = new b2CircleShape();
+    circle.m_radius = 0.5;
+    for (let i = 0; i < 4; ++i) add(2 * i, box);
+    const stepper = new GpuStepper(ctx, world);
+    try {
+      // The second step after a change: the first may colour again after buffers grew (one dispatch more).
+      const dispatches = async () => {
+        await stepper.step(1 / 60, 8, 3);
+        return (await stepper.step(1 / 60, 8, 3)).dispatches;
+      };
+      // Boxes in free space: the polygons' kernel, no time of impact.
+      const boxes = await dispatches();
+      add(10, circle);
+      const oneCircle = await dispatches();
+      expect(oneCircle - boxes, 'polygon-circle').toBe(1);
+      const second = add(12, circle);
+      const twoCircles = await dispatches();
+      expect(twoCircles - oneCircle, 'circles').toBe(1);
+      // A sensor set on a fixture the world already has (no structural change): the sensor kernel.
+      second.SetSensor(true);
+      const sensor = await dispatches();
+      expect(sensor - twoCircles, 'sensor').toBe(1);
+      // A static body: every dynamic body's contacts with it are time-of-impact candidates.
+      add(-20, box, false);
+      const ground = await dispatches();
+      expect(ground - sensor, 'polygons against static: time of impact').toBe(3);
+      world.SetContinuousPhysics(false);
+      expect(ground - (await dispatches()), 'continuous physics off').toBe(3);
     } finally {
       stepper.destroy();
     }

@@ -294,16 +294,21 @@ function referenceColours(c: Colouring): number[] {
   return colours.map((colour) => (colour < 0 ? COLOUR_CAP : colour));
 }
 
-async function colouringAfter(ctx: Parameters<Parameters<typeof describeGpu>[1]>[0], build: () => b2World, steps: number) {
+async function colouringAfter(ctx: Parameters<Parameters<typeof describeGpu>[1]>[0], build: () => b2World, steps: number, fused?: boolean) {
   const world = build();
-  const stepper = new GpuStepper(ctx, world);
-  for (let i = 0; i < steps; ++i) await stepper.step(DT, 8, 3);
+  const stepper = new GpuStepper(ctx, world, { solver: { fused } });
+  let dispatches = 0;
+  const positionIterations: number[] = [];
+  for (let i = 0; i < steps; ++i) {
+    dispatches = (await stepper.step(DT, 8, 3)).dispatches;
+    positionIterations.push((await stepper.solver.readState()).positionIterations);
+  }
   const c = await stepper.solver.readColouring();
   await stepper.readBodies();
   const state: number[] = [];
   for (let b = world.m_bodyList; b; b = b.m_next) state.push(b.m_xf.p.x, b.m_xf.p.y, b.m_sweep.a, b.m_linearVelocity.x, b.m_linearVelocity.y, b.m_angularVelocity);
   stepper.destroy();
-  return { colouring: { joints: c.joints, colours: c.colours, bodies: c.bodies, jointBodies: c.jointBodies, keys: c.keys, colourStart: c.state.colourStart }, state, world };
+  return { colouring: { joints: c.joints, colours: c.colours, bodies: c.bodies, jointBodies: c.jointBodies, keys: c.keys, colourStart: c.state.colourStart }, state, world, dispatches, positionIterations };
 }
 
 describeGpu('GPU solver: graph colouring', (ctx) => {
@@ -429,5 +434,29 @@ describeGpu('GPU solver: graph colouring', (ctx) => {
     expect(Array.from(second.colouring.colours)).toEqual(Array.from(first.colouring.colours));
     expect(Array.from(second.colouring.keys)).toEqual(Array.from(first.colouring.keys));
     expect(second.state).toEqual(first.state);
+  }, 600_000);
+
+  it('solves a small world in one dispatch per solver pass (fused) to the bits of the per-colour passes: contacts, joints, the overflow set, the early exit', async () => {
+    const scenes: [string, () => b2World][] = [
+      ['pyramid', () => pyramid(10)],
+      ['joints and contacts', jointsAndContacts],
+      ['40 circles on a plate (overflow set)', () => crowdedPlate(40)],
+      ['40 joints on a hub (overflow set)', () => hub(40)],
+    ];
+    for (const [label, build] of scenes) {
+      const passes = await colouringAfter(ctx, build, 12, false);
+      const fused = await colouringAfter(ctx, build, 12, true);
+      expect(Array.from(fused.colouring.colours), label).toEqual(Array.from(passes.colouring.colours));
+      expect(Array.from(fused.colouring.keys), label).toEqual(Array.from(passes.colouring.keys));
+      expect(fused.state, label).toEqual(passes.state);
+      expect(fused.positionIterations, label).toEqual(passes.positionIterations);
+      // The rounds (2 COLOUR_CAP + 1), warm start (COLOUR_CAP + 1), velocity (8 (COLOUR_CAP + 1)) and
+      // position (3 (COLOUR_CAP + 2)) passes become four dispatches.
+      expect(passes.dispatches - fused.dispatches, label).toBe(2 * COLOUR_CAP + 1 + 9 * (COLOUR_CAP + 1) + 3 * (COLOUR_CAP + 2) - 4);
+    }
+    // Sizes up to FUSED_SOLVER_BODIES take the fused passes unless told otherwise.
+    const byDefault = await colouringAfter(ctx, () => pyramid(10), 1);
+    const fused = await colouringAfter(ctx, () => pyramid(10), 1, true);
+    expect(byDefault.dispatches).toBe(fused.dispatches);
   }, 600_000);
 });
