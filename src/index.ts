@@ -28,6 +28,7 @@ export * from './dynamics/b2WorldCallbacks';
 export * from './dynamics/b2Body';
 export * from './dynamics/b2Fixture';
 export * from './dynamics/b2World';
+export * from './dynamics/b2AccuracyTarget';
 export type { b2WorldBackend, b2WorldBackendEngine, b2OverridableCallback } from './dynamics/b2WorldBackend';
 export * from './dynamics/b2ContactManager';
 export * from './dynamics/b2Island';

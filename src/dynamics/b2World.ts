@@ -33,6 +33,7 @@ import { b2CheckBodyOf, b2CheckJointDef, b2CheckJointOf } from './b2DefValidatio
 import { b2Body, type b2BodyDef } from './b2Body';
 import { b2ContactManager } from './b2ContactManager';
 import { b2WorldBackendEngineFunctions, type b2WorldBackend } from './b2WorldBackend';
+import { b2AccuracyController, b2CheckAccuracyTarget, type b2Accuracy, type b2AccuracyTargetDef } from './b2AccuracyTarget';
 import type { b2FixtureProxy } from './b2Fixture';
 import { b2Island } from './b2Island';
 import { b2Profile, b2TimeStep } from './b2TimeStep';
@@ -197,6 +198,13 @@ export class b2World {
   /** Not in the C++: the backend that steps this world (SetBackend), null for this engine. */
   private m_backend: b2WorldBackend | null = null;
   private m_backendSwitching = false;
+  /**
+   * Not in the C++: steps a backend let this engine take (b2WorldBackendEngine.step), so that the
+   * accuracy target's controller knows the world shows a new state without a synchronisation.
+   */
+  m_engineStepsOnBackend = 0;
+  /** Not in the C++: the accuracy target's controller (SetAccuracyTarget), null without a target. */
+  private m_accuracy: b2AccuracyController | null = null;
 
   // Reused in place of the C++ stack temporaries of Step, Solve and SolveTOI.
   private readonly m_island = new b2Island(0, 0, 0, null);
@@ -573,6 +581,10 @@ export class b2World {
 
   /**
    * Take a time step. This performs collision detection, integration, and constraint solution.
+   * Not in the C++: with an accuracy target set (SetAccuracyTarget), the step runs with the
+   * iterations and sub-steps the target's controller chose (GetAccuracy says which) instead of
+   * velocityIterations and positionIterations, which are still checked; without one, exactly as
+   * the C++.
    * @param dt the amount of time to simulate, this should not vary.
    * @param velocityIterations for the velocity constraint solver.
    * @param positionIterations for the position constraint solver.
@@ -586,11 +598,55 @@ export class b2World {
     if (this.IsLocked()) {
       throw lockedError('Step');
     }
+    if (this.m_accuracy !== null) {
+      this.m_accuracy.Step(this, dt);
+      return;
+    }
     if (this.m_backend !== null) {
       this.m_backend.Step(dt, velocityIterations, positionIterations);
       return;
     }
     this.StepOnEngine(dt, velocityIterations, positionIterations);
+  }
+
+  /**
+   * Not in the C++: Step after its checks, with these settings whatever the accuracy target: on
+   * the backend, or on this engine. The accuracy target's controller steps the world with it.
+   */
+  StepDirect(dt: number, velocityIterations: number, positionIterations: number): void {
+    if (this.m_backend !== null) {
+      this.m_backend.Step(dt, velocityIterations, positionIterations);
+      return;
+    }
+    this.StepOnEngine(dt, velocityIterations, positionIterations);
+  }
+
+  /**
+   * Not in the C++: give the world an accuracy target in the accuracy study's units, or take it
+   * away with null (docs/ACCURACY.md, "Accuracy targets"): `{ penetration?: m, jointError?: m,
+   * jitter?: m/s }`, each the largest error allowed, at least one given. From then on Step uses the
+   * velocity / position iterations and sub-steps a controller chooses from a ladder of settings
+   * ordered by cost: first the cheapest the accuracy study measured below every target, then
+   * corrected from the errors measured in this world after each step (up a rung when one exceeds
+   * its target, down after a sustained margin). The choices depend on the world's state only, so a
+   * replay makes the same ones. Throws a b2ArgumentError (the world unchanged) for a target that
+   * is not an object of finite numbers > 0 with known keys. Setting a target starts the
+   * controller afresh.
+   */
+  SetAccuracyTarget(target: Readonly<b2AccuracyTargetDef> | null): void {
+    if (this.IsLocked()) {
+      throw lockedError('SetAccuracyTarget');
+    }
+    this.m_accuracy = target === null ? null : new b2AccuracyController(b2CheckAccuracyTarget('b2World.SetAccuracyTarget', target));
+  }
+
+  /**
+   * Not in the C++: the accuracy target and what it chose (SetAccuracyTarget): the target, the
+   * iterations and sub-steps Step uses now, the errors measured after the last step (on a backend,
+   * at its last synchronisation), and the reason in words and numbers; null without a target.
+   */
+  GetAccuracy(): b2Accuracy | null {
+    return this.m_accuracy === null ? null : this.m_accuracy.report(this);
   }
 
   /**
@@ -667,6 +723,12 @@ export class b2World {
    * engine that is at once; on a backend (SetBackend) after its read-back.
    */
   async StepAsync(dt: number, velocityIterations: number, positionIterations: number): Promise<void> {
+    if (this.m_accuracy !== null) {
+      // The chosen settings; the step's measures read the synchronisation before it.
+      this.Step(dt, velocityIterations, positionIterations);
+      await this.Synchronize();
+      return;
+    }
     if (this.m_backend !== null && !this.IsLocked()) {
       return this.m_backend.StepAsync(dt, velocityIterations, positionIterations);
     }

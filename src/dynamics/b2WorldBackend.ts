@@ -75,6 +75,9 @@ export const b2WorldBackendEngineFunctions: b2WorldBackendEngine = {
   listenerOverrides,
   createContact: (fixtureA, indexA, fixtureB, indexB) => b2Contact.Create(fixtureA, indexA, fixtureB, indexB),
   createImpulse: () => new b2ContactImpulse(),
-  step: (world, dt, velocityIterations, positionIterations) => world.StepOnEngine(dt, velocityIterations, positionIterations),
+  step: (world, dt, velocityIterations, positionIterations) => {
+    world.m_engineStepsOnBackend++;
+    world.StepOnEngine(dt, velocityIterations, positionIterations);
+  },
   createPyramidWorld: (rows, copies) => b2CreatePyramidWorld(rows, copies),
 };
