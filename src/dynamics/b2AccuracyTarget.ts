@@ -358,10 +358,14 @@ export class b2AccuracyController {
   }
 
   private measure(world: b2World, contacts: boolean): void {
+    // Written into the array, not returned: a returned double would be boxed, an allocation a step.
     const v = this.measured;
-    v[PEN] = this.wanted[PEN] && contacts ? penetrationOf(world.m_contactManager.m_contactList) : NaN;
-    v[JOINT] = this.wanted[JOINT] ? jointErrorOf(world.m_jointList) : NaN;
-    v[JIT] = this.wanted[JIT] ? jitterOf(world.m_bodyList) : NaN;
+    if (this.wanted[PEN] && contacts) measurePenetration(world.m_contactManager.m_contactList, v, PEN);
+    else v[PEN] = NaN;
+    if (this.wanted[JOINT]) measureJointError(world.m_jointList, v, JOINT);
+    else v[JOINT] = NaN;
+    if (this.wanted[JIT]) measureJitter(world.m_bodyList, v, JIT);
+    else v[JIT] = NaN;
     this.measuredAny = true;
     for (let k = 0; k < 3; ++k) {
       if (v[k] === v[k] && !(v[k] <= this.worstHere[k])) this.worstHere[k] = v[k];
@@ -499,6 +503,14 @@ export class b2AccuracyController {
  * bodies' current transforms, each point's separation as b2PositionSolverManifold computes it.
  */
 export function penetrationOf(list: b2Contact | null): number {
+  measurePenetration(list, scratch, 0);
+  return scratch[0];
+}
+
+const scratch = new Float64Array(1);
+
+/** penetrationOf(list) into out[slot]. */
+function measurePenetration(list: b2Contact | null, out: Float64Array, slot: number): void {
   let deepest = 0;
   for (let c = list; c; c = c.m_next) {
     if ((c.m_flags & (e_touchingFlag | e_enabledFlag)) !== (e_touchingFlag | e_enabledFlag)) continue;
@@ -538,34 +550,34 @@ export function penetrationOf(list: b2Contact | null): number {
       if (-s > deepest) deepest = -s;
     }
   }
-  return deepest;
+  out[slot] = deepest;
 }
 
+/**
+ * The helpers below leave their result in G[0] rather than return it: a double returned from a
+ * call the optimiser does not inline is boxed, an allocation a joint and a step.
+ */
+const G = new Float64Array(1);
+
 /** |b.xf(lb) - a.xf(la)|, the distance between two bodies' local points in the world. */
-function anchorGap(a: b2Body, la: Readonly<b2Vec2>, b: b2Body, lb: Readonly<b2Vec2>): number {
+function anchorGap(a: b2Body, la: Readonly<b2Vec2>, b: b2Body, lb: Readonly<b2Vec2>): void {
   const dx = b.m_xf.q.c * lb.x - b.m_xf.q.s * lb.y + b.m_xf.p.x - (a.m_xf.q.c * la.x - a.m_xf.q.s * la.y + a.m_xf.p.x);
   const dy = b.m_xf.q.s * lb.x + b.m_xf.q.c * lb.y + b.m_xf.p.y - (a.m_xf.q.s * la.x + a.m_xf.q.c * la.y + a.m_xf.p.y);
-  return Math.sqrt(dx * dx + dy * dy);
+  G[0] = Math.sqrt(dx * dx + dy * dy);
 }
 
 /** The distance from a body's local point in the world to a world point. */
-function pointGap(a: b2Body, la: Readonly<b2Vec2>, p: Readonly<b2Vec2>): number {
+function pointGap(a: b2Body, la: Readonly<b2Vec2>, p: Readonly<b2Vec2>): void {
   const dx = a.m_xf.q.c * la.x - a.m_xf.q.s * la.y + a.m_xf.p.x - p.x;
   const dy = a.m_xf.q.s * la.x + a.m_xf.q.c * la.y + a.m_xf.p.y - p.y;
-  return Math.sqrt(dx * dx + dy * dy);
+  G[0] = Math.sqrt(dx * dx + dy * dy);
 }
 
 /** (b.xf(lb) - a.xf(la)) · (a's rotation of axis). */
-function alongAxis(a: b2Body, la: Readonly<b2Vec2>, b: b2Body, lb: Readonly<b2Vec2>, axis: Readonly<b2Vec2>): number {
+function alongAxis(a: b2Body, la: Readonly<b2Vec2>, b: b2Body, lb: Readonly<b2Vec2>, axis: Readonly<b2Vec2>): void {
   const dx = b.m_xf.q.c * lb.x - b.m_xf.q.s * lb.y + b.m_xf.p.x - (a.m_xf.q.c * la.x - a.m_xf.q.s * la.y + a.m_xf.p.x);
   const dy = b.m_xf.q.s * lb.x + b.m_xf.q.c * lb.y + b.m_xf.p.y - (a.m_xf.q.s * la.x + a.m_xf.q.c * la.y + a.m_xf.p.y);
-  return dx * (a.m_xf.q.c * axis.x - a.m_xf.q.s * axis.y) + dy * (a.m_xf.q.s * axis.x + a.m_xf.q.c * axis.y);
-}
-
-/** A gear's joint coordinate (as b2GearJoint defines it): an angle for a revolute joint, a translation for a prismatic one. */
-function gearCoordinate(type: number, body: b2Body, ground: b2Body, local: Readonly<b2Vec2>, groundLocal: Readonly<b2Vec2>, axis: Readonly<b2Vec2>, reference: number): number {
-  if (type === b2JointType.e_revoluteJoint) return body.m_sweep.a - ground.m_sweep.a - reference;
-  return alongAxis(ground, groundLocal, body, local, axis);
+  G[0] = dx * (a.m_xf.q.c * axis.x - a.m_xf.q.s * axis.y) + dy * (a.m_xf.q.s * axis.x + a.m_xf.q.c * axis.y);
 }
 
 /**
@@ -574,6 +586,12 @@ function gearCoordinate(type: number, body: b2Body, ground: b2Body, local: Reado
  * joints are not errors, and a gear between two revolute joints has an angular error only.
  */
 export function jointErrorOf(list: b2Joint | null): number {
+  measureJointError(list, scratch, 0);
+  return scratch[0];
+}
+
+/** jointErrorOf(list) into out[slot]. */
+function measureJointError(list: b2Joint | null, out: Float64Array, slot: number): void {
   let largest = 0;
   for (let j = list; j; j = j.m_next) {
     const a = j.m_bodyA;
@@ -583,36 +601,52 @@ export function jointErrorOf(list: b2Joint | null): number {
       case b2JointType.e_revoluteJoint:
       case b2JointType.e_weldJoint: {
         const r = j as unknown as { m_localAnchorA: b2Vec2; m_localAnchorB: b2Vec2 };
-        e = anchorGap(a, r.m_localAnchorA, b, r.m_localAnchorB);
+        anchorGap(a, r.m_localAnchorA, b, r.m_localAnchorB);
+        e = G[0];
         break;
       }
       case b2JointType.e_prismaticJoint:
       case b2JointType.e_wheelJoint: {
         const p = j as unknown as b2PrismaticJoint | b2WheelJoint;
-        e = Math.abs(alongAxis(a, p.m_localAnchorA, b, p.m_localAnchorB, p.m_localYAxisA));
+        alongAxis(a, p.m_localAnchorA, b, p.m_localAnchorB, p.m_localYAxisA);
+        e = Math.abs(G[0]);
         break;
       }
       case b2JointType.e_distanceJoint: {
         const d = j as unknown as b2DistanceJoint;
         if (d.m_frequencyHz > 0) break;
-        e = Math.abs(anchorGap(a, d.m_localAnchorA, b, d.m_localAnchorB) - d.m_length);
+        anchorGap(a, d.m_localAnchorA, b, d.m_localAnchorB);
+        e = Math.abs(G[0] - d.m_length);
         break;
       }
       case b2JointType.e_ropeJoint: {
         const r = j as unknown as b2RopeJoint;
-        e = Math.max(0, anchorGap(a, r.m_localAnchorA, b, r.m_localAnchorB) - r.m_maxLength);
+        anchorGap(a, r.m_localAnchorA, b, r.m_localAnchorB);
+        e = Math.max(0, G[0] - r.m_maxLength);
         break;
       }
       case b2JointType.e_pulleyJoint: {
         const p = j as unknown as b2PulleyJoint;
-        e = Math.abs(pointGap(a, p.m_localAnchorA, p.m_groundAnchorA) + p.m_ratio * pointGap(b, p.m_localAnchorB, p.m_groundAnchorB) - p.m_constant);
+        pointGap(a, p.m_localAnchorA, p.m_groundAnchorA);
+        const lengthA = G[0];
+        pointGap(b, p.m_localAnchorB, p.m_groundAnchorB);
+        e = Math.abs(lengthA + p.m_ratio * G[0] - p.m_constant);
         break;
       }
       case b2JointType.e_gearJoint: {
         const g = j as unknown as b2GearJoint;
         if (g.m_typeA === b2JointType.e_revoluteJoint && g.m_typeB === b2JointType.e_revoluteJoint) break;
-        const ca = gearCoordinate(g.m_typeA, a, g.m_bodyC, g.m_localAnchorA, g.m_localAnchorC, g.m_localAxisC, g.m_referenceAngleA);
-        const cb = gearCoordinate(g.m_typeB, b, g.m_bodyD, g.m_localAnchorB, g.m_localAnchorD, g.m_localAxisD, g.m_referenceAngleB);
+        // Each coordinate as b2GearJoint defines it: an angle for a revolute joint, a translation for a prismatic one.
+        let ca = a.m_sweep.a - g.m_bodyC.m_sweep.a - g.m_referenceAngleA;
+        if (g.m_typeA !== b2JointType.e_revoluteJoint) {
+          alongAxis(g.m_bodyC, g.m_localAnchorC, a, g.m_localAnchorA, g.m_localAxisC);
+          ca = G[0];
+        }
+        let cb = b.m_sweep.a - g.m_bodyD.m_sweep.a - g.m_referenceAngleB;
+        if (g.m_typeB !== b2JointType.e_revoluteJoint) {
+          alongAxis(g.m_bodyD, g.m_localAnchorD, b, g.m_localAnchorB, g.m_localAxisD);
+          cb = G[0];
+        }
         e = Math.abs(ca + g.m_ratio * cb - g.m_constant);
         break;
       }
@@ -621,11 +655,17 @@ export function jointErrorOf(list: b2Joint | null): number {
     }
     if (e > largest) largest = e;
   }
-  return largest;
+  out[slot] = largest;
 }
 
 /** The root mean square linear speed (m/s) of the awake dynamic bodies; 0 when there is none. */
 export function jitterOf(list: b2Body | null): number {
+  measureJitter(list, scratch, 0);
+  return scratch[0];
+}
+
+/** jitterOf(list) into out[slot]. */
+function measureJitter(list: b2Body | null, out: Float64Array, slot: number): void {
   let sum = 0;
   let n = 0;
   for (let b = list; b; b = b.m_next) {
@@ -634,5 +674,5 @@ export function jitterOf(list: b2Body | null): number {
     sum += v.x * v.x + v.y * v.y;
     n++;
   }
-  return n === 0 ? 0 : Math.sqrt(sum / n);
+  out[slot] = n === 0 ? 0 : Math.sqrt(sum / n);
 }
