@@ -18,14 +18,14 @@
  *    b2PositionSolverManifold computes the separation); joint error, the largest linear position
  *    error of the joints (per joint type, as bench/accuracy/measures.mjs defines it); jitter, the
  *    root mean square linear speed of the awake dynamic bodies. No allocation.
- *  - moves up a rung when a measure exceeds its target (then holds UP_HOLD steps, so that the new
- *    settings show before the next move up);
- *  - moves down a rung when, for `downWait` consecutive steps (DOWN_WAIT at first), every measure
- *    would stay below half its target one rung down: the measured excess over the measure's floor
- *    (b2_linearSlop for penetration, which contacts settle into by design; 0 otherwise) times the
- *    study's largest growth of that excess from this rung to the one below, over its scenes. A
- *    descent that the next step up undoes doubles downWait (at most DOWN_WAIT_MAX), so the choice
- *    settles instead of oscillating.
+ *  - moves up a rung when a measure exceeds its target (then holds b2_accuracyUpHold steps, so
+ *    that the new settings show before the next move up);
+ *  - moves down a rung when, for `downWait` consecutive steps (b2_accuracyDownWait at first),
+ *    every measure would stay below half its target one rung down: the measured excess over the
+ *    measure's floor (b2_linearSlop for penetration, which contacts settle into by design; 0
+ *    otherwise) times the study's largest growth of that excess from this rung to the one below,
+ *    over its scenes. A descent that the next move up undoes doubles downWait (at most
+ *    b2_accuracyDownWaitMax), so the choice settles instead of oscillating.
  * Everything is integer counters and the world's own numbers: the same scene and target make the
  * same choices on every run. Sub-steps take the frame's dt in equal parts with the forces applied
  * through the whole frame (the world's force clearing is held until the last sub-step).
@@ -186,7 +186,11 @@ export function b2AccuracyGrowth(i: number, m: b2AccuracyMeasure): number {
  */
 export function b2CheckAccuracyTarget(method: string, target: unknown): Readonly<b2AccuracyTargetDef> {
   if (typeof target !== 'object' || target === null || Array.isArray(target)) {
-    throw new b2ArgumentError(method, 'target', `must be an object { penetration?, jointError?, jitter? } or null, got ${Array.isArray(target) ? 'an array' : b2DescribeNumber(target)}`);
+    throw new b2ArgumentError(
+      method,
+      'target',
+      `must be an object { penetration?, jointError?, jitter? } or null, got ${Array.isArray(target) ? 'an array' : b2DescribeNumber(target)}`,
+    );
   }
   const t = target as Record<string, unknown>;
   for (const key of Object.keys(t)) {
@@ -472,17 +476,26 @@ export class b2AccuracyController {
       const m = this.moveMeasure >= 0 ? b2AccuracyMeasures[this.moveMeasure] : null;
       const from = b2_accuracyLadder[this.moveFrom].label;
       if (this.lastMove === 'up') {
-        parts.push(`up from ${from} at step ${this.moveStep}: ${NAME[m!]} ${describeMeasure(m!, this.moveValue)} over the target ${describeMeasure(m!, this.moveBound)}`);
+        parts.push(
+          `up from ${from} at step ${this.moveStep}: ${NAME[m!]} ${describeMeasure(m!, this.moveValue)} over the target ${describeMeasure(m!, this.moveBound)}`,
+        );
       } else {
-        const tail = m === null ? 'the measures not taken here stay at or above the study\'s rungs' : `${NAME[m]} ${describeMeasure(m, this.moveValue)} would stay below half the target ${describeMeasure(m, this.moveBound)}${FLOOR[m] > 0 ? ` above the ${describeMeasure(m, FLOOR[m])} contacts rest at` : ''} with the study's growth from rung to rung`;
-        parts.push(`down from ${from} at step ${this.moveStep} after ${this.downWait === b2_accuracyDownWait ? b2_accuracyDownWait : `${this.downWait} (doubled: a descent was undone)`} steps with room: ${tail}`);
+        const tail =
+          m === null
+            ? "the measures not taken here stay at or above the study's rungs"
+            : `${NAME[m]} ${describeMeasure(m, this.moveValue)} would stay below half the target ${describeMeasure(m, this.moveBound)}${FLOOR[m] > 0 ? ` above the ${describeMeasure(m, FLOOR[m])} contacts rest at` : ''} with the study's growth from rung to rung`;
+        parts.push(
+          `down from ${from} at step ${this.moveStep} after ${this.downWait === b2_accuracyDownWait ? b2_accuracyDownWait : `${this.downWait} (doubled: a descent was undone)`} steps with room: ${tail}`,
+        );
       }
     }
     const onTop = here === top;
     if (!this.measuredAny) parts.push('nothing measured yet');
-    else if (over.length > 0) parts.push(`${onTop ? 'target NOT met at the top rung' : 'target not met yet'}: ${over.join(', ')}${within.length > 0 ? `; ${within.join(', ')}` : ''}`);
+    else if (over.length > 0)
+      parts.push(`${onTop ? 'target NOT met at the top rung' : 'target not met yet'}: ${over.join(', ')}${within.length > 0 ? `; ${within.join(', ')}` : ''}`);
     else parts.push(`target met: ${within.join(', ')}`);
-    if (onTop && world.GetBackend() !== null && top < b2_accuracyLadder.length - 1) parts.push('on a backend the ladder ends at its last rung without sub-steps');
+    if (onTop && world.GetBackend() !== null && top < b2_accuracyLadder.length - 1)
+      parts.push('on a backend the ladder ends at its last rung without sub-steps');
     return {
       target: this.target,
       velocityIterations: r.velocityIterations,

@@ -13,13 +13,7 @@ import { b2ArgumentError } from '../../src/common/b2ArgumentError';
 import type { b2Body } from '../../src/dynamics/b2Body';
 import { b2World } from '../../src/dynamics/b2World';
 import type { b2WorldBackend, b2WorldBackendEngine } from '../../src/dynamics/b2WorldBackend';
-import {
-  b2AccuracyGrowth,
-  b2AccuracyStudyRung,
-  b2_accuracyLadder,
-  type b2Accuracy,
-  type b2AccuracyTargetDef,
-} from '../../src/dynamics/b2AccuracyTarget';
+import { b2AccuracyGrowth, b2AccuracyStudyRung, b2_accuracyLadder, type b2Accuracy, type b2AccuracyTargetDef } from '../../src/dynamics/b2AccuracyTarget';
 import { jointErrors, penetration, rmsSpeed } from '../../bench/accuracy/measures.mjs';
 import { buildScene, type AccuracySceneId } from '../../bench/accuracy/scenes.mjs';
 
@@ -173,10 +167,11 @@ describe('the ladder is the accuracy study', () => {
     const r = s.results.find((x: { method: string; backend: string }) => x.method === method && x.backend === 'js');
     return measure === 'ms' ? r.msPerSecond : r.measures[measure];
   };
-  const methodOf = (r: (typeof b2_accuracyLadder)[number]): string => (r.substeps > 1 ? `substeps-${r.substeps}` : `iter-${r.velocityIterations}-${r.positionIterations}`);
+  const methodOf = (r: (typeof b2_accuracyLadder)[number]): string =>
+    r.substeps > 1 ? `substeps-${r.substeps}` : `iter-${r.velocityIterations}-${r.positionIterations}`;
   const three = (x: number): number => Number(x.toPrecision(3));
 
-  it('holds the study\'s JavaScript results to three digits, for each rung and scene', () => {
+  it("holds the study's JavaScript results to three digits, for each rung and scene", () => {
     for (const r of b2_accuracyLadder) {
       const m = methodOf(r);
       if (r.substeps > 1) expect([r.velocityIterations, r.positionIterations]).toEqual([8, 3]);
@@ -190,11 +185,17 @@ describe('the ladder is the accuracy study', () => {
     }
   });
 
-  it('is ordered by the pyramid\'s cost, and 32/12 (left out) costs what 8/3 in 2 sub-steps does and measures more error', () => {
+  it("is ordered by the pyramid's cost, and 32/12 (left out) costs what 8/3 in 2 sub-steps does and measures more error", () => {
     const costs = b2_accuracyLadder.map((r) => r.msPerSecond);
     expect([...costs].sort((a, b) => a - b)).toEqual(costs);
     expect(value('pyramid', 'iter-32-12', 'ms')).toBeGreaterThan(value('pyramid', 'substeps-2', 'ms'));
-    for (const [scene, measure] of [['stack', 'penetration max'], ['pyramid', 'penetration max'], ['mechanisms', 'joint error'], ['stack', 'jitter'], ['pyramid', 'jitter']]) {
+    for (const [scene, measure] of [
+      ['stack', 'penetration max'],
+      ['pyramid', 'penetration max'],
+      ['mechanisms', 'joint error'],
+      ['stack', 'jitter'],
+      ['pyramid', 'jitter'],
+    ]) {
       expect(value(scene, 'iter-32-12', measure)).toBeGreaterThan(value(scene, 'substeps-2', measure));
     }
   });
@@ -211,11 +212,13 @@ describe('the ladder is the accuracy study', () => {
   });
 });
 
-describe('targets met on the study\'s scenes', () => {
+describe("targets met on the study's scenes", () => {
   it('stack, penetration 0.01 m: met over the last second, ending at 4/2 where the fixed 32/12 shows more penetration', () => {
     const r = run(studyWorld('stack'), { penetration: 0.01 }, 10);
     const conservative = fixed(studyWorld('stack'), 32, 12, 10, 'penetration');
-    console.log(`stack: penetration ${r.penetration.toExponential(3)} m (target 0.01) at ${r.settings.at(-1)}, ${r.last.changes} changes, ${r.meanIterations.toFixed(1)} velocity iterations a frame on average; fixed 32/12: ${conservative.toExponential(3)} m`);
+    console.log(
+      `stack: penetration ${r.penetration.toExponential(3)} m (target 0.01) at ${r.settings.at(-1)}, ${r.last.changes} changes, ${r.meanIterations.toFixed(1)} velocity iterations a frame on average; fixed 32/12: ${conservative.toExponential(3)} m`,
+    );
     expect(r.penetration).toBeLessThan(0.01);
     expect(r.last.met).toBe(true);
     expect(r.settings.at(-1)).toBe('4/2 x1');
@@ -226,7 +229,9 @@ describe('targets met on the study\'s scenes', () => {
   it('pyramid, penetration 0.006 m: met over the last second at 2/1, fewer iterations than 16/6 or 32/12', () => {
     const r = run(studyWorld('pyramid'), { penetration: 0.006 }, 10);
     const conservative = fixed(studyWorld('pyramid'), 32, 12, 10, 'penetration');
-    console.log(`pyramid: penetration ${r.penetration.toExponential(3)} m (target 0.006) at ${r.settings.at(-1)}, ${r.last.changes} changes, ${r.meanIterations.toFixed(1)} velocity iterations a frame on average; fixed 32/12: ${conservative.toExponential(3)} m`);
+    console.log(
+      `pyramid: penetration ${r.penetration.toExponential(3)} m (target 0.006) at ${r.settings.at(-1)}, ${r.last.changes} changes, ${r.meanIterations.toFixed(1)} velocity iterations a frame on average; fixed 32/12: ${conservative.toExponential(3)} m`,
+    );
     expect(r.penetration).toBeLessThan(0.006);
     expect(r.last.met).toBe(true);
     expect(r.settings.at(-1)).toBe('2/1 x1');
@@ -234,19 +239,23 @@ describe('targets met on the study\'s scenes', () => {
     expect(new Set(r.settings.slice(-60)).size).toBe(1);
   });
 
-  it('chain, joint error 0.02 m: met over the whole run, ending at 16/6 where the study\'s fixed settings need 16/6', () => {
+  it("chain, joint error 0.02 m: met over the whole run, ending at 16/6 where the study's fixed settings need 16/6", () => {
     const r = run(studyWorld('chain'), { jointError: 0.02 }, 5);
     const conservative = fixed(studyWorld('chain'), 32, 12, 5, 'jointError');
-    console.log(`chain: joint error ${r.jointError.toExponential(3)} m (target 0.02) at ${r.settings.at(-1)}, ${r.last.changes} changes, ${r.meanIterations.toFixed(1)} velocity iterations a frame on average; fixed 32/12: ${conservative.toExponential(3)} m`);
+    console.log(
+      `chain: joint error ${r.jointError.toExponential(3)} m (target 0.02) at ${r.settings.at(-1)}, ${r.last.changes} changes, ${r.meanIterations.toFixed(1)} velocity iterations a frame on average; fixed 32/12: ${conservative.toExponential(3)} m`,
+    );
     expect(r.jointError).toBeLessThan(0.02);
     expect(r.last.met).toBe(true);
     expect(iterationsOf(r.last)).toBeLessThan(32);
     expect(r.meanIterations).toBeLessThan(32);
   });
 
-  it('mechanisms, joint error 0.05 m: met over the whole run (the pulley\'s landing included) and ending below 8/3', () => {
+  it("mechanisms, joint error 0.05 m: met over the whole run (the pulley's landing included) and ending below 8/3", () => {
     const r = run(studyWorld('mechanisms'), { jointError: 0.05 }, 5);
-    console.log(`mechanisms: joint error ${r.jointError.toExponential(3)} m (target 0.05) at ${r.settings.at(-1)}, ${r.last.changes} changes, ${r.meanIterations.toFixed(1)} velocity iterations a frame on average`);
+    console.log(
+      `mechanisms: joint error ${r.jointError.toExponential(3)} m (target 0.05) at ${r.settings.at(-1)}, ${r.last.changes} changes, ${r.meanIterations.toFixed(1)} velocity iterations a frame on average`,
+    );
     expect(r.jointError).toBeLessThan(0.05);
     expect(iterationsOf(r.last)).toBeLessThan(8);
   });
@@ -302,13 +311,15 @@ describe('choices and reasons', () => {
     expect(r.last.measured.jointError).toBeNull();
     expect(r.last.worst.penetration).toBeGreaterThanOrEqual(r.last.measured.penetration!);
     expect(r.last.steps).toBe(600);
-    expect(r.last.reason).toMatch(/^4\/2 iterations; down from 8\/3 iterations at step \d+ after 60 steps with room: penetration [0-9.]+ m would stay below half the target 0\.01 m above the 0\.005 m contacts rest at/);
+    expect(r.last.reason).toMatch(
+      /^4\/2 iterations; down from 8\/3 iterations at step \d+ after 60 steps with room: penetration [0-9.]+ m would stay below half the target 0\.01 m above the 0\.005 m contacts rest at/,
+    );
     expect(r.last.reason).toMatch(/target met: penetration 0\.00\d+ m within 0\.01 m$/);
   });
 });
 
 describe('Step without a target', () => {
-  it('is the world\'s own Step: setting a target and removing it changes nothing, bit for bit', () => {
+  it("is the world's own Step: setting a target and removing it changes nothing, bit for bit", () => {
     const plain = studyWorld('pyramid');
     const cleared = studyWorld('pyramid');
     cleared.SetAccuracyTarget({ penetration: 0.006 });
@@ -321,7 +332,7 @@ describe('Step without a target', () => {
     expect(bits(positionsOf(cleared))).toEqual(bits(positionsOf(plain)));
   });
 
-  it('with a target, each frame is the world\'s own Step at the chosen settings (k steps of dt / k for k sub-steps)', () => {
+  it("with a target, each frame is the world's own Step at the chosen settings (k steps of dt / k for k sub-steps)", () => {
     const r = run(studyWorld('mechanisms'), { jointError: 0.05 }, 5);
     expect(new Set(r.settings).size).toBeGreaterThan(2);
     expect(r.settings).toContain('8/3 x2');
@@ -382,7 +393,7 @@ class RemoteBackend implements b2WorldBackend {
 }
 
 describe('on a backend', () => {
-  it('the chosen iterations reach the backend\'s Step, without sub-steps (the ladder ends at 16/6)', async () => {
+  it("the chosen iterations reach the backend's Step, without sub-steps (the ladder ends at 16/6)", async () => {
     const world = studyWorld('chain');
     const backend = new RemoteBackend();
     await world.SetBackend(backend);
