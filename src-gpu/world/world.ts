@@ -119,11 +119,6 @@ function isCustomContactFilter(filter: object | null): boolean {
 }
 
 /**
- * The world mirrored on the GPU (structure-of-arrays tables, uploaded incrementally).
- * @internal Advanced: exported for tools, benchmarks and tests; applications use WebGPUBackend
- * through b2World.SetBackend (docs/GPU.md, "The world API on the GPU").
- */
-/**
  * What the world holds, for the step to leave out stages it cannot need: fixtures by
  * b2Shape::Type and sensors (the collide kernel of each pair type), bullets and static or
  * kinematic bodies with fixtures (the time of impact). Counted by every full walk of sync();
@@ -138,6 +133,11 @@ export interface WorldCensus {
   nonDynamic: number;
 }
 
+/**
+ * The world mirrored on the GPU (structure-of-arrays tables, uploaded incrementally).
+ * @internal Advanced: exported for tools, benchmarks and tests; applications use WebGPUBackend
+ * through b2World.SetBackend (docs/GPU.md, "The world API on the GPU").
+ */
 export class GpuWorld {
   readonly ctx: GpuContext;
   readonly world: b2World;

@@ -459,7 +459,7 @@ export class b2Body {
 
   /**
    * Set the angular velocity.
-   * @param omega the new angular velocity in radians/second.
+   * @param w the new angular velocity in radians/second.
    */
   SetAngularVelocity(w: number): void {
     checkBody(this, 'b2Body.SetAngularVelocity', false);
@@ -810,7 +810,7 @@ export class b2Body {
 
   /**
    * Gets a local point relative to the body's origin given a world point.
-   * @param a point in world coordinates.
+   * @param worldPoint a point in world coordinates.
    * @return the corresponding local point relative to the body's origin (in `out` when given).
    */
   GetLocalPoint(worldPoint: Readonly<b2Vec2>, out: b2Vec2 = new b2Vec2()): b2Vec2 {
@@ -825,7 +825,7 @@ export class b2Body {
 
   /**
    * Gets a local vector given a world vector.
-   * @param a vector in world coordinates.
+   * @param worldVector a vector in world coordinates.
    * @return the corresponding local vector (in `out` when given).
    */
   GetLocalVector(worldVector: Readonly<b2Vec2>, out: b2Vec2 = new b2Vec2()): b2Vec2 {
@@ -840,7 +840,7 @@ export class b2Body {
 
   /**
    * Get the world linear velocity of a world point attached to this body.
-   * @param a point in world coordinates.
+   * @param worldPoint a point in world coordinates.
    * @return the world velocity of a point (in `out` when given).
    */
   GetLinearVelocityFromWorldPoint(worldPoint: Readonly<b2Vec2>, out: b2Vec2 = new b2Vec2()): b2Vec2 {
@@ -856,7 +856,7 @@ export class b2Body {
 
   /**
    * Get the world velocity of a local point.
-   * @param a point in local coordinates.
+   * @param localPoint a point in local coordinates.
    * @return the world velocity of a point (in `out` when given).
    */
   GetLinearVelocityFromLocalPoint(localPoint: Readonly<b2Vec2>, out: b2Vec2 = new b2Vec2()): b2Vec2 {
