@@ -5,8 +5,8 @@
  * Built into one file by `node scripts/build-gpu.mjs` (dist/bench-gpu-step.mjs, `webgpu` left
  * external), so it runs where only Node and .device/node_modules exist:
  *
- *   node dist/bench-gpu-step.mjs [--sizes 1e3,1e4,1e5,1e6] [--scenes pyramids,rain] [--steps 10]
- *        [--js-max 1e5] [--js-budget 3] [--validation] [--quick] [--out DIR]
+ *   node dist/bench-gpu-step.mjs [--sizes 1e3,1e4,1e5,1e6] [--scenes pyramids,rain,balls] [--steps 10]
+ *        [--js-max 1e5] [--js-budget 3] [--fused on|off] [--auto] [--validation] [--quick] [--out DIR]
  *
  * On a lent H100 (kind nvidia-h100-x1; `.device` from `bash ../shared/gpu/prepare.sh`): carry
  * `.device` and `dist/bench-gpu-step.mjs`, run
@@ -19,7 +19,12 @@
  *   rain      circles (radius 0.25-0.5 m) and boxes (half-size 0.25-0.45 m, random angles) on a
  *             1.5 m grid jittered by up to 0.1 m (no overlaps), four times wider than high, from
  *             1 m above the ground, falling with random initial velocities (down to -4 m/s, +-1 m/s
- *             sideways).
+ *             sideways);
+ *   balls     rain's layout with circles only, on an edge for ground: a scene without polygons or
+ *             joints (--scenes balls; not in the default set).
+ * --fused on|off: the solver's fused passes for every size, or for none (GpuSolverOptions.fused);
+ * default: by the solver's items (FUSED_SOLVER_ITEMS). --auto: AutoBackend's calibration measured on this
+ * adapter (its crossover and the fitted costs).
  * Both engines: 1/60 s, 8 velocity / 3 position iterations, sleeping and continuous physics off
  * (resting pyramids would fall asleep and cost nothing: this measures the full step's work).
  * GPU: a device with Dawn's validation off (requestGpu skipValidation; --validation keeps it on, as
@@ -63,6 +68,10 @@ import { requestGpu } from '../src-gpu/device/device';
 import type { GpuContext } from '../src-gpu/device/device';
 import { WebGPUBackend } from '../src-gpu/backend/backend';
 import { GpuStepper } from '../src-gpu/stepper';
+import { AutoBackend } from '../src-gpu/backend/auto';
+import type { AutoCalibration } from '../src-gpu/backend/calibration';
+import type { GpuSolverOptions } from '../src-gpu/solver/solver';
+import { b2EdgeShape } from '../src/collision/shapes/b2EdgeShape';
 import { box, circle, crossover, deviceName, fmt, logLogChart, median, rng, settleHeap, sizeText } from './gpu-support';
 import type { Crossover } from './gpu-support';
 
@@ -75,19 +84,29 @@ const GPU_WARMUP = 10;
 /** Steps not awaited before the stream is timed: four fill the read-back ring, three more settle. */
 const STREAM_WARMUP = 7;
 const SCENES = ['pyramids', 'rain'];
+const ALL_SCENES = [...SCENES, 'balls'];
 const PYRAMID_ROWS = 20;
 const PYRAMID_PITCH = PYRAMID_ROWS + 2;
 const RAIN_SPACING = 1.5;
 const BROAD_PASSES = new Set(['bounds', 'axis', 'sort', 'sweep', 'pairs']);
 
-/** A world for both engines: gravity, sleeping and continuous physics off, a ground box of half-width `halfWidth` with its top at y = 0. */
-function emptyWorld(halfWidth: number): b2World {
+/**
+ * A world for both engines: gravity, sleeping and continuous physics off, a ground of half-width
+ * `halfWidth` with its top at y = 0: a box, or an edge.
+ */
+function emptyWorld(halfWidth: number, edgeGround = false): b2World {
   const world = new b2World(new b2Vec2(0, -10));
   world.SetAllowSleeping(false);
   world.SetContinuousPhysics(false);
   const ground = world.CreateBody(new b2BodyDef());
   const fd = new b2FixtureDef();
-  fd.shape = box(halfWidth, 1, new b2Vec2(0, -1));
+  if (edgeGround) {
+    const edge = new b2EdgeShape();
+    edge.Set(new b2Vec2(-halfWidth, 0), new b2Vec2(halfWidth, 0));
+    fd.shape = edge;
+  } else {
+    fd.shape = box(halfWidth, 1, new b2Vec2(0, -1));
+  }
   fd.friction = 0.6;
   ground.CreateFixture(fd);
   return world;
@@ -118,13 +137,14 @@ function pyramids(n: number): b2World {
   return world;
 }
 
-/** n circles and boxes on a jittered grid, falling. */
-function rain(n: number): b2World {
+/** n circles and boxes (only circles, on an edge: `balls`) on a jittered grid, falling. */
+function rain(n: number, balls = false): b2World {
   const r = rng(n * 13 + 5);
   const rows = Math.max(1, Math.round(Math.sqrt(n / 4)));
   const cols = Math.ceil(n / rows);
-  const world = emptyWorld((cols * RAIN_SPACING) / 2 + 5);
-  const shapes: b2Shape[] = [circle(0.25), circle(0.375), circle(0.5), box(0.25, 0.25), box(0.45, 0.3), box(0.35, 0.45)];
+  const world = emptyWorld((cols * RAIN_SPACING) / 2 + 5, balls);
+  const circles = [circle(0.25), circle(0.375), circle(0.5)];
+  const shapes: b2Shape[] = balls ? circles : [...circles, box(0.25, 0.25), box(0.45, 0.3), box(0.35, 0.45)];
   const bd = new b2BodyDef();
   bd.type = b2_dynamicBody;
   const fd = new b2FixtureDef();
@@ -146,7 +166,24 @@ function rain(n: number): b2World {
 function buildWorld(scene: string, n: number): b2World {
   if (scene === 'pyramids') return pyramids(n);
   if (scene === 'rain') return rain(n);
-  throw new Error(`unknown scene ${scene} (${SCENES.join(', ')})`);
+  if (scene === 'balls') return rain(n, true);
+  throw new Error(`unknown scene ${scene} (${ALL_SCENES.join(', ')})`);
+}
+
+/** --fused: the solver's fused passes forced on or off; by body count when undefined. */
+const solverOptions: GpuSolverOptions = {};
+
+/** AutoBackend's crossover on this adapter, measured as an application's first settle() does. */
+async function runCalibration(ctx: GpuContext): Promise<{ crossover: AutoCalibration | null; choice: string; ms: number }> {
+  const world = pyramids(100);
+  const auto = await AutoBackend.create({ context: ctx });
+  const t0 = performance.now();
+  await world.SetBackend(auto);
+  await auto.settle();
+  const ms = performance.now() - t0;
+  const result = { crossover: auto.crossover, choice: auto.choice.reason, ms };
+  await world.SetBackend(null);
+  return result;
 }
 
 function message(err: unknown): string {
@@ -177,7 +214,7 @@ interface GpuRow {
 
 async function runGpu(ctx: GpuContext, world: b2World, steps: number): Promise<GpuRow> {
   const t0 = performance.now();
-  const stepper = new GpuStepper(ctx, world);
+  const stepper = new GpuStepper(ctx, world, { solver: solverOptions });
   try {
     const setupMs = performance.now() - t0;
     for (let i = 0; i < GPU_WARMUP; ++i) await stepper.step(DT, VELOCITY_ITERATIONS, POSITION_ITERATIONS);
@@ -268,7 +305,7 @@ interface WorldApiRow {
 }
 
 async function runWorldApi(ctx: GpuContext, world: b2World, steps: number): Promise<WorldApiRow> {
-  const backend = await WebGPUBackend.create({ context: ctx });
+  const backend = await WebGPUBackend.create({ context: ctx, stepper: { solver: solverOptions } });
   const a0 = performance.now();
   await world.SetBackend(backend);
   const attachMs = performance.now() - a0;
@@ -374,7 +411,7 @@ function markdown(rows: Row[], crossovers: Crossover[], meta: Record<string, unk
     `Device: ${meta.device}; timestamps: ${meta.timestamps}; Dawn validation ${meta.skipValidation ? 'off' : 'on'}. Node ${meta.node}. ${meta.date}. ${meta.heapSettled ? 'Full garbage collection before each world is built and before it is timed.' : 'Run without --expose-gc: a phase may pay for collecting the previous one\'s world.'}`,
     `1/60 s, ${VELOCITY_ITERATIONS} velocity / ${POSITION_ITERATIONS} position iterations, sleeping and continuous physics off`,
     `in both (resting pyramids would fall asleep and cost nothing: this measures the full step's work). ${GPU_WARMUP} warm-up steps on the GPU, ${WARMUP} in JS, then medians of ${meta.steps} steps`,
-    `(JS: at most ${meta.steps} steps or ${meta.jsBudget} s). Milliseconds per step.`,
+    `(JS: at most ${meta.steps} steps or ${meta.jsBudget} s). Milliseconds per step. Solver passes: ${meta.fused === undefined ? 'fused up to FUSED_SOLVER_ITEMS contacts and joints' : meta.fused ? 'fused at every size (--fused on)' : 'per colour at every size (--fused off)'}.`,
     '',
     '| scene | bodies | contacts (touching) | dispatches | GPU wall | GPU not awaited | GPU device | device: broad / narrow / solve | JS | JS/GPU wall | JS/GPU not awaited |',
     '| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |',
@@ -440,6 +477,17 @@ function markdown(rows: Row[], crossovers: Crossover[], meta: Record<string, unk
     'last, world.PullState() after a synchronisation: every body fetched and the broad-phase proxies moved, as a query',
     'does, and as every synchronisation did before bodies fetched their state when read.',
   );
+  const calibration = meta.calibration as Awaited<ReturnType<typeof runCalibration>> | null;
+  if (calibration) {
+    lines.push(
+      '',
+      '## AutoBackend on this adapter',
+      '',
+      calibration.crossover
+        ? `Crossover: ${calibration.crossover.crossoverBodies} bodies (${calibration.crossover.source}); measured at the first settle() in ${fmt(calibration.ms)} ms. A 100-body world: ${calibration.choice}.`
+        : `Not measured: ${calibration.choice}.`,
+    );
+  }
   return lines.join('\n') + '\n';
 }
 
@@ -471,13 +519,15 @@ async function main(): Promise<number> {
       'js-budget': { type: 'string' },
       validation: { type: 'boolean' },
       quick: { type: 'boolean' },
+      fused: { type: 'string' },
+      auto: { type: 'boolean' },
       out: { type: 'string' },
       help: { type: 'boolean', short: 'h' },
     },
   });
   if (values.help) {
     process.stdout.write(
-      'node dist/bench-gpu-step.mjs [--sizes 1e3,1e4,1e5,1e6] [--scenes pyramids,rain] [--steps 10] [--js-max 1e5] [--js-budget 3] [--validation] [--quick] [--out DIR]\n',
+      'node dist/bench-gpu-step.mjs [--sizes 1e3,1e4,1e5,1e6] [--scenes pyramids,rain,balls] [--steps 10] [--js-max 1e5] [--js-budget 3] [--fused on|off] [--auto] [--validation] [--quick] [--out DIR]\n',
     );
     return 0;
   }
@@ -488,7 +538,11 @@ async function main(): Promise<number> {
   const jsMax = Number(values['js-max'] ?? 1e5);
   const jsBudget = Number(values['js-budget'] ?? (quick ? 1 : 3));
   const outDir = values.out ?? process.env.OUT ?? path.resolve('bench/results');
-  for (const scene of scenes) if (!SCENES.includes(scene)) throw new Error(`unknown scene ${scene} (${SCENES.join(', ')})`);
+  for (const scene of scenes) if (!ALL_SCENES.includes(scene)) throw new Error(`unknown scene ${scene} (${ALL_SCENES.join(', ')})`);
+  if (values.fused !== undefined) {
+    if (values.fused !== 'on' && values.fused !== 'off') throw new Error(`--fused must be on or off, got ${values.fused}`);
+    solverOptions.fused = values.fused === 'on';
+  }
 
   let finished = false;
   const ctx = await requestGpu({
@@ -552,7 +606,15 @@ async function main(): Promise<number> {
       rows.filter((r) => r.scene === s && r.gpu && r.js).map((r) => ({ n: r.bodies, jsMs: r.js!.ms, gpuMs: r.gpu!.wallMs })),
     ),
   );
+  let calibration: Awaited<ReturnType<typeof runCalibration>> | null = null;
+  if (values.auto === true) {
+    settleHeap();
+    calibration = await runCalibration(ctx);
+    console.error(`AutoBackend: ${calibration.crossover ? `${calibration.crossover.crossoverBodies} bodies (${calibration.crossover.source})` : 'not measured'}; ${calibration.choice}; ${fmt(calibration.ms)} ms`);
+  }
   const meta = {
+    fused: solverOptions.fused,
+    calibration,
     device: deviceLine,
     adapter: a,
     timestamps: ctx.timestamps,

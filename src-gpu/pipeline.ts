@@ -171,7 +171,11 @@ export class GpuPipeline {
           pass(STAGE_PASS[stage], np.encodeCompact);
           break;
         case GpuStage.Islands:
-          solver!.bindStep(mirror, np.outputs(this.broadState!));
+          {
+            const io = np.outputs(this.broadState!);
+            io.lastSolverCount = this.lastResult === null ? -1 : this.lastResult.solverCount;
+            solver!.bindStep(mirror, io);
+          }
           pass(STAGE_PASS[stage], solver!.encodeIslands);
           break;
         case GpuStage.IntegrateVelocities:

@@ -305,11 +305,13 @@ export const SV = {
 export const SV_STATE_WORDS = 40;
 
 /**
- * Body slots up to which one workgroup runs the colouring rounds, the warm start and the velocity
- * and position iterations of a step, each in one dispatch (the solver's fused passes): for a small
- * world, hundreds of nearly empty per-colour dispatches cost more than the parallelism they buy.
+ * Solver items (contacts and joints) up to which one workgroup runs the colouring rounds, the warm
+ * start and the velocity and position iterations of a step, each in one dispatch (the solver's
+ * fused passes): for a small world, hundreds of nearly empty per-colour dispatches cost more than
+ * the parallelism they buy. Set where the two cost the same device time on an H100
+ * (bench/results/gpu-small-world.md).
  */
-export const FUSED_SOLVER_BODIES = 2048;
+export const FUSED_SOLVER_ITEMS = 6144;
 
 /** Colours of the graph colouring; colour COLOUR_CAP is the overflow set. */
 export const COLOUR_CAP = 24;

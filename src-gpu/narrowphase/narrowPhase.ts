@@ -218,6 +218,7 @@ export class GpuNarrowPhase {
       contactRefs: placeholder,
       manifolds: placeholder,
       contactCapacity: 0,
+      lastSolverCount: -1,
     };
   }
 

@@ -32,7 +32,7 @@
  * contacts in a colour's passes are solved in parallel: a colour's items share no dynamic body.
  * Results are the same bits on every run on one device (no float atomics; the colouring depends
  * only on the joints and contacts; the overflow set is solved in item order).
- * A small world (FUSED_SOLVER_BODIES) runs the colouring rounds, the warm start and the velocity
+ * A small world (FUSED_SOLVER_ITEMS) runs the colouring rounds, the warm start and the velocity
  * and position iterations each in one dispatch of one workgroup that walks the colours with
  * barriers: the same items in the same order as the per-colour passes, so the same bits, in four
  * dispatches instead of about 350. 2.2.1 solves an
@@ -66,7 +66,7 @@ import { IslandsStage } from './islands';
 import { TimeOfImpactStage } from './timeOfImpact';
 import type { TimeOfImpactInputs } from './timeOfImpact';
 import type { IslandInputs } from './islands';
-import { COLOUR_CAP, CONSTRAINT_VEC4, FUSED_SOLVER_BODIES, ISLAND_WORDS, SV, SV_INDIRECT_WORDS, SV_STATE_WORDS, USAGE } from '../device/layout';
+import { COLOUR_CAP, CONSTRAINT_VEC4, FUSED_SOLVER_ITEMS, ISLAND_WORDS, SV, SV_INDIRECT_WORDS, SV_STATE_WORDS, USAGE } from '../device/layout';
 import type { GpuWorld } from '../world/world';
 
 /** The label of the read-backs for tests and tools (readBuffer). */
@@ -93,13 +93,16 @@ export interface SolverInputs {
   manifolds: GPUBuffer;
   /** Contacts the narrow phase's buffers hold (a bound on the solver contacts). */
   contactCapacity: number;
+  /** Solver contacts of the latest step whose counts are back; -1 before the first. */
+  lastSolverCount: number;
 }
 
 export interface GpuSolverOptions {
   /**
    * One workgroup runs the colouring rounds, the warm start and the velocity and position
    * iterations, each in one dispatch (the same bits as the per-colour passes). Default: when the
-   * world has at most FUSED_SOLVER_BODIES body slots.
+   * solver's items (the latest known solver contacts, or 3 per body slot before any is known, and
+   * the joint slots) are at most FUSED_SOLVER_ITEMS.
    */
   fused?: boolean;
 }
@@ -130,6 +133,7 @@ export class GpuSolver {
   readonly indirect: GPUBuffer;
   private readonly params: Uniform;
   private readonly fusedOption: boolean | undefined;
+  private lastSolverCount = -1;
   /** ColourParams per colour / round: colour c, serial for the overflow set. */
   private readonly colourParams: Uniform[] = [];
   private readonly contactBodiesArray: GpuArray;
@@ -290,6 +294,7 @@ export class GpuSolver {
     s.manifolds = io.manifolds;
     s.solverList = io.solverList;
     s.contactCapacity = io.contactCapacity;
+    this.lastSolverCount = io.lastSolverCount;
     this.toiIo.npState = io.npState;
     this.toiIo.contactRefs = io.contactRefs;
   }
@@ -317,9 +322,15 @@ export class GpuSolver {
     this.joints.encodePrepare(rec, this.params.buffer, this.mirror!);
   };
 
-  /** Whether the step being recorded runs the fused passes (GpuSolverOptions.fused). */
+  /**
+   * Whether the step being recorded runs the fused passes (GpuSolverOptions.fused). Both ways give
+   * the same bits, so the choice may follow counts read back a few steps late.
+   */
   get fused(): boolean {
-    return this.fusedOption ?? this.mirror!.bodySlotCount <= FUSED_SOLVER_BODIES;
+    if (this.fusedOption !== undefined) return this.fusedOption;
+    const mirror = this.mirror!;
+    const contacts = this.lastSolverCount >= 0 ? this.lastSolverCount : 3 * mirror.bodySlotCount;
+    return contacts + mirror.jointSlotCount <= FUSED_SOLVER_ITEMS;
   }
 
   /** GpuStage.Colour. */

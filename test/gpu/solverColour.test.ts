@@ -25,7 +25,7 @@ import type { b2DistanceJoint } from '../../src/dynamics/joints/b2DistanceJoint'
 import { b2GearJointDef } from '../../src/dynamics/joints/b2GearJoint';
 import { b2RevoluteJointDef } from '../../src/dynamics/joints/b2RevoluteJoint';
 import { b2World } from '../../src/dynamics/b2World';
-import { COLOUR_CAP } from '../../src-gpu/device/layout';
+import { COLOUR_CAP, FUSED_SOLVER_ITEMS } from '../../src-gpu/device/layout';
 import { GpuStepper } from '../../src-gpu/stepper';
 import { describeGpu } from './support';
 
@@ -436,6 +436,10 @@ describeGpu('GPU solver: graph colouring', (ctx) => {
     expect(second.state).toEqual(first.state);
   }, 600_000);
 
+  // The rounds (2 COLOUR_CAP + 1), warm start (COLOUR_CAP + 1), velocity (8 (COLOUR_CAP + 1)) and
+  // position (3 (COLOUR_CAP + 2)) passes become four dispatches.
+  const FUSED_SAVES = 2 * COLOUR_CAP + 1 + 9 * (COLOUR_CAP + 1) + 3 * (COLOUR_CAP + 2) - 4;
+
   it('solves a small world in one dispatch per solver pass (fused) to the bits of the per-colour passes: contacts, joints, the overflow set, the early exit', async () => {
     const scenes: [string, () => b2World][] = [
       ['pyramid', () => pyramid(10)],
@@ -450,13 +454,34 @@ describeGpu('GPU solver: graph colouring', (ctx) => {
       expect(Array.from(fused.colouring.keys), label).toEqual(Array.from(passes.colouring.keys));
       expect(fused.state, label).toEqual(passes.state);
       expect(fused.positionIterations, label).toEqual(passes.positionIterations);
-      // The rounds (2 COLOUR_CAP + 1), warm start (COLOUR_CAP + 1), velocity (8 (COLOUR_CAP + 1)) and
-      // position (3 (COLOUR_CAP + 2)) passes become four dispatches.
-      expect(passes.dispatches - fused.dispatches, label).toBe(2 * COLOUR_CAP + 1 + 9 * (COLOUR_CAP + 1) + 3 * (COLOUR_CAP + 2) - 4);
+      expect(passes.dispatches - fused.dispatches, label).toBe(FUSED_SAVES);
     }
-    // Sizes up to FUSED_SOLVER_BODIES take the fused passes unless told otherwise.
+    // Unless told otherwise, up to FUSED_SOLVER_ITEMS contacts and joints take the fused passes:
+    // before any count is back, 3 contacts a body are assumed.
     const byDefault = await colouringAfter(ctx, () => pyramid(10), 1);
     const fused = await colouringAfter(ctx, () => pyramid(10), 1, true);
     expect(byDefault.dispatches).toBe(fused.dispatches);
+    const apart = (): b2World => {
+      const world = new b2World(new b2Vec2(0, -10));
+      const circle = new b2CircleShape();
+      circle.m_radius = 0.25;
+      const bodies = Math.ceil(FUSED_SOLVER_ITEMS / 3) + 1;
+      for (let i = 0; i < bodies; ++i) {
+        const def = new b2BodyDef();
+        def.type = b2_dynamicBody;
+        def.position.Set(i % 64, Math.floor(i / 64));
+        world.CreateBody(def).CreateFixture(circle, 1);
+      }
+      return world;
+    };
+    const twoSteps = async (fusedOption?: boolean): Promise<number[]> => {
+      const stepper = new GpuStepper(ctx, apart(), { solver: { fused: fusedOption } });
+      const out = [(await stepper.step(DT, 8, 3)).dispatches, (await stepper.step(DT, 8, 3)).dispatches];
+      stepper.destroy();
+      return out;
+    };
+    const [first, second] = await twoSteps();
+    expect(first, 'per-colour passes first').toBe((await twoSteps(false))[0]);
+    expect(second, 'fused once no contact is known to touch').toBe((await twoSteps(true))[1]);
   }, 600_000);
 });
