@@ -9,7 +9,11 @@
  * - `webphysics/gpu` in Node, which finds Dawn (the `webgpu` package) when it is installed;
  * - esbuild, Vite, webpack and Rollup bundle a page of both entries with no options beyond the
  *   entry and the output, and the bundled page steps a world on JavaScript and then on WebGPU in
- *   headless Chromium (SwiftShader), without console errors.
+ *   headless Chromium (SwiftShader), without console errors;
+ * - the README's first programs, as a reader copies them: the ES module (the ```js block after
+ *   `<!-- readme-program: esm -->`) run by Node in the app, and the classic-script page (the ```html
+ *   block after `<!-- readme-program: script -->`) loading the installed dist/box2d.js in headless
+ *   Chromium. Each prints what the comment on its console.log line says it prints.
  */
 
 import { execFileSync } from 'node:child_process';
@@ -316,4 +320,84 @@ describe('bundlers and the browser', () => {
       }
     });
   }
+});
+
+/** The first fenced block of `language` right after the line `<!-- readme-program: name -->` in the README. */
+function readmeProgram(name: string, language: string): string {
+  const lines = readFileSync(path.join(repoRoot, 'README.md'), 'utf8').split('\n');
+  for (let i = 0; i + 1 < lines.length; i++) {
+    if (lines[i].trim() !== `<!-- readme-program: ${name} -->` || lines[i + 1].trim() !== `\`\`\`${language}`) continue;
+    const end = lines.findIndex((line, j) => j > i + 1 && line.trim() === '```');
+    if (end < 0) throw new Error(`README.md: the ${language} block after <!-- readme-program: ${name} --> is not closed`);
+    return lines.slice(i + 2, end).join('\n') + '\n';
+  }
+  throw new Error(`README.md has no \`\`\`${language} block right after a line <!-- readme-program: ${name} -->`);
+}
+
+/**
+ * What the program says it prints: the numbers that open the comment on its console.log line
+ * (`console.log(p.x.toFixed(2), ...); // 0.00 1.01 0.00, as ...` -> ['0.00', '1.01', '0.00']).
+ */
+function statedOutput(program: string): string[] {
+  const line = program.split('\n').find((l) => /console\.log\(/.test(l) && /\/\/\s*-?\d/.test(l));
+  if (line === undefined) throw new Error('the program has no console.log line whose comment says what it prints');
+  return line
+    .slice(line.lastIndexOf('//') + 2)
+    .match(/^(\s*-?\d+(\.\d+)?,?)+/)![0]
+    .match(/-?\d+(\.\d+)?/g)!;
+}
+
+/** The last numbers of a printed line, as many as `stated` has. */
+function lastNumbers(line: string, stated: string[]): string[] {
+  return (line.match(/-?\d+(\.\d+)?/g) ?? []).slice(-stated.length);
+}
+
+describe("the README's first programs, against the installed package", () => {
+  it('the ES module (node hello.mjs) prints what the README says', () => {
+    const program = readmeProgram('esm', 'js');
+    expect(program).toMatch(/from 'webphysics'/);
+    const stated = statedOutput(program);
+    writeFileSync(path.join(app, 'readme-hello.mjs'), program);
+    const printed = execFileSync(process.execPath, ['readme-hello.mjs'], { cwd: app, encoding: 'utf8' }).trim().split('\n');
+    expect(printed.length).toBeGreaterThan(0);
+    expect(lastNumbers(printed[printed.length - 1], stated)).toEqual(stated);
+  });
+
+  it('the classic-script page (Box2DWeb style) runs on the installed dist/box2d.js in Chromium and logs what the README says', async () => {
+    const program = readmeProgram('script', 'html');
+    const stated = statedOutput(program);
+    // The page's script src names the package's classic bundle; served from the app, it is the installed file.
+    let bundles = 0;
+    const html = program.replace(/(<script\s+src=")([^"]*)(")/g, (whole, open: string, src: string, close: string) => {
+      const file = /(?:^|\/)(box2d(?:\.min)?\.js)$/.exec(src)?.[1];
+      if (file === undefined) return whole;
+      bundles++;
+      return `${open}/node_modules/webphysics/dist/${file}${close}`;
+    });
+    expect(bundles).toBe(1);
+    expect(existsSync(path.join(app, 'node_modules/webphysics/dist/box2d.js'))).toBe(true);
+    writeFileSync(path.join(app, 'readme-script.html'), html);
+    // The browser's request for /favicon.ico, which the page does not name, answered (not a 404 to count as an error).
+    writeFileSync(path.join(app, 'favicon.ico'), '');
+    const chromium = await launchChromium();
+    const server = await startServer({ root: app, port: 0 });
+    try {
+      const tab = await chromium.browser.newPage();
+      const errors = collectErrors(tab);
+      const logged: string[] = [];
+      tab.on('console', (message) => {
+        if (message.type() === 'log') logged.push(message.text());
+      });
+      await tab.goto(new URL('readme-script.html', server.url).href, { waitUntil: 'load' });
+      const deadline = Date.now() + 30_000;
+      while (logged.length === 0 && errors.length === 0 && Date.now() < deadline) await new Promise((resolve) => setTimeout(resolve, 50));
+      expect(errors).toEqual([]);
+      expect(logged.length).toBeGreaterThan(0);
+      expect(lastNumbers(logged[0], stated)).toEqual(stated);
+      await tab.close();
+    } finally {
+      await server.close();
+      await chromium.close();
+    }
+  }, 60_000);
 });
