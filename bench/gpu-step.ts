@@ -72,7 +72,7 @@ import { AutoBackend } from '../src-gpu/backend/auto';
 import type { AutoCalibration } from '../src-gpu/backend/calibration';
 import type { GpuSolverOptions } from '../src-gpu/solver/solver';
 import { b2EdgeShape } from '../src/collision/shapes/b2EdgeShape';
-import { box, circle, crossover, deviceName, fmt, logLogChart, median, rng, settleHeap, sizeText } from './gpu-support';
+import { GcTally, box, circle, crossover, deviceName, fmt, logLogChart, median, rng, settleHeap, sizeText } from './gpu-support';
 import type { Crossover } from './gpu-support';
 
 const DT = 1 / 60;
@@ -291,8 +291,11 @@ interface WorldApiRow {
   syncEach: { wallMs: number; stepMs: number; syncMs: number };
   /** Four Steps, then await Synchronize: wall per step. */
   syncEvery4Ms: number;
-  /** Step, await Synchronize, await readTransforms of every body. */
+  /** Step, await Synchronize, await readTransforms of every body: median and slowest step. */
   syncAndBulkMs: number;
+  syncAndBulkMaxMs: number;
+  /** Garbage collections during those steps (with the bulk-only steps between them): per step. */
+  syncAndBulkGc: { count: number; ms: number };
   /** Step, await readTransforms of every body (no Synchronize). */
   bulkMs: number;
   /** Of the bulk read, the host's share: from the map resolving to the Float32Array filled. */
@@ -339,6 +342,8 @@ async function runWorldApi(ctx: GpuContext, world: b2World, steps: number): Prom
     const syncAndBulk: number[] = [];
     const bulk: number[] = [];
     const bulkCopy: number[] = [];
+    const gc = new GcTally();
+    gc.start();
     for (let i = 0; i < steps; ++i) {
       const t0 = performance.now();
       step();
@@ -351,6 +356,7 @@ async function runWorldApi(ctx: GpuContext, world: b2World, steps: number): Prom
       bulk.push(performance.now() - t1);
       bulkCopy.push(backend.readStats!.unpackMs);
     }
+    const gcSeen = gc.stop();
     const pullAll: number[] = [];
     for (let i = 0; i < Math.max(1, Math.round(steps / 2)); ++i) {
       step();
@@ -365,6 +371,8 @@ async function runWorldApi(ctx: GpuContext, world: b2World, steps: number): Prom
       syncEach: { wallMs: median(wall), stepMs: median(stepCall), syncMs: median(sync) },
       syncEvery4Ms: median(every4),
       syncAndBulkMs: median(syncAndBulk),
+      syncAndBulkMaxMs: Math.max(...syncAndBulk),
+      syncAndBulkGc: { count: gcSeen.count / steps, ms: gcSeen.ms / steps },
       bulkMs: median(bulk),
       bulkCopyMs: median(bulkCopy),
     };
@@ -431,19 +439,19 @@ function markdown(rows: Row[], crossovers: Crossover[], meta: Record<string, unk
     '',
     '## The world API (WebGPUBackend), per step (ms)',
     '',
-    '| scene | bodies | build the world (µs a body) | SetBackend | Step + Synchronize | of which Step | of which Synchronize | Synchronize every 4 steps | Step + Synchronize + bulk read | Step + bulk read | of which the host copy | Step + Synchronize / GpuStepper awaited | fetch every body and proxy |',
-    '| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |',
+    '| scene | bodies | build the world (µs a body) | SetBackend | Step + Synchronize | of which Step | of which Synchronize | Synchronize every 4 steps | Step + Synchronize + bulk read | slowest of those | GCs a step (ms) | Step + bulk read | of which the host copy | Step + Synchronize / GpuStepper awaited | fetch every body and proxy |',
+    '| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |',
   );
   for (const r of rows) {
     const a = r.api;
     if (a === null) {
-      lines.push(`| ${r.scene} | ${r.bodies} | ${fmt((1000 * r.buildMs) / r.bodies)} | failed: ${r.apiError ?? '–'} | | | | | | | | | |`);
+      lines.push(`| ${r.scene} | ${r.bodies} | ${fmt((1000 * r.buildMs) / r.bodies)} | failed: ${r.apiError ?? '–'} | | | | | | | | | | | |`);
       continue;
     }
     const ratio = r.gpu ? fmt(a.syncEach.wallMs / r.gpu.wallMs) : '–';
     lines.push(
       `| ${r.scene} | ${r.bodies} | ${fmt((1000 * r.buildMs) / r.bodies)} | ${fmt(a.attachMs)} | ${fmt(a.syncEach.wallMs)} | ${fmt(a.syncEach.stepMs)} | ${fmt(a.syncEach.syncMs)} | ` +
-        `${fmt(a.syncEvery4Ms)} | ${fmt(a.syncAndBulkMs)} | ${fmt(a.bulkMs)} | ${fmt(a.bulkCopyMs)} | ${ratio} | ${fmt(a.pullAllMs)} |`,
+        `${fmt(a.syncEvery4Ms)} | ${fmt(a.syncAndBulkMs)} | ${fmt(a.syncAndBulkMaxMs)} | ${a.syncAndBulkGc.count.toFixed(1)} (${fmt(a.syncAndBulkGc.ms)}) | ${fmt(a.bulkMs)} | ${fmt(a.bulkCopyMs)} | ${ratio} | ${fmt(a.pullAllMs)} |`,
     );
   }
   lines.push('', '## Host time of an awaited GPU step (ms)', '', '| scene | bodies | setup (new GpuStepper) | mirror sync and other | record | submit call | wait | not awaited: record + submit | not awaited: wait for room | not-awaited steps truncated |', '| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |');
@@ -473,7 +481,8 @@ function markdown(rows: Row[], crossovers: Crossover[], meta: Record<string, unk
     'World API: the same scene built again (build: b2World objects, µs a body) and attached with SetBackend (pipelines',
     'already compiled); then world.Step and await world.Synchronize() (the bodies fetch their state when read: none is',
     'read here), every step and every 4 steps, and with the bulk read of every transform (backend.readTransforms into',
-    'a Float32Array: packed on the GPU, then one copy on the host, whose time is shown);',
+    'a Float32Array: packed on the GPU, then one copy on the host, whose time is shown; the slowest of those steps, and',
+    'the garbage collections a step while they and the bulk-only steps between them ran, with their total ms);',
     'last, world.PullState() after a synchronisation: every body fetched and the broad-phase proxies moved, as a query',
     'does, and as every synchronisation did before bodies fetched their state when read.',
   );

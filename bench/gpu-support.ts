@@ -240,3 +240,27 @@ export function syntheticWorld(bodies: SyntheticBody[]): b2World {
   }
   return { m_bodyList: head, m_jointList: null, m_contactManager: { m_contactFilter: null, m_contactList: null }, SetChangeListener: () => {} } as unknown as b2World;
 }
+
+/** Node's garbage collections ('gc' performance entries) between start() and stop(): how many, and their total ms. */
+export class GcTally {
+  count = 0;
+  ms = 0;
+  private readonly observer = new PerformanceObserver((list) => this.add(list.getEntries()));
+
+  private add(entries: readonly PerformanceEntry[]): void {
+    for (const e of entries) {
+      this.count++;
+      this.ms += e.duration;
+    }
+  }
+
+  start(): void {
+    this.observer.observe({ entryTypes: ['gc'] });
+  }
+
+  stop(): { count: number; ms: number } {
+    this.add(this.observer.takeRecords());
+    this.observer.disconnect();
+    return { count: this.count, ms: this.ms };
+  }
+}
