@@ -44,7 +44,8 @@
  * Step call and the synchronisation timed apart), the same with a synchronisation every 4 steps,
  * with the bulk read of every transform after the synchronisation (backend.readTransforms), and
  * with the bulk read alone: what an application pays through the documented path.
- * Each world is built after a full collection and timed after another (with --expose-gc; meta's
+ * Before the first row, DEVICE_WARMUP_S seconds of untimed steps (an idle GPU runs its first
+ * steps at low clocks). Each world is built after a full collection and timed after another (with --expose-gc; meta's
  * heapSettled), so no phase pays for collecting the last one's world.
  * JS: the same world built again, WARMUP steps, then world.Step timed per step, `--steps` steps or
  * until `--js-budget` seconds have passed, for sizes up to `--js-max`. Times are medians.
@@ -81,6 +82,8 @@ const POSITION_ITERATIONS = 3;
 /** Steps before timing: the first creates every contact, the next ones grow the GPU buffers. */
 const WARMUP = 3;
 const GPU_WARMUP = 10;
+/** Seconds of untimed steps before the first row: an idle GPU runs its first steps at low clocks. */
+const DEVICE_WARMUP_S = 2;
 /** Steps not awaited before the stream is timed: four fill the read-back ring, three more settle. */
 const STREAM_WARMUP = 7;
 const SCENES = ['pyramids', 'rain'];
@@ -295,7 +298,7 @@ interface WorldApiRow {
   syncAndBulkMs: number;
   syncAndBulkMaxMs: number;
   /** Garbage collections during those steps (with the bulk-only steps between them): per step. */
-  syncAndBulkGc: { count: number; ms: number };
+  syncAndBulkGc: { count: number; major: number; ms: number };
   /** Step, await readTransforms of every body (no Synchronize). */
   bulkMs: number;
   /** Of the bulk read, the host's share: from the map resolving to the Float32Array filled. */
@@ -372,7 +375,7 @@ async function runWorldApi(ctx: GpuContext, world: b2World, steps: number): Prom
       syncEvery4Ms: median(every4),
       syncAndBulkMs: median(syncAndBulk),
       syncAndBulkMaxMs: Math.max(...syncAndBulk),
-      syncAndBulkGc: { count: gcSeen.count / steps, ms: gcSeen.ms / steps },
+      syncAndBulkGc: { count: gcSeen.count / steps, major: gcSeen.major / steps, ms: gcSeen.ms / steps },
       bulkMs: median(bulk),
       bulkCopyMs: median(bulkCopy),
     };
@@ -439,7 +442,7 @@ function markdown(rows: Row[], crossovers: Crossover[], meta: Record<string, unk
     '',
     '## The world API (WebGPUBackend), per step (ms)',
     '',
-    '| scene | bodies | build the world (µs a body) | SetBackend | Step + Synchronize | of which Step | of which Synchronize | Synchronize every 4 steps | Step + Synchronize + bulk read | slowest of those | GCs a step (ms) | Step + bulk read | of which the host copy | Step + Synchronize / GpuStepper awaited | fetch every body and proxy |',
+    '| scene | bodies | build the world (µs a body) | SetBackend | Step + Synchronize | of which Step | of which Synchronize | Synchronize every 4 steps | Step + Synchronize + bulk read | slowest of those | GCs a step, major (ms) | Step + bulk read | of which the host copy | Step + Synchronize / GpuStepper awaited | fetch every body and proxy |',
     '| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |',
   );
   for (const r of rows) {
@@ -451,7 +454,7 @@ function markdown(rows: Row[], crossovers: Crossover[], meta: Record<string, unk
     const ratio = r.gpu ? fmt(a.syncEach.wallMs / r.gpu.wallMs) : '–';
     lines.push(
       `| ${r.scene} | ${r.bodies} | ${fmt((1000 * r.buildMs) / r.bodies)} | ${fmt(a.attachMs)} | ${fmt(a.syncEach.wallMs)} | ${fmt(a.syncEach.stepMs)} | ${fmt(a.syncEach.syncMs)} | ` +
-        `${fmt(a.syncEvery4Ms)} | ${fmt(a.syncAndBulkMs)} | ${fmt(a.syncAndBulkMaxMs)} | ${a.syncAndBulkGc.count.toFixed(1)} (${fmt(a.syncAndBulkGc.ms)}) | ${fmt(a.bulkMs)} | ${fmt(a.bulkCopyMs)} | ${ratio} | ${fmt(a.pullAllMs)} |`,
+        `${fmt(a.syncEvery4Ms)} | ${fmt(a.syncAndBulkMs)} | ${fmt(a.syncAndBulkMaxMs)} | ${a.syncAndBulkGc.count.toFixed(1)}, ${a.syncAndBulkGc.major.toFixed(1)} (${fmt(a.syncAndBulkGc.ms)}) | ${fmt(a.bulkMs)} | ${fmt(a.bulkCopyMs)} | ${ratio} | ${fmt(a.pullAllMs)} |`,
     );
   }
   lines.push('', '## Host time of an awaited GPU step (ms)', '', '| scene | bodies | setup (new GpuStepper) | mirror sync and other | record | submit call | wait | not awaited: record + submit | not awaited: wait for room | not-awaited steps truncated |', '| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |');
@@ -482,7 +485,7 @@ function markdown(rows: Row[], crossovers: Crossover[], meta: Record<string, unk
     'already compiled); then world.Step and await world.Synchronize() (the bodies fetch their state when read: none is',
     'read here), every step and every 4 steps, and with the bulk read of every transform (backend.readTransforms into',
     'a Float32Array: packed on the GPU, then one copy on the host, whose time is shown; the slowest of those steps, and',
-    'the garbage collections a step while they and the bulk-only steps between them ran, with their total ms);',
+    'the garbage collections a step while they and the bulk-only steps between them ran, the major (mark-compact) ones, and their ms);',
     'last, world.PullState() after a synchronisation: every body fetched and the broad-phase proxies moved, as a query',
     'does, and as every synchronisation did before bodies fetched their state when read.',
   );
@@ -565,6 +568,12 @@ async function main(): Promise<number> {
   const deviceLine = deviceName(a);
   console.error(`adapter: ${deviceLine}; timestamps: ${ctx.timestamps}`);
   const rows: Row[] = [];
+  {
+    const stepper = new GpuStepper(ctx, pyramids(10_000), { solver: solverOptions });
+    const t0 = performance.now();
+    while (performance.now() - t0 < DEVICE_WARMUP_S * 1000) await stepper.step(DT, VELOCITY_ITERATIONS, POSITION_ITERATIONS);
+    stepper.destroy();
+  }
   const started = performance.now();
   for (const n of sizes) {
     for (const scene of scenes) {

@@ -23,7 +23,7 @@ export class Kernel {
   readonly ctx: GpuContext;
   readonly label: string;
   readonly pipeline: GPUComputePipeline;
-  private readonly cache = new Map<string, GPUBindGroup>();
+  private readonly cache = new Map<number, CachedGroup[]>();
 
   constructor(ctx: GpuContext, shader: ShaderName, entryPoint: string) {
     this.ctx = ctx;
@@ -44,25 +44,66 @@ export class Kernel {
     this.pipeline = pipeline;
   }
 
-  /** The bind group (group 0) with these buffers at these bindings; cached. */
+  /**
+   * The bind group (group 0) with these buffers at these bindings; cached by a hash of the
+   * bindings and buffer ids, the entries compared on a hit, so a step that binds what it bound
+   * before allocates nothing here.
+   */
   bind(entries: Record<number, BindingEntry>): GPUBindGroup {
-    let key = '';
-    const list: GPUBindGroupEntry[] = [];
-    for (const k of Object.keys(entries)) {
-      const binding = Number(k);
-      const e = entries[binding];
-      const resource: GPUBufferBinding = isBufferBinding(e) ? e : { buffer: e };
-      key += `${binding}:${bufferId(resource.buffer)}:${resource.offset ?? 0}:${resource.size ?? -1};`;
-      list.push({ binding, resource });
+    let hash = 0;
+    for (const k in entries) {
+      const e = entries[k];
+      const buffer = isBufferBinding(e) ? e.buffer : e;
+      const offset = isBufferBinding(e) ? (e.offset ?? 0) : 0;
+      hash = (Math.imul(hash ^ (+k << 24) ^ bufferId(buffer), 0x9e3779b1) + offset) | 0;
     }
-    let group = this.cache.get(key);
-    if (!group) {
+    let bucket = this.cache.get(hash);
+    if (bucket !== undefined) {
+      for (const cached of bucket) if (sameEntries(cached, entries)) return cached.group;
+    } else {
       if (this.cache.size > 256) this.cache.clear();
-      group = this.ctx.device.createBindGroup({ label: this.label, layout: this.pipeline.getBindGroupLayout(0), entries: list });
-      this.cache.set(key, group);
+      bucket = [];
+      this.cache.set(hash, bucket);
     }
+    const list: GPUBindGroupEntry[] = [];
+    const kept: Record<number, BindingEntry> = {};
+    let size = 0;
+    for (const k in entries) {
+      const e = entries[k];
+      kept[k] = isBufferBinding(e) ? { ...e } : e;
+      size++;
+      list.push({ binding: +k, resource: isBufferBinding(e) ? e : { buffer: e } });
+    }
+    const group = this.ctx.device.createBindGroup({ label: this.label, layout: this.pipeline.getBindGroupLayout(0), entries: list });
+    bucket.push({ entries: kept, size, group });
     return group;
   }
+}
+
+interface CachedGroup {
+  entries: Record<number, BindingEntry>;
+  /** Bindings in `entries`. */
+  size: number;
+  group: GPUBindGroup;
+}
+
+/** Whether `b` names the cached group's buffers, offsets and sizes at the same bindings. */
+function sameEntries(cached: CachedGroup, b: Record<number, BindingEntry>): boolean {
+  const a = cached.entries;
+  let count = 0;
+  for (const k in b) {
+    const x = a[k as unknown as number];
+    const y = b[k];
+    if (x === undefined) return false;
+    if (isBufferBinding(x) || isBufferBinding(y)) {
+      if (!isBufferBinding(x) || !isBufferBinding(y)) return false;
+      if (x.buffer !== y.buffer || (x.offset ?? 0) !== (y.offset ?? 0) || (x.size ?? -1) !== (y.size ?? -1)) return false;
+    } else if (x !== y) {
+      return false;
+    }
+    count++;
+  }
+  return count === cached.size;
 }
 
 /** A compute pass being recorded. */
