@@ -14,7 +14,7 @@ import type { b2Body } from '../../src/dynamics/b2Body';
 import type { b2Fixture } from '../../src/dynamics/b2Fixture';
 
 /** `array`, or a copy of it with its length doubled until `index` fits (new elements `fill`). */
-export function withRoom<T extends Int32Array | Uint32Array>(array: T, index: number, fill = 0): T {
+export function withRoom<T extends Int32Array | Uint32Array | Float64Array>(array: T, index: number, fill = 0): T {
   if (index < array.length) return array;
   let size = array.length;
   while (size <= index) size *= 2;

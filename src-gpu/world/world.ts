@@ -195,7 +195,7 @@ export class GpuWorld {
   /** Proxy slots; items[slot] is the owning fixture slot (proxies are found by fixture slot). */
   private readonly proxySlots = new SlotAllocator<number>();
   private readonly proxyFixture: (b2Fixture | null)[] = [];
-  private readonly proxyChild: number[] = [];
+  private proxyChild = new Int32Array(64);
   /** Generation of each proxy slot (proxyKey.y). */
   private proxyGeneration = new Uint32Array(64);
   /**
@@ -215,11 +215,14 @@ export class GpuWorld {
   private forcedCount = 0;
   private fixtureWalkCount = 0;
   private readonly pool = new PoolAllocator();
-  private fixturePoolOffset: number[] = [];
-  private fixturePoolSize: number[] = [];
-  /** Per fixture slot: the shape record's type | ghost flags << 4 | count << 8, and the radius. */
-  private fixtureShapeWord: number[] = [];
-  private fixtureRadius: number[] = [];
+  /**
+   * Per fixture slot: the shape's place in the pool (size 0: not packed since the slot was taken
+   * or the pool compacted), the shape record's type | ghost flags << 4 | count << 8, and the radius.
+   */
+  private fixturePoolOffset = new Int32Array(64);
+  private fixturePoolSize = new Int32Array(64);
+  private fixtureShapeWord = new Int32Array(64);
+  private fixtureRadius = new Float64Array(64);
   private readonly staleShapes = new Set<b2Fixture>();
   private generation = 0;
   private jointCount: Int32Array = new Int32Array(64);
@@ -455,6 +458,14 @@ export class GpuWorld {
       [this.shapePool, ...perBody, ...perFixture, ...perProxy],
       [shapes, ...perBody.map(() => bodies), ...perFixture.map(() => fixtures), ...perProxy.map(() => proxies)],
     );
+    if (fixtures > 0) this.fixtureRoom(fixtures - 1);
+    if (proxies > 0) {
+      this.proxyChild = withRoom(this.proxyChild, proxies - 1);
+      this.proxyGeneration = withRoom(this.proxyGeneration, proxies - 1);
+    }
+    this.fixtureProxy0 = withRoom(this.fixtureProxy0, fixtures, -1);
+    this.walkSlots = withRoom(this.walkSlots, bodies);
+    this.fixtureWalk = withRoom(this.fixtureWalk, fixtures);
   }
 
   /** Calls `visit` for every body the API changed since the last sync (the change log: applied forces included). */
@@ -691,14 +702,12 @@ export class GpuWorld {
 
   private compactPool(): void {
     this.pool.reset();
-    this.fixturePoolSize = [];
-    this.fixturePoolOffset = [];
-    this.fixtureShapeWord = [];
-    this.fixtureRadius = [];
+    this.fixturePoolSize.fill(0);
   }
 
   private packFixture(slot: number, f: b2Fixture, bodySlot: number, created: boolean): void {
-    if (created || this.fixturePoolSize[slot] === undefined || (this.staleShapes.size > 0 && this.staleShapes.delete(f))) {
+    this.fixtureRoom(slot);
+    if (created || this.fixturePoolSize[slot] === 0 || (this.staleShapes.size > 0 && this.staleShapes.delete(f))) {
       this.packShape(slot, f);
     }
     const sensor = f.m_isSensor ? SHAPE_SENSOR << 4 : 0;
@@ -710,6 +719,15 @@ export class GpuWorld {
     this.fixtureShape.commit(slot);
 
     this.fixtureMaterial.commitF4(slot, f.m_friction, f.m_restitution, f.m_density, 0);
+  }
+
+  /** Room in the per-fixture arrays for fixture slot `slot` (reserveFor makes it for a whole world at once). */
+  private fixtureRoom(slot: number): void {
+    if (slot < this.fixturePoolSize.length) return;
+    this.fixturePoolOffset = withRoom(this.fixturePoolOffset, slot);
+    this.fixturePoolSize = withRoom(this.fixturePoolSize, slot);
+    this.fixtureShapeWord = withRoom(this.fixtureShapeWord, slot);
+    this.fixtureRadius = withRoom(this.fixtureRadius, slot);
   }
 
   /** The shape's data into the pool; its record's type, ghost flags and count into fixtureShapeWord. */
@@ -820,6 +838,7 @@ export class GpuWorld {
       }
       proxies.mark(slot, gen);
       this.proxyFixture[slot] = f;
+      this.proxyChild = withRoom(this.proxyChild, slot);
       this.proxyChild[slot] = child;
       this.proxyRef.commitWords(slot, fixtureSlot, child, bodySlot, word);
       this.proxyFilter.commitWords(slot, filterWord, group);
