@@ -288,8 +288,9 @@ async function runGpu(ctx: GpuContext, world: b2World, steps: number): Promise<G
  * Step + Synchronize + the bulk read of every transform, and Step + the bulk read alone.
  */
 interface WorldApiRow {
-  /** world.SetBackend(backend) (the pipelines are compiled already). */
+  /** world.SetBackend(backend) (the pipelines are compiled already), and the garbage collections in it. */
   attachMs: number;
+  attachGc: { count: number; major: number; ms: number };
   /** Step then await Synchronize, each step: wall, the Step call, and the Synchronize. */
   syncEach: { wallMs: number; stepMs: number; syncMs: number };
   /** Four Steps, then await Synchronize: wall per step. */
@@ -312,9 +313,12 @@ interface WorldApiRow {
 
 async function runWorldApi(ctx: GpuContext, world: b2World, steps: number): Promise<WorldApiRow> {
   const backend = await WebGPUBackend.create({ context: ctx, stepper: { solver: solverOptions } });
+  const attachTally = new GcTally();
+  attachTally.start();
   const a0 = performance.now();
   await world.SetBackend(backend);
   const attachMs = performance.now() - a0;
+  const attachGc = attachTally.stop();
   try {
     const out = new Float32Array(4 * backend.stepper!.mirror.bodySlotCount);
     const step = () => world.Step(DT, VELOCITY_ITERATIONS, POSITION_ITERATIONS);
@@ -370,6 +374,7 @@ async function runWorldApi(ctx: GpuContext, world: b2World, steps: number): Prom
     }
     return {
       attachMs,
+      attachGc,
       pullAllMs: median(pullAll),
       syncEach: { wallMs: median(wall), stepMs: median(stepCall), syncMs: median(sync) },
       syncEvery4Ms: median(every4),
@@ -419,7 +424,7 @@ function markdown(rows: Row[], crossovers: Crossover[], meta: Record<string, unk
   const lines = [
     '# Full step on the GPU (broad phase + narrow phase + solver) vs the JavaScript engine',
     '',
-    `Device: ${meta.device}; timestamps: ${meta.timestamps}; Dawn validation ${meta.skipValidation ? 'off' : 'on'}. Node ${meta.node}. ${meta.date}. ${meta.heapSettled ? 'Full garbage collection before each world is built and before it is timed.' : 'Run without --expose-gc: a phase may pay for collecting the previous one\'s world.'}`,
+    `Device: ${meta.device}; timestamps: ${meta.timestamps}; Dawn validation ${meta.skipValidation ? 'off' : 'on'}. Node ${meta.node}. ${meta.date}. ${meta.heapSettled ? 'Full garbage collection before each world is built and before it is timed.' : "Run without --expose-gc: a phase may pay for collecting the previous one's world."}`,
     `1/60 s, ${VELOCITY_ITERATIONS} velocity / ${POSITION_ITERATIONS} position iterations, sleeping and continuous physics off`,
     `in both (resting pyramids would fall asleep and cost nothing: this measures the full step's work). ${GPU_WARMUP} warm-up steps on the GPU, ${WARMUP} in JS, then medians of ${meta.steps} steps`,
     `(JS: at most ${meta.steps} steps or ${meta.jsBudget} s). Milliseconds per step. Solver passes: ${meta.fused === undefined ? 'fused up to FUSED_SOLVER_ITEMS contacts and joints' : meta.fused ? 'fused at every size (--fused on)' : 'per colour at every size (--fused off)'}.`,
@@ -442,29 +447,44 @@ function markdown(rows: Row[], crossovers: Crossover[], meta: Record<string, unk
     '',
     '## The world API (WebGPUBackend), per step (ms)',
     '',
-    '| scene | bodies | build the world (µs a body) | SetBackend | Step + Synchronize | of which Step | of which Synchronize | Synchronize every 4 steps | Step + Synchronize + bulk read | slowest of those | GCs a step, major (ms) | Step + bulk read | of which the host copy | Step + Synchronize / GpuStepper awaited | fetch every body and proxy |',
-    '| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |',
+    '| scene | bodies | build the world (µs a body) | SetBackend | of which GC (major) | Step + Synchronize | of which Step | of which Synchronize | Synchronize every 4 steps | Step + Synchronize + bulk read | slowest of those | GCs a step, major (ms) | Step + bulk read | of which the host copy | Step + Synchronize / GpuStepper awaited | fetch every body and proxy |',
+    '| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |',
   );
   for (const r of rows) {
     const a = r.api;
     if (a === null) {
-      lines.push(`| ${r.scene} | ${r.bodies} | ${fmt((1000 * r.buildMs) / r.bodies)} | failed: ${r.apiError ?? '–'} | | | | | | | | | | | |`);
+      lines.push(`| ${r.scene} | ${r.bodies} | ${fmt((1000 * r.buildMs) / r.bodies)} | failed: ${r.apiError ?? '–'} | | | | | | | | | | | | |`);
       continue;
     }
     const ratio = r.gpu ? fmt(a.syncEach.wallMs / r.gpu.wallMs) : '–';
     lines.push(
-      `| ${r.scene} | ${r.bodies} | ${fmt((1000 * r.buildMs) / r.bodies)} | ${fmt(a.attachMs)} | ${fmt(a.syncEach.wallMs)} | ${fmt(a.syncEach.stepMs)} | ${fmt(a.syncEach.syncMs)} | ` +
+      `| ${r.scene} | ${r.bodies} | ${fmt((1000 * r.buildMs) / r.bodies)} | ${fmt(a.attachMs)} | ${fmt(a.attachGc.ms)} (${a.attachGc.major}) | ${fmt(a.syncEach.wallMs)} | ${fmt(a.syncEach.stepMs)} | ${fmt(a.syncEach.syncMs)} | ` +
         `${fmt(a.syncEvery4Ms)} | ${fmt(a.syncAndBulkMs)} | ${fmt(a.syncAndBulkMaxMs)} | ${a.syncAndBulkGc.count.toFixed(1)}, ${a.syncAndBulkGc.major.toFixed(1)} (${fmt(a.syncAndBulkGc.ms)}) | ${fmt(a.bulkMs)} | ${fmt(a.bulkCopyMs)} | ${ratio} | ${fmt(a.pullAllMs)} |`,
     );
   }
-  lines.push('', '## Host time of an awaited GPU step (ms)', '', '| scene | bodies | setup (new GpuStepper) | mirror sync and other | record | submit call | wait | not awaited: record + submit | not awaited: wait for room | not-awaited steps truncated |', '| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |');
+  lines.push(
+    '',
+    '## Host time of an awaited GPU step (ms)',
+    '',
+    '| scene | bodies | setup (new GpuStepper) | mirror sync and other | record | submit call | wait | not awaited: record + submit | not awaited: wait for room | not-awaited steps truncated |',
+    '| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |',
+  );
   for (const r of rows) {
     const g = r.gpu;
-    if (g) lines.push(`| ${r.scene} | ${r.bodies} | ${fmt(g.setupMs)} | ${fmt(g.hostMs.sync)} | ${fmt(g.hostMs.record)} | ${fmt(g.hostMs.submit)} | ${fmt(g.hostMs.wait)} | ${fmt(g.deferredHostMs.record)} | ${fmt(g.deferredHostMs.wait)} | ${g.truncatedSteps} |`);
+    if (g)
+      lines.push(
+        `| ${r.scene} | ${r.bodies} | ${fmt(g.setupMs)} | ${fmt(g.hostMs.sync)} | ${fmt(g.hostMs.record)} | ${fmt(g.hostMs.submit)} | ${fmt(g.hostMs.wait)} | ${fmt(g.deferredHostMs.record)} | ${fmt(g.deferredHostMs.wait)} | ${g.truncatedSteps} |`,
+      );
   }
   const solverPasses = [...new Set(rows.flatMap((r) => Object.keys(r.gpu?.passesMs ?? {}).filter((name) => name.startsWith('solve'))))];
   if (solverPasses.length > 0) {
-    lines.push('', '## Solver device time per pass (ms)', '', `| scene | bodies | ${solverPasses.join(' | ')} |`, `| --- | ---: |${' ---: |'.repeat(solverPasses.length)}`);
+    lines.push(
+      '',
+      '## Solver device time per pass (ms)',
+      '',
+      `| scene | bodies | ${solverPasses.join(' | ')} |`,
+      `| --- | ---: |${' ---: |'.repeat(solverPasses.length)}`,
+    );
     for (const r of rows) {
       const g = r.gpu;
       if (g) lines.push(`| ${r.scene} | ${r.bodies} | ${solverPasses.map((name) => fmt(g.passesMs[name])).join(' | ')} |`);
@@ -472,17 +492,17 @@ function markdown(rows: Row[], crossovers: Crossover[], meta: Record<string, unk
   }
   lines.push(
     '',
-    'bodies: dynamic bodies, plus one static ground. contacts: the GPU\'s contacts (broad-phase pairs) and, in',
+    "bodies: dynamic bodies, plus one static ground. contacts: the GPU's contacts (broad-phase pairs) and, in",
     'parentheses, the touching ones the solver takes. GPU wall: GpuStepper.step() from call to resolved promise',
     '(mirror sync, recording, submit, wait for the read-back). GPU not awaited: steps submitted with { wait: false }',
-    '(up to four in flight), total wall time / steps. GPU device: timestamp span of the step\'s passes; broad /',
+    "(up to four in flight), total wall time / steps. GPU device: timestamp span of the step's passes; broad /",
     'narrow / solve: sums of their passes. JS: b2World.Step. JS/GPU: throughput ratio (above 1: the GPU is faster).',
     'Host table: setup is new GpuStepper() (the first row\'s includes compiling the pipelines); "mirror sync and',
     'other" is the wall time of step() outside the narrow phase\'s recording, submit and wait, mostly GpuWorld.sync().',
     'Not awaited: per step, host time recording and submitting, and waiting for a free read-back buffer (four in',
     'flight: the wait is the GPU finishing the oldest step; near the not-awaited time per step, the GPU is the limit).',
     'World API: the same scene built again (build: b2World objects, µs a body) and attached with SetBackend (pipelines',
-    'already compiled); then world.Step and await world.Synchronize() (the bodies fetch their state when read: none is',
+    'already compiled; the time of the garbage collections in it, and how many were major); then world.Step and await world.Synchronize() (the bodies fetch their state when read: none is',
     'read here), every step and every 4 steps, and with the bulk read of every transform (backend.readTransforms into',
     'a Float32Array: packed on the GPU, then one copy on the host, whose time is shown; the slowest of those steps, and',
     'the garbage collections a step while they and the bulk-only steps between them ran, the major (mark-compact) ones, and their ms);',
@@ -628,7 +648,9 @@ async function main(): Promise<number> {
   if (values.auto === true) {
     settleHeap();
     calibration = await runCalibration(ctx);
-    console.error(`AutoBackend: ${calibration.crossover ? `${calibration.crossover.crossoverBodies} bodies (${calibration.crossover.source})` : 'not measured'}; ${calibration.choice}; ${fmt(calibration.ms)} ms`);
+    console.error(
+      `AutoBackend: ${calibration.crossover ? `${calibration.crossover.crossoverBodies} bodies (${calibration.crossover.source})` : 'not measured'}; ${calibration.choice}; ${fmt(calibration.ms)} ms`,
+    );
   }
   const meta = {
     fused: solverOptions.fused,
