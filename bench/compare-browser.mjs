@@ -62,7 +62,8 @@ try {
       }
       // A pane too slow for the budget: its median so far, if it stepped at all.
       const demo = await page.evaluate(() => window.webphysicsDemo);
-      for (const pane of demo.panes) if (result[pane.backend] === null && pane.steps > 0) result[pane.backend] = { ms: pane.stepMs, steps: pane.steps, partial: true };
+      for (const pane of demo.panes)
+        if (result[pane.backend] === null && pane.steps > 0) result[pane.backend] = { ms: pane.stepMs, steps: pane.steps, partial: true };
       rows.push(result);
       const cell = (r) => (r === null ? '–' : `${r.ms.toFixed(1)} ms (${r.steps} steps${r.partial ? ', budget ran out' : ''})`);
       console.error(`${scene.padEnd(10)} ${String(bodies).padStart(7)}  js ${cell(result.js)}, webgpu ${cell(result.webgpu)}`);
@@ -75,7 +76,15 @@ try {
   rmSync(dir, { recursive: true, force: true });
 }
 
-const meta = { browser: version, adapter, cpu: `${cpus()[0]?.model ?? 'unknown'} (${cpus().length} threads)`, date: new Date().toISOString(), steps, warmup, budget };
+const meta = {
+  browser: version,
+  adapter,
+  cpu: `${cpus()[0]?.model ?? 'unknown'} (${cpus().length} threads)`,
+  date: new Date().toISOString(),
+  steps,
+  warmup,
+  budget,
+};
 const fmt = (r) => (r === null ? '–' : `${r.ms < 10 ? r.ms.toFixed(2) : r.ms.toFixed(0)}${r.partial ? '*' : ''}`);
 const lines = [
   '# The comparison page in headless Chromium, WebGPU on SwiftShader',

@@ -74,7 +74,14 @@ export async function measureFeatures(b2, options = {}) {
     options.log?.(row === null ? `${id}: its data is missing` : `${id}: ${row.configs.map((c) => `${c.id} ${c.ms.toFixed(3)} ms`).join(', ')}`);
   }
   const cpus = os.cpus();
-  return { date: new Date().toISOString(), quick, steps, settle, machine: { cpus: cpus.length, cpuModel: cpus[0]?.model ?? 'unknown', node: process.version }, rows };
+  return {
+    date: new Date().toISOString(),
+    quick,
+    steps,
+    settle,
+    machine: { cpus: cpus.length, cpuModel: cpus[0]?.model ?? 'unknown', node: process.version },
+    rows,
+  };
 }
 
 const fmt = (v) => (v >= 10 ? v.toFixed(1) : v >= 1 ? v.toFixed(2) : v.toFixed(3));
@@ -99,7 +106,13 @@ export function featuresMarkdown(run) {
 
 async function main() {
   const { values } = parseArgs({
-    options: { scenes: { type: 'string' }, steps: { type: 'string' }, quick: { type: 'boolean', default: false }, out: { type: 'string' }, ours: { type: 'string' } },
+    options: {
+      scenes: { type: 'string' },
+      steps: { type: 'string' },
+      quick: { type: 'boolean', default: false },
+      out: { type: 'string' },
+      ours: { type: 'string' },
+    },
   });
   let bundle = values.ours;
   if (!bundle) {

@@ -84,7 +84,7 @@ function makeScenario(name: string, n: number): Scenario {
       shapes.push(c);
     } else {
       const p = new b2PolygonShape();
-      p.SetAsBox(h, h * (0.6 + 0.4 * ((k * 5) % 7) / 6));
+      p.SetAsBox(h, h * (0.6 + (0.4 * ((k * 5) % 7)) / 6));
       shapes.push(p);
     }
   }
@@ -146,7 +146,6 @@ function scenarioBodies(s: Scenario): SyntheticBody[] {
   }
   return bodies;
 }
-
 
 const MOVE_WGSL = `
 struct Params { count: u32, dt: f32, half: f32, cellSize: f32 }
@@ -420,8 +419,8 @@ function markdown(rows: Row[], meta: Record<string, unknown>): string {
     'is dispatch overhead); GPU wall: GpuBroadPhase.update() from call to resolved promise (encode, submit,',
     `wait, 64-byte read-back; an empty submit round trip is ${fmt(rows.find((r) => r.gpu)?.gpu?.roundTripMs)} ms). JS tree: b2BroadPhase MoveProxy for`,
     'every body + UpdatePairs; "moved" is the share of proxies that left their fat AABB and were re-queried.',
-    'GPU wall, no validation: the same on a second device created with skipValidation (Dawn\'s skip_validation',
-    'toggle): Dawn\'s validation of each recorded command is most of the host time on the H100.',
+    "GPU wall, no validation: the same on a second device created with skipValidation (Dawn's skip_validation",
+    "toggle): Dawn's validation of each recorded command is most of the host time on the H100.",
     'check: the GPU pair count equals a CPU sweep over the same AABBs.',
   );
   return lines.join('\n') + '\n';
@@ -478,13 +477,24 @@ async function main(): Promise<number> {
       const row: Row = { scenario: name, proxies: scenario.n, gpu, unvalidated, js };
       rows.push(row);
       console.error(
-        `${name.padEnd(9)} ${String(scenario.n).padStart(8)}  pairs ${String(gpu.pairs).padStart(8)}  gpu ${fmt(gpu.deviceMs)} ms (${Object.entries(gpu.stagesMs)
+        `${name.padEnd(9)} ${String(scenario.n).padStart(8)}  pairs ${String(gpu.pairs).padStart(8)}  gpu ${fmt(gpu.deviceMs)} ms (${Object.entries(
+          gpu.stagesMs,
+        )
           .map(([k, v]) => `${k} ${fmt(v)}`)
-          .join(', ')}; empty ${fmt(gpu.overheadMs)})  wall ${fmt(gpu.wallMs)} ms (no validation ${fmt(unvalidated.wallMs)})  js ${fmt(js?.ms)} ms  check ${gpu.checked}`,
+          .join(
+            ', ',
+          )}; empty ${fmt(gpu.overheadMs)})  wall ${fmt(gpu.wallMs)} ms (no validation ${fmt(unvalidated.wallMs)})  js ${fmt(js?.ms)} ms  check ${gpu.checked}`,
       );
     }
   }
-  const meta = { device: deviceLine, adapter: a, node: process.version, date: new Date().toISOString(), steps, limits: { maxStorageBufferBindingSize: ctx.limits.maxStorageBufferBindingSize } };
+  const meta = {
+    device: deviceLine,
+    adapter: a,
+    node: process.version,
+    date: new Date().toISOString(),
+    steps,
+    limits: { maxStorageBufferBindingSize: ctx.limits.maxStorageBufferBindingSize },
+  };
   mkdirSync(outDir, { recursive: true });
   writeFileSync(path.join(outDir, 'gpu-broadphase.json'), JSON.stringify({ meta, rows }, null, 2) + '\n');
   writeFileSync(path.join(outDir, 'gpu-broadphase.md'), markdown(rows, meta));

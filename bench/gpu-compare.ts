@@ -95,10 +95,10 @@ const ratio = (js: Timing | null, gpu: Timing | null) => (js && gpu ? fmt(js.ms 
 
 function markdown(rows: Row[], crossovers: Crossover[], meta: Record<string, unknown>): string {
   const lines = [
-    '# The comparison page\'s panes on a real GPU: JavaScript engine vs WebGPU backend through the world API',
+    "# The comparison page's panes on a real GPU: JavaScript engine vs WebGPU backend through the world API",
     '',
     `GPU: ${meta.device}. CPU: ${meta.cpu}. Node ${meta.node}. ${meta.date}.`,
-    'The page\'s scenes and stepping code (demos/compare), seed 1, sleeping off, 1/60 s, 8 velocity / 3 position iterations.',
+    "The page's scenes and stepping code (demos/compare), seed 1, sleeping off, 1/60 s, 8 velocity / 3 position iterations.",
     `JS: b2World.Step, median of up to ${meta.steps} steps (${meta.jsBudget} s budget) after ${JS_WARMUP} (or ${JS_WARMUP_SECONDS} s); WebGPU: world.Step +`,
     `backend.readTransforms (every body's transform, one map), median of ${meta.steps} steps after ${GPU_WARMUP}, with Dawn's`,
     'validation on (as in a browser) and off. Milliseconds per step; JS/GPU above 1: the GPU pane is faster.',
@@ -151,7 +151,9 @@ async function main(): Promise<number> {
     },
   });
   if (values.help) {
-    process.stdout.write('node dist/bench-gpu-compare.mjs [--scenes pyramids,rain,joint-grid,tumbler] [--sizes 100,...] [--steps 15] [--js-budget 2] [--quick] [--out DIR]\n');
+    process.stdout.write(
+      'node dist/bench-gpu-compare.mjs [--scenes pyramids,rain,joint-grid,tumbler] [--sizes 100,...] [--steps 15] [--js-budget 2] [--quick] [--out DIR]\n',
+    );
     return 0;
   }
   const quick = values.quick === true;
@@ -167,7 +169,15 @@ async function main(): Promise<number> {
   const a = validated.adapterInfo;
   const device = deviceName(a);
   console.error(`adapter: ${device}`);
-  const meta = { device, adapter: a, cpu: `${cpus()[0]?.model ?? 'unknown'} (${cpus().length} threads)`, node: process.version, date: new Date().toISOString(), steps, jsBudget };
+  const meta = {
+    device,
+    adapter: a,
+    cpu: `${cpus()[0]?.model ?? 'unknown'} (${cpus().length} threads)`,
+    node: process.version,
+    date: new Date().toISOString(),
+    steps,
+    jsBudget,
+  };
   const rows: Row[] = [];
   const started = performance.now();
   for (const scene of scenes) {

@@ -55,7 +55,6 @@ import type { SyntheticBody } from './gpu-support';
 
 const DT = 1 / 60;
 
-
 function hexagon(r: number): b2PolygonShape {
   const s = new b2PolygonShape();
   const v: b2Vec2[] = [];
@@ -126,7 +125,6 @@ function makeBodies(mix: string, contacts: number): SyntheticBody[] {
   }
   return bodies;
 }
-
 
 // Moves and turns every dynamic body (static ones have zero velocity): p += v dt, q *= rot(w dt),
 // velocities reversed every 60 steps so the grid keeps its shape.
@@ -434,7 +432,9 @@ function markdown(rows: Row[], meta: Record<string, unknown>): string {
   lines.push(`| mix | contacts | ${bins.join(' | ')} |`);
   lines.push(`| --- | ---: | ${bins.map(() => '---:').join(' | ')} |`);
   for (const r of rows) {
-    lines.push(`| ${r.mix} | ${r.contacts} | ${bins.map((b, i) => (r.bins[i] ? `${fmt(r.stagesMs[`collide ${b}`])} (${r.bins[i]})` : `${fmt(r.stagesMs[`collide ${b}`])} (0)`)).join(' | ')} |`);
+    lines.push(
+      `| ${r.mix} | ${r.contacts} | ${bins.map((b, i) => (r.bins[i] ? `${fmt(r.stagesMs[`collide ${b}`])} (${r.bins[i]})` : `${fmt(r.stagesMs[`collide ${b}`])} (0)`)).join(' | ')} |`,
+    );
   }
   lines.push('', '## Host time of a step', '');
   lines.push(
@@ -466,7 +466,7 @@ function markdown(rows: Row[], meta: Record<string, unknown>): string {
     'scans and the solver and event lists. empty dispatches: device time of as many empty dispatches as the',
     'step records (dispatch overhead). record: building the command buffer (JS and Dawn); wait: from the submit',
     'call returning to the read-back resolving; not awaited: steps submitted with { wait: false }, up to four',
-    'in flight, total wall time / steps. check: GPU touching flags against the engine (float64) at the GPU\'s',
+    "in flight, total wall time / steps. check: GPU touching flags against the engine (float64) at the GPU's",
     'transforms.',
   );
   return lines.join('\n') + '\n';
@@ -526,7 +526,13 @@ async function main(): Promise<number> {
       const row = await runMix(ctx, mix, size, steps, checkMax);
       for (const v of variantCtx) {
         const other = await runMix(v.ctx, mix, size, steps, checkMax, true);
-        row.variants[v.name] = { record: other.host.encode, submit: other.host.submit, wall: other.host.wall, deferred: other.deferredWallMs, device: other.deviceMs };
+        row.variants[v.name] = {
+          record: other.host.encode,
+          submit: other.host.submit,
+          wall: other.host.wall,
+          deferred: other.deferredWallMs,
+          device: other.deviceMs,
+        };
       }
       rows.push(row);
       console.error(

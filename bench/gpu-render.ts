@@ -155,7 +155,8 @@ async function main(): Promise<number> {
   const scenes = (values.scenes ?? SCENES.join(',')).split(',') as SceneName[];
   for (const scene of scenes) if (!SCENES.includes(scene)) throw new Error(`--scenes: unknown scene ${scene} (${SCENES.join(', ')})`);
   const sizes = (values.sizes ?? (quick ? '1e3' : '1e4,1e5,1e6')).split(',').map(Number);
-  for (const n of sizes) if (!Number.isInteger(n) || n < 100 || n > MAX_BODIES) throw new Error(`--sizes: each must be an integer from 100 to ${MAX_BODIES}; got ${n}`);
+  for (const n of sizes)
+    if (!Number.isInteger(n) || n < 100 || n > MAX_BODIES) throw new Error(`--sizes: each must be an integer from 100 to ${MAX_BODIES}; got ${n}`);
   const frames = Math.max(1, Number(values.frames ?? (quick ? 3 : 20)));
   const outDir = values.out ?? process.env.OUT ?? path.resolve('bench/results');
 
@@ -163,7 +164,14 @@ async function main(): Promise<number> {
   const a = ctx.adapterInfo;
   const device = deviceName(a);
   console.error(`adapter: ${device}`);
-  const meta = { device, adapter: a, cpu: `${cpus()[0]?.model ?? 'unknown'} (${cpus().length} threads)`, node: process.version, date: new Date().toISOString(), frames };
+  const meta = {
+    device,
+    adapter: a,
+    cpu: `${cpus()[0]?.model ?? 'unknown'} (${cpus().length} threads)`,
+    node: process.version,
+    date: new Date().toISOString(),
+    frames,
+  };
   const rows: Row[] = [];
   const started = performance.now();
   for (const bodies of sizes) {

@@ -78,7 +78,10 @@ export interface Crossover {
 
 /** 12000 -> '1.2e4'. */
 export function sizeText(n: number): string {
-  return n.toExponential(2).replace(/\.?0+e/, 'e').replace('e+', 'e');
+  return n
+    .toExponential(2)
+    .replace(/\.?0+e/, 'e')
+    .replace('e+', 'e');
 }
 
 /** The crossover of one scene from its sizes measured on both (milliseconds per step). */
@@ -148,11 +151,15 @@ export function logLogChart<R>(rows: R[], chart: LogLogChart<R>): string {
   ];
   for (let e = y0; e <= y1; ++e) {
     const y = py(10 ** e);
-    out.push(`<line x1="${m.l}" x2="${W - m.r}" y1="${y}" y2="${y}" stroke="#ddd"/><text x="${m.l - 8}" y="${y + 4}" text-anchor="end">${10 ** e >= 1 ? 10 ** e : (10 ** e).toPrecision(1)} ms</text>`);
+    out.push(
+      `<line x1="${m.l}" x2="${W - m.r}" y1="${y}" y2="${y}" stroke="#ddd"/><text x="${m.l - 8}" y="${y + 4}" text-anchor="end">${10 ** e >= 1 ? 10 ** e : (10 ** e).toPrecision(1)} ms</text>`,
+    );
   }
   for (const v of [...new Set(xs)]) {
     const x = px(v);
-    out.push(`<line x1="${x}" x2="${x}" y1="${m.t}" y2="${H - m.b}" stroke="#eee"/><text x="${x}" y="${H - m.b + 18}" text-anchor="middle">${chart.xText(v)}</text>`);
+    out.push(
+      `<line x1="${x}" x2="${x}" y1="${m.t}" y2="${H - m.b}" stroke="#eee"/><text x="${x}" y="${H - m.b + 18}" text-anchor="middle">${chart.xText(v)}</text>`,
+    );
   }
   out.push(`<text x="${(m.l + W - m.r) / 2}" y="${H - 12}" text-anchor="middle">${chart.xLabel}</text>`);
   let legend = 0;
@@ -165,7 +172,9 @@ export function logLogChart<R>(rows: R[], chart: LogLogChart<R>): string {
       if (pts.length === 0) continue;
       const colour = chart.colours[group] ?? '#555';
       const dash = s.dash ? `stroke-dasharray="${s.dash}"` : '';
-      out.push(`<polyline fill="none" stroke="${colour}" stroke-width="2" ${dash} points="${pts.map(([x, y]) => `${px(x).toFixed(1)},${py(y).toFixed(1)}`).join(' ')}"/>`);
+      out.push(
+        `<polyline fill="none" stroke="${colour}" stroke-width="2" ${dash} points="${pts.map(([x, y]) => `${px(x).toFixed(1)},${py(y).toFixed(1)}`).join(' ')}"/>`,
+      );
       for (const [x, y] of pts) out.push(`<circle cx="${px(x).toFixed(1)}" cy="${py(y).toFixed(1)}" r="2.5" fill="${colour}"/>`);
       const ly = m.t + 16 * legend++;
       out.push(
@@ -239,7 +248,12 @@ export function syntheticWorld(bodies: SyntheticBody[]): b2World {
     body.m_fixtureList = next;
     head = body;
   }
-  return { m_bodyList: head, m_jointList: null, m_contactManager: { m_contactFilter: null, m_contactList: null }, SetChangeListener: () => {} } as unknown as b2World;
+  return {
+    m_bodyList: head,
+    m_jointList: null,
+    m_contactManager: { m_contactFilter: null, m_contactList: null },
+    SetChangeListener: () => {},
+  } as unknown as b2World;
 }
 
 /**

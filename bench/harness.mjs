@@ -57,7 +57,12 @@ export const RESULTS_SCHEMA = 'webphysics-bench/1';
 
 const list = (v, all, what) => {
   if (v === undefined || v === null || v === 'all') return [...all];
-  const ids = Array.isArray(v) ? v : String(v).split(',').map((s) => s.trim()).filter(Boolean);
+  const ids = Array.isArray(v)
+    ? v
+    : String(v)
+        .split(',')
+        .map((s) => s.trim())
+        .filter(Boolean);
   for (const id of ids) if (!all.includes(id)) throw new Error(`unknown ${what} "${id}" (known: ${all.join(', ')})`);
   return ids;
 };
@@ -85,8 +90,8 @@ export function resolveOptions(opts = {}) {
     write: opts.write ?? (quick ? Boolean(opts.outDir) : true),
     outDir: opts.outDir ?? path.join(repoRoot, 'bench', 'results'),
     charts: opts.charts ?? true,
-    log: opts.log === undefined ? (s) => process.stderr.write(s + '\n') : opts.log ?? (() => {}),
-    print: opts.print === undefined ? (s) => process.stdout.write(s + '\n') : opts.print ?? (() => {}),
+    log: opts.log === undefined ? (s) => process.stderr.write(s + '\n') : (opts.log ?? (() => {})),
+    print: opts.print === undefined ? (s) => process.stdout.write(s + '\n') : (opts.print ?? (() => {})),
   };
 }
 
@@ -278,7 +283,14 @@ export async function runBench(options = {}) {
       engines.push({ e, api, error: null });
       o.log(`loaded ${e.name} ${e.version ?? ''} in ${(performance.now() - t).toFixed(0)} ms`);
     } catch (err) {
-      engines.push({ e, api: null, error: String(err?.stack ?? err).split('\n').slice(0, 3).join(' | ') });
+      engines.push({
+        e,
+        api: null,
+        error: String(err?.stack ?? err)
+          .split('\n')
+          .slice(0, 3)
+          .join(' | '),
+      });
       o.log(`could not load ${e.name}: ${err?.message ?? err}`);
     }
   }
@@ -367,7 +379,12 @@ export async function runBench(options = {}) {
           try {
             const { samples, extra } = runRound(e, api, scene, sleep, protocol, last);
             row.samples.push(...samples);
-            row.roundMedians.push(quantile([...samples].sort((a, b) => a - b), 0.5));
+            row.roundMedians.push(
+              quantile(
+                [...samples].sort((a, b) => a - b),
+                0.5,
+              ),
+            );
             if (extra) row.extra = extra;
           } catch (err) {
             row.status = 'error';
@@ -420,7 +437,10 @@ export async function runBench(options = {}) {
 
   if (o.write) {
     mkdirSync(o.outDir, { recursive: true });
-    const stamp = started.toISOString().replace(/[:]/g, '-').replace(/\.\d+Z$/, 'Z');
+    const stamp = started
+      .toISOString()
+      .replace(/[:]/g, '-')
+      .replace(/\.\d+Z$/, 'Z');
     const name = `${stamp}${o.quick ? '-quick' : ''}.json`;
     const json = JSON.stringify(out, null, 1);
     writeFileSync(path.join(o.outDir, name), json);

@@ -72,7 +72,9 @@ export function nativeSceneText(scene, steps) {
   for (const j of scene.joints) {
     if (j.kind !== 'revolute') throw new Error(`joint kind "${j.kind}" has no native record`);
     const m = j.motor;
-    lines.push(`revolute ${j.a} ${j.b} ${j.ax} ${j.ay} ${j.bx} ${j.by} ${j.refAngle} ${num(j.collideConnected)} ${num(m)} ${m ? m.speed : 0} ${m ? m.maxTorque : 0}`);
+    lines.push(
+      `revolute ${j.a} ${j.b} ${j.ax} ${j.ay} ${j.bx} ${j.by} ${j.refAngle} ${num(j.collideConnected)} ${num(m)} ${m ? m.speed : 0} ${m ? m.maxTorque : 0}`,
+    );
   }
   for (let s = 1; scene.spawn && s <= steps; s++) {
     const more = scene.spawn(s);

@@ -59,7 +59,12 @@ export function resolveProcessesOptions(opts = {}) {
   const scene = opts.scene ?? 'bench2d';
   if (!SCENE_IDS.includes(scene)) throw new Error(`unknown scene "${scene}" (known: ${SCENE_IDS.join(', ')})`);
   const list = opts.engines ?? [OURS, 'box2d-wasm'];
-  const engines = Array.isArray(list) ? list : String(list).split(',').map((s) => s.trim()).filter(Boolean);
+  const engines = Array.isArray(list)
+    ? list
+    : String(list)
+        .split(',')
+        .map((s) => s.trim())
+        .filter(Boolean);
   if (engines.length === 0) throw new Error('engines must name at least one engine');
   for (const id of engines) if (!NATIVE_ENGINES[id]) engineById(id);
   if (engines.includes(BASELINE) && !opts.baseline) throw new Error(`${BASELINE} needs --baseline FILE`);
@@ -77,7 +82,7 @@ export function resolveProcessesOptions(opts = {}) {
     ours: opts.ours ?? null,
     baseline: opts.baseline ?? null,
     box2d: opts.box2d ?? null,
-    log: opts.log === undefined ? (s) => process.stderr.write(s + '\n') : opts.log ?? (() => {}),
+    log: opts.log === undefined ? (s) => process.stderr.write(s + '\n') : (opts.log ?? (() => {})),
   };
 }
 
@@ -127,7 +132,12 @@ export async function runProcesses(options = {}) {
       engines: o.engines.map((id, i) => ({
         id,
         name: NATIVE_ENGINES[id]?.name ?? engineById(id).name,
-        windowMs: o.windows.map((_, k) => quantile(runs[i].map((run) => run[k]).sort((a, b) => a - b), 0.5)),
+        windowMs: o.windows.map((_, k) =>
+          quantile(
+            runs[i].map((run) => run[k]).sort((a, b) => a - b),
+            0.5,
+          ),
+        ),
         runsMs: runs[i],
       })),
     };
@@ -171,7 +181,12 @@ async function child(args) {
     w.destroy();
     if (k > 0) kept.push(t);
   }
-  const medians = o.windows.map(([a, b]) => quantile(kept.flatMap((t) => t.slice(a, b)).sort((x, y) => x - y), 0.5));
+  const medians = o.windows.map(([a, b]) =>
+    quantile(
+      kept.flatMap((t) => t.slice(a, b)).sort((x, y) => x - y),
+      0.5,
+    ),
+  );
   process.stdout.write(`${JSON.stringify(medians)}\n`);
 }
 

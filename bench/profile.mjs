@@ -61,7 +61,9 @@ for (const [id, us] of hits) {
   self.set(key, (self.get(key) ?? 0) + us);
   total += us;
 }
-console.log(`${engine.name} on ${scene.title}, sleeping ${values.sleep ? 'on' : 'off'}: ${steps} steps in ${ms.toFixed(0)} ms (${(ms / steps).toFixed(2)} ms/step)`);
+console.log(
+  `${engine.name} on ${scene.title}, sleeping ${values.sleep ? 'on' : 'off'}: ${steps} steps in ${ms.toFixed(0)} ms (${(ms / steps).toFixed(2)} ms/step)`,
+);
 console.log(`top ${top} functions by self time:`);
 for (const [k, us] of [...self].sort((a, b) => b[1] - a[1]).slice(0, top)) {
   console.log(`${((100 * us) / total).toFixed(1).padStart(6)}%  ${(us / 1000 / steps).toFixed(3).padStart(7)} ms/step  ${k}`);

@@ -109,7 +109,10 @@ export function chartSvg(scene, run) {
   // Legend.
   sleeps.forEach((s, i) => {
     const lx = width - 220 + i * 105;
-    parts.push(`<rect x="${lx}" y="${top - 16}" width="12" height="10" fill="${colors[s]}"/>`, `<text x="${lx + 16}" y="${top - 7}">sleeping ${s ? 'on' : 'off'}</text>`);
+    parts.push(
+      `<rect x="${lx}" y="${top - 16}" width="12" height="10" fill="${colors[s]}"/>`,
+      `<text x="${lx + 16}" y="${top - 7}">sleeping ${s ? 'on' : 'off'}</text>`,
+    );
   });
   // Grid and axis.
   const plotBottom = top + ids.length * rowH;
@@ -175,7 +178,11 @@ export function markdownSummary(run, chartDir = 'bench/results') {
   );
   for (const s of run.scenes) {
     if (s.skipped) continue;
-    out.push('', `**${s.title}** — ${s.description}. ${s.protocol.rounds} x ${s.protocol.steps} timed steps after ${s.protocol.preroll}. ![${s.title}](${chartDir}/${s.id}.svg)`, '');
+    out.push(
+      '',
+      `**${s.title}** — ${s.description}. ${s.protocol.rounds} x ${s.protocol.steps} timed steps after ${s.protocol.preroll}. ![${s.title}](${chartDir}/${s.id}.svg)`,
+      '',
+    );
     out.push('| engine | sleep off: median (p95) | best round | x ours | sleep on: median (p95) | best round | x ours | alloc/step | check |');
     out.push('| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- |');
     const ids = [...new Set(s.results.map((r) => r.engine))];

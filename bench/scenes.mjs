@@ -429,10 +429,11 @@ export function sceneStepper(w, scene) {
 /** Body count including every body the scene spawns. */
 export function totalBodies(scene) {
   let n = scene.bodies.length;
-  if (scene.spawn) for (let s = 1; ; s++) {
-    const more = scene.spawn(s);
-    if (!more) break;
-    n += more.length;
-  }
+  if (scene.spawn)
+    for (let s = 1; ; s++) {
+      const more = scene.spawn(s);
+      if (!more) break;
+      n += more.length;
+    }
   return n;
 }

@@ -68,7 +68,12 @@ export function resolveSplitOptions(opts = {}) {
   const scene = opts.scene ?? 'bench2d';
   if (!SCENE_IDS.includes(scene)) throw new Error(`unknown scene "${scene}" (known: ${SCENE_IDS.join(', ')})`);
   const engines = opts.engines ?? [OURS, 'box2d-wasm'];
-  const engineIds = Array.isArray(engines) ? engines : String(engines).split(',').map((s) => s.trim()).filter(Boolean);
+  const engineIds = Array.isArray(engines)
+    ? engines
+    : String(engines)
+        .split(',')
+        .map((s) => s.trim())
+        .filter(Boolean);
   for (const id of engineIds) {
     if (!SPLIT_ENGINE_IDS.includes(id)) {
       throw new Error(`engine "${id}" has no Box2D 2.x iteration counts (engines: ${SPLIT_ENGINE_IDS.join(', ')})`);
@@ -90,7 +95,7 @@ export function resolveSplitOptions(opts = {}) {
     steps: opts.steps === undefined ? null : positiveInt('steps', opts.steps),
     quick: Boolean(opts.quick),
     ours: opts.ours ?? null,
-    log: opts.log === undefined ? (s) => process.stderr.write(s + '\n') : opts.log ?? (() => {}),
+    log: opts.log === undefined ? (s) => process.stderr.write(s + '\n') : (opts.log ?? (() => {})),
   };
 }
 
@@ -105,8 +110,7 @@ function timeWorld(engine, api, scene, vary, counts, preroll, steps) {
   const w = engine.create(api, scene, { sleep: false });
   const { step } = sceneStepper(w, scene);
   const n = counts.length;
-  const use = (count) =>
-    vary === 'velocity' ? w.setIterations(count, scene.positionIterations) : w.setIterations(scene.velocityIterations, count);
+  const use = (count) => (vary === 'velocity' ? w.setIterations(count, scene.positionIterations) : w.setIterations(scene.velocityIterations, count));
   for (let i = 0; i < preroll; i++) {
     use(counts[i % n]);
     step();
@@ -120,7 +124,12 @@ function timeWorld(engine, api, scene, vary, counts, preroll, steps) {
     times[k].push(performance.now() - t);
   }
   w.destroy();
-  return times.map((t) => quantile(t.sort((a, b) => a - b), 0.5));
+  return times.map((t) =>
+    quantile(
+      t.sort((a, b) => a - b),
+      0.5,
+    ),
+  );
 }
 
 /**
@@ -187,8 +196,7 @@ export function formatSplit(result) {
   const [first] = result.engines;
   const ratio = (a, b) => (b > 0 ? `${(a / b).toFixed(2)}x` : '-');
   const head = result.protocol.iterations.map((v) => `${v} it`.padStart(8)).join('');
-  const fixed =
-    result.vary === 'velocity' ? `${result.positionIterations} position iterations` : `${result.velocityIterations} velocity iterations`;
+  const fixed = result.vary === 'velocity' ? `${result.positionIterations} position iterations` : `${result.velocityIterations} velocity iterations`;
   const lines = [
     `${result.scene}, sleeping off, ${result.vary} iterations varied, ${fixed}; best-round median ms per step ` +
       `(${result.protocol.rounds} rounds, ${result.protocol.steps} steps after ${result.protocol.preroll}); ` +

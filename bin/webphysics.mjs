@@ -40,9 +40,7 @@ async function loadCli() {
   const built = path.join(packageRoot, 'dist/cli.mjs');
   if (existsSync(built)) return import(pathToFileURL(built).href);
   throw new Error(
-    existsSync(source)
-      ? 'cannot run from source without esbuild: run `npm ci` first (or `npm run build`)'
-      : 'dist/cli.mjs is missing: reinstall the package',
+    existsSync(source) ? 'cannot run from source without esbuild: run `npm ci` first (or `npm run build`)' : 'dist/cli.mjs is missing: reinstall the package',
   );
 }
 

@@ -10,14 +10,7 @@ import type { b2Body } from '../src/index';
 
 /** GetPosition().x, .y, GetAngle(), GetLinearVelocity().x, .y, GetAngularVelocity(). */
 export function bodyState(body: b2Body): number[] {
-  return [
-    body.m_xf.p.x,
-    body.m_xf.p.y,
-    body.m_sweep.a,
-    body.m_linearVelocity.x,
-    body.m_linearVelocity.y,
-    body.m_angularVelocity,
-  ];
+  return [body.m_xf.p.x, body.m_xf.p.y, body.m_sweep.a, body.m_linearVelocity.x, body.m_linearVelocity.y, body.m_angularVelocity];
 }
 
 const s_bytes = new DataView(new ArrayBuffer(8));

@@ -20,7 +20,6 @@ import { benchEntries } from './scenes/bench';
 import { JsonScene } from './scenes/json';
 import { g_testEntries } from './tests/index';
 
-
 const canvas = $<HTMLCanvasElement>('canvas');
 const gpuCanvas = $<HTMLCanvasElement>('gpu-canvas');
 const testList = $<HTMLSelectElement>('tests');

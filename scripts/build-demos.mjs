@@ -66,7 +66,21 @@ const kEntries = {
   brownian: path.join(repoRoot, 'demos', 'brownian', 'main.ts'),
   touch: path.join(repoRoot, 'demos', 'touch', 'main.ts'),
 };
-const kStatic = ['index.html', 'page.css', 'testbed.css', 'header.css', 'compare.html', 'compare.css', 'accuracy.html', 'accuracy.css', 'large.html', 'large.css', 'sand.html', 'brownian.html', 'touch.html'];
+const kStatic = [
+  'index.html',
+  'page.css',
+  'testbed.css',
+  'header.css',
+  'compare.html',
+  'compare.css',
+  'accuracy.html',
+  'accuracy.css',
+  'large.html',
+  'large.css',
+  'sand.html',
+  'brownian.html',
+  'touch.html',
+];
 /**
  * The accuracy studies the accuracy page draws (bench/accuracy/run.mjs writes them): this
  * machine's, and one on an H100 where the GPU's runs are timed.
@@ -106,10 +120,7 @@ export async function buildDemos(outDir = defaultOutDir, { watch = false } = {})
   }
   const ctx = await context({
     ...options(outDir),
-    plugins: [
-      ...options(outDir).plugins,
-      { name: 'copy-static', setup: (b) => b.onEnd(() => copyStatic(outDir)) },
-    ],
+    plugins: [...options(outDir).plugins, { name: 'copy-static', setup: (b) => b.onEnd(() => copyStatic(outDir)) }],
   });
   await ctx.watch();
   return ctx;

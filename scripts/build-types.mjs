@@ -54,7 +54,10 @@ for (const [from, to, gpu] of [
 }
 for (const file of written) {
   const text = readFileSync(file, 'utf8');
-  writeFileSync(file, text.replace(kRelativeSpecifier, (_, keyword, quote, specifier) => `${keyword}${quote}${explicitSpecifier(file, specifier)}${quote}`));
+  writeFileSync(
+    file,
+    text.replace(kRelativeSpecifier, (_, keyword, quote, specifier) => `${keyword}${quote}${explicitSpecifier(file, specifier)}${quote}`),
+  );
 }
 rmSync(scratch, { recursive: true, force: true });
 console.log(`wrote ${types}`);

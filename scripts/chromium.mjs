@@ -47,7 +47,8 @@ export function chromiumArgs({ webgpu = false } = {}) {
   // ANGLE and Vulkan both on SwiftShader, a page that draws into a WebGPU canvas loses its
   // queue's callbacks: mapAsync and onSubmittedWorkDone then fail with "A valid external
   // Instance reference no longer exists".
-  if (webgpu) args.push('--enable-unsafe-webgpu', '--enable-features=Vulkan', '--use-webgpu-adapter=swiftshader', '--use-angle=swiftshader', '--use-vulkan=swiftshader');
+  if (webgpu)
+    args.push('--enable-unsafe-webgpu', '--enable-features=Vulkan', '--use-webgpu-adapter=swiftshader', '--use-angle=swiftshader', '--use-vulkan=swiftshader');
   else args.push('--disable-gpu');
   return args;
 }

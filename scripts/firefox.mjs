@@ -3,11 +3,7 @@
 // (installed by `npm run setup`), else another usual location.
 import { existsSync } from 'node:fs';
 
-const kCandidates = [
-  '/usr/bin/firefox-esr',
-  '/usr/bin/firefox',
-  '/Applications/Firefox.app/Contents/MacOS/firefox',
-];
+const kCandidates = ['/usr/bin/firefox-esr', '/usr/bin/firefox', '/Applications/Firefox.app/Contents/MacOS/firefox'];
 
 /** The Firefox executable; throws, saying how to get one, when there is none. */
 export function firefoxPath() {

@@ -35,8 +35,7 @@ if (!isDebianLike) {
   process.exit(0);
 }
 
-const installed = (pkg) =>
-  spawnSync('dpkg-query', ['-W', '-f=${Status}', pkg], { encoding: 'utf8' }).stdout?.includes('install ok installed');
+const installed = (pkg) => spawnSync('dpkg-query', ['-W', '-f=${Status}', pkg], { encoding: 'utf8' }).stdout?.includes('install ok installed');
 const missing = systemPackages.filter((pkg) => !installed(pkg));
 if (missing.length === 0) {
   console.log(`System packages present: ${systemPackages.join(', ')}`);

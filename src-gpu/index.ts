@@ -30,15 +30,7 @@ export { GpuRenderer } from './render/render';
 export type { GpuCamera, GpuRendererOptions, GpuFrameStats } from './render/render';
 export { GpuPointQuery } from './query/pointQuery';
 export type { GpuPointHit } from './query/pointQuery';
-export {
-  requestGpu,
-  GpuContext,
-  GpuUnavailableError,
-  GpuDeviceLostError,
-  GpuOutOfMemoryError,
-  GpuCapacityError,
-  GpuError,
-} from './device/device';
+export { requestGpu, GpuContext, GpuUnavailableError, GpuDeviceLostError, GpuOutOfMemoryError, GpuCapacityError, GpuError } from './device/device';
 export type { GpuContextOptions, GpuAdapterSummary, GpuLossInfo } from './device/device';
 export { findSwiftShaderIcd, SWIFTSHADER_ICD_PATHS } from './device/node';
 export type { DawnModule, IcdSearchEnv } from './device/node';

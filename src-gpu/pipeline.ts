@@ -198,7 +198,8 @@ export class GpuPipeline {
           break;
         case GpuStage.TimeOfImpact:
           // Without bullets or static and kinematic bodies no contact is a candidate.
-          if (mirror.world.m_continuousPhysics && (mirror.census.bullets > 0 || mirror.census.nonDynamic > 0)) pass(STAGE_PASS[stage], solver!.encodeTimeOfImpact);
+          if (mirror.world.m_continuousPhysics && (mirror.census.bullets > 0 || mirror.census.nonDynamic > 0))
+            pass(STAGE_PASS[stage], solver!.encodeTimeOfImpact);
           break;
       }
     }
@@ -318,7 +319,8 @@ export class GpuPipeline {
     for (let i = 1; i < n; ++i) {
       const a0 = pairs[2 * i - 2];
       const b0 = pairs[2 * i - 1];
-      if (pairs[2 * i] < a0 || (pairs[2 * i] === a0 && pairs[2 * i + 1] <= b0)) throw new RangeError('collideGivenPairs: pairs must be sorted by (a, b) without duplicates');
+      if (pairs[2 * i] < a0 || (pairs[2 * i] === a0 && pairs[2 * i + 1] <= b0))
+        throw new RangeError('collideGivenPairs: pairs must be sorted by (a, b) without duplicates');
     }
     this.busy = true;
     try {
@@ -427,7 +429,15 @@ export class GpuPipeline {
     entry.settled = rb.read(this.ctx, TIMER_OFFSET + this.timer.bytes).then((bytes) => {
       const state = new Uint32Array(bytes, 0, STATE_WORDS).slice();
       const counts = new Uint32Array(bytes, NP_STATE_OFFSET, NP_STATE_WORDS);
-      const r = this.result(bp.resultOf(state, 0, dispatches, null), counts, 0, dispatches, null, { encode: t1 - t0, submit: t2 - t1, wait: performance.now() - t2 }, false);
+      const r = this.result(
+        bp.resultOf(state, 0, dispatches, null),
+        counts,
+        0,
+        dispatches,
+        null,
+        { encode: t1 - t0, submit: t2 - t1, wait: performance.now() - t2 },
+        false,
+      );
       r.contactCapacity = capacity;
       r.overflowed = r.overflowed || (state[STATE.OVERFLOW] & (OVERFLOW_PAIRS | OVERFLOW_ENTRIES)) !== 0;
       entry.state = state;

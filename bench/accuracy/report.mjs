@@ -46,7 +46,9 @@ export function labelOf(run, r) {
  * were not timed (the GPU on a software adapter) are left out.
  */
 export function paretoFront(results, measure) {
-  const points = results.filter((r) => r.msPerSecond !== null && Number.isFinite(r.measures[measure])).sort((a, b) => a.msPerSecond - b.msPerSecond || a.measures[measure] - b.measures[measure]);
+  const points = results
+    .filter((r) => r.msPerSecond !== null && Number.isFinite(r.measures[measure]))
+    .sort((a, b) => a.msPerSecond - b.msPerSecond || a.measures[measure] - b.measures[measure]);
   const front = [];
   let best = Infinity;
   for (const r of points) {
@@ -100,16 +102,24 @@ export function paretoSvg(scene, measure, run) {
   ];
   for (let d = x0; d <= x1; ++d) {
     const gx = px(10 ** d);
-    parts.push(`<line x1="${gx.toFixed(1)}" y1="${top}" x2="${gx.toFixed(1)}" y2="${height - bottom}" stroke="#e3e3e3"/>`, `<text x="${gx.toFixed(1)}" y="${height - bottom + 16}" text-anchor="middle" fill="#555">${esc(formatNumber(10 ** d))}</text>`);
+    parts.push(
+      `<line x1="${gx.toFixed(1)}" y1="${top}" x2="${gx.toFixed(1)}" y2="${height - bottom}" stroke="#e3e3e3"/>`,
+      `<text x="${gx.toFixed(1)}" y="${height - bottom + 16}" text-anchor="middle" fill="#555">${esc(formatNumber(10 ** d))}</text>`,
+    );
   }
   for (let d = y0; d <= y1; ++d) {
     const gy = py(10 ** d);
-    parts.push(`<line x1="${left}" y1="${gy.toFixed(1)}" x2="${width - right}" y2="${gy.toFixed(1)}" stroke="#e3e3e3"/>`, `<text x="${left - 6}" y="${(gy + 4).toFixed(1)}" text-anchor="end" fill="#555">${esc(formatNumber(10 ** d))}</text>`);
+    parts.push(
+      `<line x1="${left}" y1="${gy.toFixed(1)}" x2="${width - right}" y2="${gy.toFixed(1)}" stroke="#e3e3e3"/>`,
+      `<text x="${left - 6}" y="${(gy + 4).toFixed(1)}" text-anchor="end" fill="#555">${esc(formatNumber(10 ** d))}</text>`,
+    );
   }
   parts.push(`<text x="${(left + width - right) / 2}" y="${height - 20}" text-anchor="middle" fill="#555">ms of stepping per simulated second (log)</text>`);
   const frontPoints = scene.fronts[measure].map((key) => points.find((r) => r.key === key)).filter(Boolean);
   if (frontPoints.length > 1) {
-    parts.push(`<polyline fill="none" stroke="${COLOURS.front}" stroke-width="2" points="${frontPoints.map((r) => `${px(r.msPerSecond).toFixed(1)},${py(r.measures[measure]).toFixed(1)}`).join(' ')}"/>`);
+    parts.push(
+      `<polyline fill="none" stroke="${COLOURS.front}" stroke-width="2" points="${frontPoints.map((r) => `${px(r.msPerSecond).toFixed(1)},${py(r.measures[measure]).toFixed(1)}`).join(' ')}"/>`,
+    );
   }
   // Front points first, cheapest first, so that their labels win where labels would overlap (a
   // skipped label's point still names its method in its tooltip).
@@ -134,10 +144,13 @@ export function paretoSvg(scene, measure, run) {
   const failed = scene.results.filter((r) => r.measures[measure] !== undefined && !Number.isFinite(r.measures[measure]));
   if (failed.length > 0) notes.push([`no answer: ${failed.map((r) => r.key).join(', ')}`, '#a00']);
   if (ys.some((v) => v === LOG_FLOOR)) notes.push([`0 drawn at ${formatNumber(LOG_FLOOR)}`, '#555']);
-  if (untimed.length > 0) notes.push(['untimed (software adapter):', COLOURS.webgpu], ...untimed.map((r) => [`${r.key}: ${formatNumber(r.measures[measure])}`, COLOURS.webgpu]));
+  if (untimed.length > 0)
+    notes.push(['untimed (software adapter):', COLOURS.webgpu], ...untimed.map((r) => [`${r.key}: ${formatNumber(r.measures[measure])}`, COLOURS.webgpu]));
   const unmeasured = scene.results.filter((r) => r.measures[measure] === undefined);
   if (unmeasured.length > 0) notes.push(['not measured (needs a b2World):', '#999'], ...unmeasured.map((r) => [r.key, '#999']));
-  notes.forEach(([text, colour], i) => parts.push(`<text x="${width - right + 10}" y="${top + 10 + 16 * i}" fill="${colour}" font-size="11">${esc(text)}</text>`));
+  notes.forEach(([text, colour], i) =>
+    parts.push(`<text x="${width - right + 10}" y="${top + 10 + 16 * i}" fill="${colour}" font-size="11">${esc(text)}</text>`),
+  );
   parts.push('</svg>');
   return parts.join('\n') + '\n';
 }
@@ -145,13 +158,29 @@ export function paretoSvg(scene, measure, run) {
 /** The study's summary: per scene, each method's cost and measures (front marked), then the limits. */
 export function accuracyMarkdown(run) {
   const labels = Object.fromEntries(run.methods.map((m) => [m.id, m.label]));
-  const gpu = run.machine.gpu ? ` WebGPU: ${run.machine.gpu.description || run.machine.gpu.device} (${run.machine.gpu.software ? 'software: accuracy only, not timed' : 'timed'}).` : '';
-  const peers = run.peers?.length ? ` Peers at their own settings (1/60 s; 8/3 iterations where they have them, Box2D v3 4 substeps, Rapier its default): ${run.peers.map((p) => `${p.name}${p.version ? ` ${p.version}` : ''}`).join(', ')}; – marks a measure that needs a Box2D 2.2.1 world, and the trajectory error is against WebPhysics' converged run.` : '';
-  const lines = ['# Accuracy: speed against error', '', `Node ${run.machine.node}, ${run.machine.cpus} x ${run.machine.cpuModel}, ${run.date}${run.quick ? ' (quick subset)' : ''}.${gpu}${peers} The measures and scenes: docs/ACCURACY.md. * marks a point on the Pareto front of that measure.`, ''];
+  const gpu = run.machine.gpu
+    ? ` WebGPU: ${run.machine.gpu.description || run.machine.gpu.device} (${run.machine.gpu.software ? 'software: accuracy only, not timed' : 'timed'}).`
+    : '';
+  const peers = run.peers?.length
+    ? ` Peers at their own settings (1/60 s; 8/3 iterations where they have them, Box2D v3 4 substeps, Rapier its default): ${run.peers.map((p) => `${p.name}${p.version ? ` ${p.version}` : ''}`).join(', ')}; – marks a measure that needs a Box2D 2.2.1 world, and the trajectory error is against WebPhysics' converged run.`
+    : '';
+  const lines = [
+    '# Accuracy: speed against error',
+    '',
+    `Node ${run.machine.node}, ${run.machine.cpus} x ${run.machine.cpuModel}, ${run.date}${run.quick ? ' (quick subset)' : ''}.${gpu}${peers} The measures and scenes: docs/ACCURACY.md. * marks a point on the Pareto front of that measure.`,
+    '',
+  ];
   for (const scene of run.scenes) {
-    lines.push(`## ${scene.title} (${scene.seconds} s)`, '', `| method | ms per simulated second | ${scene.measures.map((m) => `${m} (${MEASURE_UNITS[m] ?? ''})`).join(' | ')} |`, `| --- | ---: |${' ---: |'.repeat(scene.measures.length)}`);
+    lines.push(
+      `## ${scene.title} (${scene.seconds} s)`,
+      '',
+      `| method | ms per simulated second | ${scene.measures.map((m) => `${m} (${MEASURE_UNITS[m] ?? ''})`).join(' | ')} |`,
+      `| --- | ---: |${' ---: |'.repeat(scene.measures.length)}`,
+    );
     for (const r of scene.results) {
-      lines.push(`| ${labelOf(run, r)} | ${r.msPerSecond === null ? 'untimed' : formatNumber(r.msPerSecond)} | ${scene.measures.map((m) => `${formatNumber(r.measures[m])}${scene.fronts[m].includes(r.key) ? ' *' : ''}`).join(' | ')} |`);
+      lines.push(
+        `| ${labelOf(run, r)} | ${r.msPerSecond === null ? 'untimed' : formatNumber(r.msPerSecond)} | ${scene.measures.map((m) => `${formatNumber(r.measures[m])}${scene.fronts[m].includes(r.key) ? ' *' : ''}`).join(' | ')} |`,
+      );
     }
     lines.push('');
   }
@@ -162,16 +191,24 @@ export function accuracyMarkdown(run) {
     const value = (l) => {
       if (l === undefined) return '–';
       // Outside the range: not even the safe end passes ('below'), or the far end passes too ('above').
-      const [safe, far] = l.smallest ? [`> ${formatNumber(l.range[1])}`, `≤ ${formatNumber(l.range[0])}`] : [`< ${formatNumber(l.range[0])}`, `≥ ${formatNumber(l.range[1])}`];
+      const [safe, far] = l.smallest
+        ? [`> ${formatNumber(l.range[1])}`, `≤ ${formatNumber(l.range[0])}`]
+        : [`< ${formatNumber(l.range[0])}`, `≥ ${formatNumber(l.range[1])}`];
       return l.outside === 'below' ? safe : l.outside === 'above' ? far : formatNumber(l.limit);
     };
-    lines.push('## Stability limits', '', `| method | ${ids.map((id) => `${id} (${run.limits.find((l) => l.id === id).unit})`).join(' | ')} |`, `| --- |${' ---: |'.repeat(ids.length)}`);
+    lines.push(
+      '## Stability limits',
+      '',
+      `| method | ${ids.map((id) => `${id} (${run.limits.find((l) => l.id === id).unit})`).join(' | ')} |`,
+      `| --- |${' ---: |'.repeat(ids.length)}`,
+    );
     for (const owner of owners) {
       // A GPU limit found on another device than this run's says which (merge.mjs).
       const device = run.limits.find((l) => l.method === owner && l.device !== undefined)?.device;
       const label =
-        (owner.startsWith('webgpu ') ? labelOf(run, { backend: 'webgpu', method: owner.slice(7) }) : labels[owner] ?? labelOf(run, { backend: owner, method: 'default' })) +
-        (device !== undefined ? ` (on ${device})` : '');
+        (owner.startsWith('webgpu ')
+          ? labelOf(run, { backend: 'webgpu', method: owner.slice(7) })
+          : (labels[owner] ?? labelOf(run, { backend: owner, method: 'default' }))) + (device !== undefined ? ` (on ${device})` : '');
       lines.push(`| ${label} | ${ids.map((id) => value(run.limits.find((l) => l.method === owner && l.id === id))).join(' | ')} |`);
     }
     lines.push('', 'The tests (each limit found by bisection; – : not tested for that engine):', '');

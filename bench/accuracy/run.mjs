@@ -21,7 +21,17 @@ import { bisectLimit } from './limits.mjs';
 import { DEFAULT_METHOD, METHODS, REFERENCE, applyMethod, methodById, stepFrame } from './methods.mjs';
 import { jointErrors, trajectoryError } from './measures.mjs';
 import { createBox2D221World } from '../engines/box2d221.mjs';
-import { ACCURACY_SCENES, ACCURACY_SCENE_IDS, buildScene, chainData, plateData, pyramidData, referencePositions, scenePositions, stackData } from './scenes.mjs';
+import {
+  ACCURACY_SCENES,
+  ACCURACY_SCENE_IDS,
+  buildScene,
+  chainData,
+  plateData,
+  pyramidData,
+  referencePositions,
+  scenePositions,
+  stackData,
+} from './scenes.mjs';
 import { accuracyMarkdown, paretoFront, paretoSvg } from './report.mjs';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
@@ -166,16 +176,46 @@ export async function stabilityLimits(b2, m, { quick = false, gpu = null } = {})
     const r = await bisectLimit(passes, lo, hi, options);
     out.push({ id, test, unit, method: owner, range: [lo, hi], smallest: options.smallest === true, ...r });
   };
-  await limit('stack height', 'the tallest column of unit boxes whose top box stays within 0.5 m of its start for 10 s', 'boxes', 2, quick ? 16 : 80, { integer: true }, (h) => standsFor(b2, stackData(h), m, gpu));
-  const base = quick ? 12 : 20;
-  await limit('iterations', `the fewest iterations (velocity and position, n of each) that keep a pyramid of base ${base} standing 10 s (top box within 0.5 m)`, 'iterations', 1, 32, { integer: true, smallest: true }, (n) =>
-    standsFor(b2, pyramidData(base), { ...m, velocityIterations: n, positionIterations: n }, gpu),
+  await limit(
+    'stack height',
+    'the tallest column of unit boxes whose top box stays within 0.5 m of its start for 10 s',
+    'boxes',
+    2,
+    quick ? 16 : 80,
+    { integer: true },
+    (h) => standsFor(b2, stackData(h), m, gpu),
   );
-  await limit('frame time', "the longest frame (taken in the method's substeps) with which a pyramid of base 10 stands 10 s (top box within 0.5 m)", 's', 1 / 240, 1 / 4, { tolerance: 1e-3 }, (dt) => standsFor(b2, pyramidData(10), { ...m, frameHz: 1 / dt }, gpu));
-  await limit('mass ratio', 'log10 of the largest weight-to-link mass ratio at the end of a 10-link chain whose joints stay within 0.1 m for 5 s', 'log10 ratio', 0, 4, { tolerance: 0.02 }, (log10Ratio) => {
-    const { world } = createBox2D221World(b2, chainData(10, 10 ** log10Ratio), { sleep: false });
-    return runWhile(world, m, 5, () => jointErrors(world).linear < 0.1, gpu);
-  });
+  const base = quick ? 12 : 20;
+  await limit(
+    'iterations',
+    `the fewest iterations (velocity and position, n of each) that keep a pyramid of base ${base} standing 10 s (top box within 0.5 m)`,
+    'iterations',
+    1,
+    32,
+    { integer: true, smallest: true },
+    (n) => standsFor(b2, pyramidData(base), { ...m, velocityIterations: n, positionIterations: n }, gpu),
+  );
+  await limit(
+    'frame time',
+    "the longest frame (taken in the method's substeps) with which a pyramid of base 10 stands 10 s (top box within 0.5 m)",
+    's',
+    1 / 240,
+    1 / 4,
+    { tolerance: 1e-3 },
+    (dt) => standsFor(b2, pyramidData(10), { ...m, frameHz: 1 / dt }, gpu),
+  );
+  await limit(
+    'mass ratio',
+    'log10 of the largest weight-to-link mass ratio at the end of a 10-link chain whose joints stay within 0.1 m for 5 s',
+    'log10 ratio',
+    0,
+    4,
+    { tolerance: 0.02 },
+    (log10Ratio) => {
+      const { world } = createBox2D221World(b2, chainData(10, 10 ** log10Ratio), { sleep: false });
+      return runWhile(world, m, 5, () => jointErrors(world).linear < 0.1, gpu);
+    },
+  );
   // Whether a ball crossing the plate is stopped depends on where its steps fall (one landing in
   // the plate's near half is pushed back, one past the middle out the far side): the test takes
   // eight starts spread over one step's travel and passes only if the plate stops all of them,
@@ -237,20 +277,44 @@ export async function peerLimits(engine, api) {
       return p !== null && stands(p, start);
     });
   };
-  await limit('stack height', 'the tallest column of unit boxes whose top box stays within 0.5 m of its start for 10 s', 'boxes', 2, 80, { integer: true }, (h) => standsPeer(stackData(h)));
-  await limit('frame time', 'the longest step with which a pyramid of base 10 stands 10 s (top box within 0.5 m)', 's', 1 / 240, 1 / 4, { tolerance: 1e-3 }, (dt) => standsPeer({ ...pyramidData(10), dt }));
-  await limit('tunnelling speed', "the fastest ball (radius 0.1 m) that a static plate 0.05 m thick stops from any of 8 starts over one step, with the engine's own continuous collision", 'm/s', 1, 120, { tolerance: 0.5 }, (speed) => {
-    for (let k = 0; k < 8; ++k) {
-      const data = plateData(speed, (k / 8) * (speed / 60));
-      let x = 0;
-      runPeer(data, 1, (instance) => {
-        x = instance.position(1)?.[0] ?? Infinity;
-        return true;
-      });
-      if (!(x < 5)) return false;
-    }
-    return true;
-  });
+  await limit(
+    'stack height',
+    'the tallest column of unit boxes whose top box stays within 0.5 m of its start for 10 s',
+    'boxes',
+    2,
+    80,
+    { integer: true },
+    (h) => standsPeer(stackData(h)),
+  );
+  await limit(
+    'frame time',
+    'the longest step with which a pyramid of base 10 stands 10 s (top box within 0.5 m)',
+    's',
+    1 / 240,
+    1 / 4,
+    { tolerance: 1e-3 },
+    (dt) => standsPeer({ ...pyramidData(10), dt }),
+  );
+  await limit(
+    'tunnelling speed',
+    "the fastest ball (radius 0.1 m) that a static plate 0.05 m thick stops from any of 8 starts over one step, with the engine's own continuous collision",
+    'm/s',
+    1,
+    120,
+    { tolerance: 0.5 },
+    (speed) => {
+      for (let k = 0; k < 8; ++k) {
+        const data = plateData(speed, (k / 8) * (speed / 60));
+        let x = 0;
+        runPeer(data, 1, (instance) => {
+          x = instance.position(1)?.[0] ?? Infinity;
+          return true;
+        });
+        if (!(x < 5)) return false;
+      }
+      return true;
+    },
+  );
   return out;
 }
 

@@ -74,7 +74,12 @@ export function chainData(links, ratio = 1) {
 
 /** A 0.05 m plate at x = 5 and a ball of radius 0.1 m at `x0` flying at it at `speed`, without gravity. */
 export function plateData(speed, x0) {
-  return sceneData('plate', 'a ball flying at a thin plate', [body('static', 5, 0, [{ kind: 'box', hx: 0.025, hy: 5, density: 0 }]), body('dynamic', x0, 0, [{ kind: 'circle', r: 0.1 }], { vx: speed })], { gravity: [0, 0] });
+  return sceneData(
+    'plate',
+    'a ball flying at a thin plate',
+    [body('static', 5, 0, [{ kind: 'box', hx: 0.025, hy: 5, density: 0 }]), body('dynamic', x0, 0, [{ kind: 'circle', r: 0.1 }], { vx: speed })],
+    { gravity: [0, 0] },
+  );
 }
 
 /**
@@ -120,7 +125,8 @@ export function mechanismsData() {
   const add = (b) => bodies.push(b) - 1;
   // Anchors on the ground body (at y = -0.5) given in world coordinates.
   const onGround = (x, y) => [x, y + 0.5];
-  const revolute = (a, b, [ax, ay], [bx, by], extra = {}) => joints.push({ kind: 'revolute', a, b, ax, ay, bx, by, refAngle: 0, collideConnected: false, motor: null, ...extra }) - 1;
+  const revolute = (a, b, [ax, ay], [bx, by], extra = {}) =>
+    joints.push({ kind: 'revolute', a, b, ax, ay, bx, by, refAngle: 0, collideConnected: false, motor: null, ...extra }) - 1;
   // The bridge, 5 m up.
   let previous = 0;
   for (let i = 0; i < 12; ++i) {
@@ -147,7 +153,20 @@ export function mechanismsData() {
   joints.push({ kind: 'gear', a: large, b: small, joint1: pinLarge, joint2: pinSmall, ratio: 2 });
   // The elevator: a box 1 m above the lower limit of a vertical prismatic joint.
   const car = add(body('dynamic', 12, 7, [{ kind: 'box', hx: 0.4, hy: 0.4 }]));
-  joints.push({ kind: 'prismatic', a: 0, b: car, ax: 12, ay: 7.5, bx: 0, by: 0, axis: [0, 1], refAngle: 0, collideConnected: false, limit: [-1, 0.5], motor: null });
+  joints.push({
+    kind: 'prismatic',
+    a: 0,
+    b: car,
+    ax: 12,
+    ay: 7.5,
+    bx: 0,
+    by: 0,
+    axis: [0, 1],
+    refAngle: 0,
+    collideConnected: false,
+    limit: [-1, 0.5],
+    motor: null,
+  });
   // The pulley: a box of twice the other's mass on the left.
   const heavy = add(body('dynamic', 17, 4, [{ kind: 'box', hx: 0.5, hy: 0.5, density: 2 }]));
   const light = add(body('dynamic', 19, 5, [{ kind: 'box', hx: 0.5, hy: 0.5 }]));
@@ -306,7 +325,10 @@ export const ACCURACY_SCENES = {
     seconds: 4,
     data() {
       const { v0, mu } = SLIDE;
-      return sceneData('slide', this.title, [ground(40, { friction: mu }), body('dynamic', 0, 0.5, [{ kind: 'box', hx: 0.5, hy: 0.5, friction: mu }], { vx: v0 })]);
+      return sceneData('slide', this.title, [
+        ground(40, { friction: mu }),
+        body('dynamic', 0, 0.5, [{ kind: 'box', hx: 0.5, hy: 0.5, friction: mu }], { vx: v0 }),
+      ]);
     },
     probe(view) {
       const { v0, mu } = SLIDE;
@@ -353,7 +375,10 @@ export const ACCURACY_SCENES = {
     data() {
       // Two triangles of frictionless, perfectly elastic balls thrown at each other, slightly off centre.
       const balls = [];
-      for (const [side, x0, vx, dy] of [[-1, -6, 4, 0], [1, 6, -4, 0.15]]) {
+      for (const [side, x0, vx, dy] of [
+        [-1, -6, 4, 0],
+        [1, 6, -4, 0.15],
+      ]) {
         for (let row = 0; row < 6; ++row) {
           for (let k = 0; k <= row && balls.length < (side < 0 ? 12 : 24); ++k) {
             balls.push(body('dynamic', x0 + side * 0.62 * row, dy + 0.64 * (k - row / 2), [{ kind: 'circle', r: 0.3, friction: 0, restitution: 1 }], { vx }));

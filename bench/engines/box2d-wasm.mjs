@@ -18,7 +18,9 @@ export default {
   notes: ['chains one-sided (Box2D 2.4): points ordered so the solid side faces the bodies'],
 
   async load() {
-    const hasSIMD = WebAssembly.validate(new Uint8Array([0, 97, 115, 109, 1, 0, 0, 0, 1, 5, 1, 96, 0, 1, 123, 3, 2, 1, 0, 10, 10, 1, 8, 0, 65, 0, 253, 15, 253, 98, 11]));
+    const hasSIMD = WebAssembly.validate(
+      new Uint8Array([0, 97, 115, 109, 1, 0, 0, 0, 1, 5, 1, 96, 0, 1, 123, 3, 2, 1, 0, 10, 10, 1, 8, 0, 65, 0, 253, 15, 253, 98, 11]),
+    );
     const base = path.join(path.dirname(require.resolve('box2d-wasm')), hasSIMD ? 'Box2D.simd' : 'Box2D');
     const factory = require(base + '.js');
     const B = await factory({ wasmBinary: readFileSync(base + '.wasm') });

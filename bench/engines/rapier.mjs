@@ -37,7 +37,12 @@ export default {
 
     const add = (d) => {
       let desc = d.type === 'dynamic' ? R.RigidBodyDesc.dynamic() : d.type === 'kinematic' ? R.RigidBodyDesc.kinematicVelocityBased() : R.RigidBodyDesc.fixed();
-      desc = desc.setTranslation(d.x, d.y).setRotation(d.angle).setLinvel(d.vx, d.vy).setAngvel(d.w).setCanSleep(sleep && d.allowSleep);
+      desc = desc
+        .setTranslation(d.x, d.y)
+        .setRotation(d.angle)
+        .setLinvel(d.vx, d.vy)
+        .setAngvel(d.w)
+        .setCanSleep(sleep && d.allowSleep);
       if (d.bullet) desc = desc.setCcdEnabled(true);
       const body = world.createRigidBody(desc);
       for (const s of d.shapes) {

@@ -114,7 +114,7 @@ class Gas {
     const side = Math.ceil(Math.sqrt(count));
     const pitch = (2 * h) / side;
     for (let i = 0; this.particles.length < count; ++i) {
-      const x = -h + (i % side + 0.5) * pitch;
+      const x = -h + ((i % side) + 0.5) * pitch;
       const y = -h + (Math.floor(i / side) + 0.5) * pitch;
       if (HEAVY.some((b) => Math.hypot(x - b.x * 2 * h, y - b.y * 2 * h) < b.r + 2 * PARTICLE_RADIUS)) continue;
       bd.position.Set(x, y);
@@ -276,19 +276,27 @@ function publish(now: number): void {
   const backend = view instanceof GpuWorldView ? 'webgpu' : 'js';
   const workMs = loop.workTimes.median(now);
   Object.assign(window.brownianDemo, { ready: loop.frames > 0, backend, particles: gas.particles.length, steps, histogram, heavyMoved });
-  window.webphysicsDemo.panes = [{ backend, adapter: backend === 'webgpu' ? adapterNote.dataset.adapter ?? null : null, bodies: gas.world.GetBodyCount(), steps, stepMs: workMs }];
+  window.webphysicsDemo.panes = [
+    { backend, adapter: backend === 'webgpu' ? (adapterNote.dataset.adapter ?? null) : null, bodies: gas.world.GetBodyCount(), steps, stepMs: workMs },
+  ];
   window.webphysicsDemo.ready = loop.frames > 0;
   statsLine.textContent =
     `${backend === 'webgpu' ? 'WebGPU: stepped and drawn on the GPU' : 'JavaScript engine, drawn on a 2D canvas'} · ` +
     `${fmtCount(gas.particles.length)} discs of gas, ${gas.heavy.length} large · step ${fmtCount(steps)} · ` +
     `frame ${fmtMs(loop.frameTimes.median(now))} ms · step + draw ${fmtMs(workMs)} ms` +
-    (histogram === null ? '' : ` · mean speed ${histogram.meanSpeed.toFixed(2)} m/s (Maxwell-Boltzmann: ${histogram.expectedMeanSpeed.toFixed(2)}) · large discs moved up to ${heavyMoved.toFixed(2)} m`);
+    (histogram === null
+      ? ''
+      : ` · mean speed ${histogram.meanSpeed.toFixed(2)} m/s (Maxwell-Boltzmann: ${histogram.expectedMeanSpeed.toFixed(2)}) · large discs moved up to ${heavyMoved.toFixed(2)} m`);
 }
 
 // ---- Start ----
 
 async function start(): Promise<void> {
-  gpuContext = await openGpu(adapterNote, `Up to ${fmtCount(GPU_PARTICLES)} discs of gas, stepped and drawn on the GPU.`, `the JavaScript engine steps up to ${fmtCount(JS_PARTICLES)} discs of gas, drawn on a 2D canvas.`);
+  gpuContext = await openGpu(
+    adapterNote,
+    `Up to ${fmtCount(GPU_PARTICLES)} discs of gas, stepped and drawn on the GPU.`,
+    `the JavaScript engine steps up to ${fmtCount(JS_PARTICLES)} discs of gas, drawn on a 2D canvas.`,
+  );
   await restart();
   loop.start();
 }

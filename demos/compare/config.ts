@@ -93,4 +93,3 @@ export interface PaneStats {
   touching: number;
   awake: number;
 }
-

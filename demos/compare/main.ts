@@ -189,9 +189,7 @@ class Pane {
     const rate = this.rate(now);
     const realTime = rate * DT;
     const pace =
-      realTime >= 0.95
-        ? 'keeping up with real time'
-        : `behind: ${rate.toFixed(1)} steps/s, ${(100 * realTime).toFixed(0)}% of real time, frames skipped`;
+      realTime >= 0.95 ? 'keeping up with real time' : `behind: ${rate.toFixed(1)} steps/s, ${(100 * realTime).toFixed(0)}% of real time, frames skipped`;
     this.statsLine.textContent =
       `step ${fmtMs(this.times.median(now))} ms (median, last second) · ${fmtCount(s.steps)} steps, ${(s.steps * DT).toFixed(1)} s simulated\n` +
       `${fmtCount(s.bodies)} bodies (${fmtCount(s.awake)} awake) · ${fmtCount(s.contacts)} contacts (${fmtCount(s.touching)} touching)` +

@@ -10,9 +10,7 @@ import type { PaneStats, SceneConfig, SceneGeometry } from './config';
 
 export type PaneBackend = 'js' | 'webgpu';
 
-export type ToWorker =
-  | { type: 'build'; backend: PaneBackend; config: SceneConfig }
-  | { type: 'step'; transforms: Float32Array; awake: Uint8Array };
+export type ToWorker = { type: 'build'; backend: PaneBackend; config: SceneConfig } | { type: 'step'; transforms: Float32Array; awake: Uint8Array };
 
 export type FromWorker =
   | { type: 'built'; geometry: SceneGeometry; stats: PaneStats; adapter: GpuAdapterSummary | null; buildMs: number }

@@ -7,7 +7,10 @@
 import { GpuPane, JsPane, sceneGeometry } from './pane';
 import type { FromWorker, ToWorker } from './protocol';
 
-const scope = self as unknown as { onmessage: ((event: MessageEvent<ToWorker>) => void) | null; postMessage(message: FromWorker, transfer?: Transferable[]): void };
+const scope = self as unknown as {
+  onmessage: ((event: MessageEvent<ToWorker>) => void) | null;
+  postMessage(message: FromWorker, transfer?: Transferable[]): void;
+};
 
 let pane: JsPane | GpuPane | null = null;
 

@@ -69,8 +69,15 @@ export async function detectWebGpu(): Promise<WebGpuStatus> {
       return { api: true, adapter: false, name: null, reason: 'This browser has WebGPU but no adapter (GPU access disabled or blocked)' };
     }
     const info = adapter.info;
-    const software = (info as GPUAdapterInfo & { isFallbackAdapter?: boolean }).isFallbackAdapter === true || /swiftshader|llvmpipe|lavapipe|warp/i.test(`${info.vendor} ${info.architecture} ${info.description}`);
-    return { api: true, adapter: true, name: adapterName({ vendor: info.vendor, architecture: info.architecture, description: info.description, software }), reason: null };
+    const software =
+      (info as GPUAdapterInfo & { isFallbackAdapter?: boolean }).isFallbackAdapter === true ||
+      /swiftshader|llvmpipe|lavapipe|warp/i.test(`${info.vendor} ${info.architecture} ${info.description}`);
+    return {
+      api: true,
+      adapter: true,
+      name: adapterName({ vendor: info.vendor, architecture: info.architecture, description: info.description, software }),
+      reason: null,
+    };
   } catch (error) {
     return { api: true, adapter: false, name: null, reason: `The WebGPU adapter request failed (${error instanceof Error ? error.message : String(error)})` };
   }

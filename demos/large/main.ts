@@ -182,7 +182,6 @@ async function rebuild(next: SceneConfig): Promise<void> {
 
 // ---- Pointer: drag a body with a mouse joint, or pan; wheel zooms ----
 
-
 let pan: { x: number; y: number } | null = null;
 
 canvas.addEventListener('pointerdown', (event) => {
@@ -191,21 +190,24 @@ canvas.addEventListener('pointerdown', (event) => {
   const p = camera.toWorld(canvas, event);
   const current = stage;
   pan = { x: event.clientX, y: event.clientY };
-  void current.bodyAt(p.x, p.y).then((hit) => {
-    if (hit === null || stage !== current || pan === null || ground === null) return;
-    pan = null;
-    const world: b2World = current.scene.world;
-    const def = new b2MouseJointDef();
-    def.bodyA = ground;
-    def.bodyB = hit.body;
-    def.target.Set(p.x, p.y);
-    def.maxForce = 1000 * hit.body.GetMass();
-    const joint = world.CreateJoint(def) as b2MouseJoint;
-    // The anchor from the GPU's transform: the world's b2Body holds the state of its last read-back.
-    joint.m_localAnchorB.Set(hit.localPoint.x, hit.localPoint.y);
-    mouse = { joint, bodyIndex: current.scene.bodies.indexOf(hit.body), target: p };
-    window.largeDemo.dragging = mouse.bodyIndex;
-  }, (error) => showMessage(`Picking failed: ${error instanceof Error ? error.message : String(error)}`));
+  void current.bodyAt(p.x, p.y).then(
+    (hit) => {
+      if (hit === null || stage !== current || pan === null || ground === null) return;
+      pan = null;
+      const world: b2World = current.scene.world;
+      const def = new b2MouseJointDef();
+      def.bodyA = ground;
+      def.bodyB = hit.body;
+      def.target.Set(p.x, p.y);
+      def.maxForce = 1000 * hit.body.GetMass();
+      const joint = world.CreateJoint(def) as b2MouseJoint;
+      // The anchor from the GPU's transform: the world's b2Body holds the state of its last read-back.
+      joint.m_localAnchorB.Set(hit.localPoint.x, hit.localPoint.y);
+      mouse = { joint, bodyIndex: current.scene.bodies.indexOf(hit.body), target: p };
+      window.largeDemo.dragging = mouse.bodyIndex;
+    },
+    (error) => showMessage(`Picking failed: ${error instanceof Error ? error.message : String(error)}`),
+  );
   event.preventDefault();
 });
 
@@ -347,7 +349,7 @@ function publish(now: number): void {
   });
   const pane: DemoPane = {
     backend: stage.backend,
-    adapter: stage.backend === 'webgpu' ? adapterNote.dataset.adapter ?? null : null,
+    adapter: stage.backend === 'webgpu' ? (adapterNote.dataset.adapter ?? null) : null,
     bodies: stage.scene.bodies.length,
     steps,
     stepMs: gpuFrameMs,
@@ -365,7 +367,11 @@ function publish(now: number): void {
 // ---- Start ----
 
 async function start(): Promise<void> {
-  gpuContext = await openGpu(adapterNote, `Up to ${fmtCount(GPU_COUNTS[GPU_COUNTS.length - 1])} bodies, stepped and drawn on the GPU.`, `the JavaScript engine runs, with at most ${fmtCount(JS_COUNTS[JS_COUNTS.length - 1])} bodies drawn on a 2D canvas.`);
+  gpuContext = await openGpu(
+    adapterNote,
+    `Up to ${fmtCount(GPU_COUNTS[GPU_COUNTS.length - 1])} bodies, stepped and drawn on the GPU.`,
+    `the JavaScript engine runs, with at most ${fmtCount(JS_COUNTS[JS_COUNTS.length - 1])} bodies drawn on a 2D canvas.`,
+  );
   fillControls();
   await rebuild(fromUrl());
   loop.start();

@@ -52,7 +52,10 @@ class Sandbox {
   private readonly edge = new b2EdgeShape();
   private seed = 1;
 
-  constructor(readonly maxGrains: number, private readonly pourRate: number) {
+  constructor(
+    readonly maxGrains: number,
+    private readonly pourRate: number,
+  ) {
     this.world.SetAllowSleeping(true);
     const floor = this.world.CreateBody(new b2BodyDef());
     const slab = new b2PolygonShape();
@@ -137,7 +140,6 @@ async function restart(): Promise<void> {
 
 // ---- Pointer: a stroke draws a container; the wheel zooms ----
 
-
 canvas.addEventListener('pointerdown', (event) => {
   canvas.setPointerCapture(event.pointerId);
   stroke = [camera.toWorld(canvas, event)];
@@ -219,7 +221,9 @@ function publish(now: number): void {
     frameMs,
     workMs,
   });
-  window.webphysicsDemo.panes = [{ backend, adapter: backend === 'webgpu' ? adapterNote.dataset.adapter ?? null : null, bodies: sandbox.world.GetBodyCount(), steps, stepMs: workMs }];
+  window.webphysicsDemo.panes = [
+    { backend, adapter: backend === 'webgpu' ? (adapterNote.dataset.adapter ?? null) : null, bodies: sandbox.world.GetBodyCount(), steps, stepMs: workMs },
+  ];
   window.webphysicsDemo.ready = loop.frames > 0;
   statsLine.textContent =
     `${backend === 'webgpu' ? 'WebGPU: stepped and drawn on the GPU' : 'JavaScript engine, drawn on a 2D canvas'} · ` +
@@ -230,7 +234,11 @@ function publish(now: number): void {
 // ---- Start ----
 
 async function start(): Promise<void> {
-  gpuContext = await openGpu(adapterNote, `Up to ${fmtCount(GPU_GRAINS)} grains, stepped and drawn on the GPU.`, `the JavaScript engine pours up to ${fmtCount(JS_GRAINS)} grains, drawn on a 2D canvas.`);
+  gpuContext = await openGpu(
+    adapterNote,
+    `Up to ${fmtCount(GPU_GRAINS)} grains, stepped and drawn on the GPU.`,
+    `the JavaScript engine pours up to ${fmtCount(JS_GRAINS)} grains, drawn on a 2D canvas.`,
+  );
   await restart();
   loop.start();
 }

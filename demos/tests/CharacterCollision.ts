@@ -83,18 +83,7 @@ export class CharacterCollision extends Test {
       bd.position.Set(-10.0, 4.0);
       const ground = this.m_world.CreateBody(bd);
 
-      const vs = [
-        v(0.0, 0.0),
-        v(6.0, 0.0),
-        v(6.0, 2.0),
-        v(4.0, 1.0),
-        v(2.0, 2.0),
-        v(0.0, 2.0),
-        v(-2.0, 2.0),
-        v(-4.0, 3.0),
-        v(-6.0, 2.0),
-        v(-6.0, 0.0),
-      ];
+      const vs = [v(0.0, 0.0), v(6.0, 0.0), v(6.0, 2.0), v(4.0, 1.0), v(2.0, 2.0), v(0.0, 2.0), v(-2.0, 2.0), v(-4.0, 3.0), v(-6.0, 2.0), v(-6.0, 0.0)];
       const shape = new b2ChainShape();
       shape.CreateLoop(vs, 10);
       ground.CreateFixture(shape, 0.0);

@@ -1,16 +1,5 @@
 // DistanceTest.h: b2Distance (GJK) between two boxes; w/a/s/d move and q/e turn box B.
-import {
-  b2Color,
-  b2Distance,
-  b2DistanceInput,
-  b2DistanceOutput,
-  b2MulXV,
-  b2PolygonShape,
-  b2SimplexCache,
-  b2Transform,
-  b2Vec2,
-  b2_pi,
-} from '../../src/index';
+import { b2Color, b2Distance, b2DistanceInput, b2DistanceOutput, b2MulXV, b2PolygonShape, b2SimplexCache, b2Transform, b2Vec2, b2_pi } from '../../src/index';
 import type { Settings } from '../framework/settings';
 import { Test } from '../framework/test';
 

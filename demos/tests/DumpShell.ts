@@ -1,13 +1,5 @@
 // DumpShell.h: a world pasted from b2World::Dump (the C++ the dump prints, as it prints it).
-import {
-  b2BodyDef,
-  b2EdgeShape,
-  b2FixtureDef,
-  b2PolygonShape,
-  b2PrismaticJointDef,
-  b2RevoluteJointDef,
-  b2Vec2,
-} from '../../src/index';
+import { b2BodyDef, b2EdgeShape, b2FixtureDef, b2PolygonShape, b2PrismaticJointDef, b2RevoluteJointDef, b2Vec2 } from '../../src/index';
 import type { b2Body, b2BodyType, b2Joint } from '../../src/index';
 import { Test } from '../framework/test';
 

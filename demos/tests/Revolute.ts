@@ -1,16 +1,6 @@
 // Revolute.h: revolute joints with limits and a motor, a bullet plank, mask filtering, and the
 // mass of a small polygon far from the origin. Keys: l limits, m motor.
-import {
-  b2BodyDef,
-  b2CircleShape,
-  b2EdgeShape,
-  b2FixtureDef,
-  b2PolygonShape,
-  b2RevoluteJointDef,
-  b2Vec2,
-  b2_dynamicBody,
-  b2_pi,
-} from '../../src/index';
+import { b2BodyDef, b2CircleShape, b2EdgeShape, b2FixtureDef, b2PolygonShape, b2RevoluteJointDef, b2Vec2, b2_dynamicBody, b2_pi } from '../../src/index';
 import type { b2Body, b2RevoluteJoint } from '../../src/index';
 import type { Settings } from '../framework/settings';
 import { Test } from '../framework/test';

@@ -129,7 +129,12 @@ const loop = new FrameLoop(
     for (const finger of fingers.values()) {
       finger.joint?.SetTarget(finger.at);
       // A finger held still on a body pins or unpins it, once.
-      if (!finger.held && finger.hit !== null && now - finger.downAt >= HOLD_MS && Math.hypot(finger.at.x - finger.start.x, finger.at.y - finger.start.y) < HOLD_SLOP) {
+      if (
+        !finger.held &&
+        finger.hit !== null &&
+        now - finger.downAt >= HOLD_MS &&
+        Math.hypot(finger.at.x - finger.start.x, finger.at.y - finger.start.y) < HOLD_SLOP
+      ) {
         finger.held = true;
         if (finger.joint !== null) current.world.DestroyJoint(finger.joint);
         finger.joint = null;
@@ -165,7 +170,6 @@ async function restart(): Promise<void> {
 }
 
 // ---- Fingers ----
-
 
 canvas.addEventListener('pointerdown', (event) => {
   const current = playground;
@@ -265,7 +269,9 @@ function publish(now: number): void {
   const bodies = playground.bodies;
   const dragging = [...fingers.values()].filter((f) => f.joint !== null && f.hit !== null).map((f) => bodies.indexOf(f.hit!.body));
   Object.assign(window.touchDemo, { ready: loop.frames > 0, backend, steps, bodies: bodies.length, spawned, pinned, dragging });
-  window.webphysicsDemo.panes = [{ backend, adapter: backend === 'webgpu' ? adapterNote.dataset.adapter ?? null : null, bodies: playground.world.GetBodyCount(), steps, stepMs: workMs }];
+  window.webphysicsDemo.panes = [
+    { backend, adapter: backend === 'webgpu' ? (adapterNote.dataset.adapter ?? null) : null, bodies: playground.world.GetBodyCount(), steps, stepMs: workMs },
+  ];
   window.webphysicsDemo.ready = loop.frames > 0;
   statsLine.textContent =
     `${backend === 'webgpu' ? 'WebGPU: stepped and drawn on the GPU' : 'JavaScript engine, drawn on a 2D canvas'} · ` +

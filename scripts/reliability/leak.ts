@@ -394,8 +394,12 @@ async function runScenario(scenario: Scenario, cycles: number, failures: string[
   const name = scenario.name;
   const growthKB = (heapEnd - heapAfterWarmup) * 1024;
   if (collected !== refs.length) failures.push(`${name}: ${refs.length - collected} of ${refs.length} destroyed objects were not collected`);
-  if (heapEnd - heapAfterWarmup > kHeapBoundMB) failures.push(`${name}: the heap grew by ${growthKB.toFixed(0)} KB after warm-up (bound ${kHeapBoundMB * 1024} KB)`);
-  if (maxSample - heapAfterWarmup > kHeapBoundMB) failures.push(`${name}: the heap reached ${maxSample.toFixed(2)} MB, ${((maxSample - heapAfterWarmup) * 1024).toFixed(0)} KB above its level after warm-up`);
+  if (heapEnd - heapAfterWarmup > kHeapBoundMB)
+    failures.push(`${name}: the heap grew by ${growthKB.toFixed(0)} KB after warm-up (bound ${kHeapBoundMB * 1024} KB)`);
+  if (maxSample - heapAfterWarmup > kHeapBoundMB)
+    failures.push(
+      `${name}: the heap reached ${maxSample.toFixed(2)} MB, ${((maxSample - heapAfterWarmup) * 1024).toFixed(0)} KB above its level after warm-up`,
+    );
   if (world !== null && poolsAfterWarmup !== null && poolsEnd !== null) {
     if (scenario.stablePools === true) {
       for (const key of Object.keys(poolsEnd)) {

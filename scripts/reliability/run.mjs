@@ -58,7 +58,7 @@ if (command === 'soak') {
   report = runSoak({ steps: option(args, 'steps', 100_000), seed: option(args, 'seed', 1), log });
 } else if (command === 'leak') {
   const { runLeakChecks } = await loadTs(path.join(here, 'leak.ts'));
-  report = await runLeakChecks({ cycles: option(args, "cycles", 10_000), log });
+  report = await runLeakChecks({ cycles: option(args, 'cycles', 10_000), log });
 } else {
   process.stderr.write('usage: node --expose-gc scripts/reliability/run.mjs soak|leak [--steps N | --cycles N] [--seed S] [--json]\n');
   process.exit(2);

@@ -149,11 +149,7 @@ function isFree(world: b2World, x: number, y: number, half: number): boolean {
 function bodyEnergy(b: b2Body): number {
   if (b.m_type !== b2BodyType.b2_dynamicBody || !b.IsActive()) return 0;
   const v = b.m_linearVelocity;
-  return (
-    0.5 * b.m_mass * (v.x * v.x + v.y * v.y) +
-    0.5 * b.m_I * b.m_angularVelocity * b.m_angularVelocity +
-    b.m_mass * kGravity * (b.m_sweep.c.y - kFloor)
-  );
+  return 0.5 * b.m_mass * (v.x * v.x + v.y * v.y) + 0.5 * b.m_I * b.m_angularVelocity * b.m_angularVelocity + b.m_mass * kGravity * (b.m_sweep.c.y - kFloor);
 }
 
 /**
@@ -508,7 +504,9 @@ export function runSoak(options: SoakOptions): SoakReport {
   const rainReport = rainBox(rainSteps, random, failures, log);
   rainReport.heapAfterMB = heapMB();
   segments.push(rainReport);
-  log(`rain-box: ${rainSteps} steps, ${rainReport.spawned} spawned, peak ${rainReport.peakBodies} bodies, ${rainReport.peakContacts} contacts, energy <= ${(100 * rainReport.peakEnergyRatio).toFixed(1)}% of its bound`);
+  log(
+    `rain-box: ${rainSteps} steps, ${rainReport.spawned} spawned, peak ${rainReport.peakBodies} bodies, ${rainReport.peakContacts} contacts, energy <= ${(100 * rainReport.peakEnergyRatio).toFixed(1)}% of its bound`,
+  );
   let remaining = goldenSteps;
   for (let i = 0; i < scenes.length && remaining > 0 && failures.length === 0; ++i) {
     const n = i === scenes.length - 1 ? remaining : Math.min(perScene, remaining);
@@ -516,7 +514,9 @@ export function runSoak(options: SoakOptions): SoakReport {
     report.heapAfterMB = heapMB();
     segments.push(report);
     remaining -= n;
-    log(`${scenes[i]}: ${n} steps, ${report.spawned} spawned, peak ${report.peakBodies} bodies, ${report.peakContacts} contacts, kinetic energy <= ${(100 * report.peakEnergyRatio).toFixed(2)}% of the solver limit`);
+    log(
+      `${scenes[i]}: ${n} steps, ${report.spawned} spawned, peak ${report.peakBodies} bodies, ${report.peakContacts} contacts, kinetic energy <= ${(100 * report.peakEnergyRatio).toFixed(2)}% of the solver limit`,
+    );
   }
 
   const heaps = segments.map((s) => s.heapAfterMB).filter((h): h is number => h !== null);

@@ -300,7 +300,13 @@ export class GpuContactEvents {
     const A = mirror.proxyAt(proxyA);
     const B = mirror.proxyAt(proxyB);
     if (known !== undefined) {
-      const same = A !== null && B !== null && known.m_fixtureA === A.fixture && known.m_indexA === A.childIndex && known.m_fixtureB === B.fixture && known.m_indexB === B.childIndex;
+      const same =
+        A !== null &&
+        B !== null &&
+        known.m_fixtureA === A.fixture &&
+        known.m_indexA === A.childIndex &&
+        known.m_fixtureB === B.fixture &&
+        known.m_indexB === B.childIndex;
       if (same || A === null || B === null) return known;
     }
     if (A === null || B === null) return null;

@@ -271,7 +271,16 @@ export class GpuBroadPhase {
   /** Records the emit and the pair sort again (after growPairs); returns the sorted pairs' buffer. */
   encodeRegrow(rec: Recorder, inputs: SweepInputs): GPUBuffer {
     this.sweep.encodeEmit(rec, inputs, this.pairsA.buffer, this.state, this.indirect);
-    this.sortedPairs = this.pairStage.encode(rec, this.sort, this.pairsA.buffer, this.pairsB.buffer, this.pairsA.capacity, inputs.slotCount, this.state, this.indirect);
+    this.sortedPairs = this.pairStage.encode(
+      rec,
+      this.sort,
+      this.pairsA.buffer,
+      this.pairsB.buffer,
+      this.pairsA.capacity,
+      inputs.slotCount,
+      this.state,
+      this.indirect,
+    );
     return this.sortedPairs;
   }
 
@@ -357,7 +366,6 @@ export class GpuBroadPhase {
     this.pairsB.ensure(pairs);
     this.sort.reserve(Math.max(entries, this.pairsA.capacity));
   }
-
 
   /** The sorted pairs of the last update: 2 words (a, b) per pair. */
   async readPairs(): Promise<Uint32Array> {

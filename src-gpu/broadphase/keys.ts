@@ -54,7 +54,16 @@ export class KeysStage {
       groups: Math.ceil(slotCount / SCAN_BLOCK),
     });
     rec.dispatch(this.sizeArgs, this.sizeArgs.bind({ 2: state, 5: indirect }), 1);
-    const entries = this.entries.bind({ 0: u, 1: proxyAABB, 2: state, 3: this.replicaOffset.buffer, 4: items, 6: inputs.proxyRef, 7: inputs.proxyFilter, 8: this.records.buffer });
+    const entries = this.entries.bind({
+      0: u,
+      1: proxyAABB,
+      2: state,
+      3: this.replicaOffset.buffer,
+      4: items,
+      6: inputs.proxyRef,
+      7: inputs.proxyFilter,
+      8: this.records.buffer,
+    });
     rec.dispatch(this.entries, entries, groups);
   }
 }

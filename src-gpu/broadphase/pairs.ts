@@ -42,7 +42,16 @@ export class PairsStage {
    * finish, then the pair sort; returns the buffer holding the sorted pairs. `pairCapacity`: the
    * pairs the pair buffer holds (a bound on the sort's count).
    */
-  encode(rec: Recorder, sort: RadixSort, pairs: GPUBuffer, pairsTmp: GPUBuffer, pairCapacity: number, slotCount: number, state: GPUBuffer, indirect: GPUBuffer): GPUBuffer {
+  encode(
+    rec: Recorder,
+    sort: RadixSort,
+    pairs: GPUBuffer,
+    pairsTmp: GPUBuffer,
+    pairCapacity: number,
+    slotCount: number,
+    state: GPUBuffer,
+    indirect: GPUBuffer,
+  ): GPUBuffer {
     rec.dispatch(this.finish, this.finish.bind({ 0: state, 1: indirect }), 1);
     return sort.encode(rec, pairs, pairsTmp, pairSortPasses(slotCount), state, STATE.PAIR_SORT_COUNT, {
       indirect,

@@ -155,13 +155,7 @@ export class GpuContext {
   /** The GPU object (keeps a Dawn instance alive as long as the context). */
   readonly gpu: GPU | null;
 
-  constructor(
-    gpu: GPU | null,
-    adapter: GPUAdapter,
-    device: GPUDevice,
-    adapterInfo: GpuAdapterSummary,
-    onLost?: (info: GpuLossInfo) => void,
-  ) {
+  constructor(gpu: GPU | null, adapter: GPUAdapter, device: GPUDevice, adapterInfo: GpuAdapterSummary, onLost?: (info: GpuLossInfo) => void) {
     this.gpu = gpu;
     this.adapter = adapter;
     this.device = device;
@@ -211,9 +205,7 @@ export class GpuContext {
       throw new GpuCapacityError(`${label}: ${bytes} bytes is more than this device's maxBufferSize (${limits.maxBufferSize})`);
     }
     if (usage & USAGE.STORAGE && bytes > limits.maxStorageBufferBindingSize) {
-      throw new GpuCapacityError(
-        `${label}: ${bytes} bytes is more than this device's maxStorageBufferBindingSize (${limits.maxStorageBufferBindingSize})`,
-      );
+      throw new GpuCapacityError(`${label}: ${bytes} bytes is more than this device's maxStorageBufferBindingSize (${limits.maxStorageBufferBindingSize})`);
     }
     this.device.pushErrorScope('out-of-memory');
     const buffer = this.device.createBuffer({ label, size: bytes, usage });

@@ -6,15 +6,7 @@
  * f32 values are written as the engine's float64 numbers, which WGSL rounds to f32.
  */
 
-import {
-  b2BodyFlags,
-  b2BodyType,
-  b2ContactFeatureType,
-  b2JointType,
-  b2LimitState,
-  b2ManifoldType,
-  b2ShapeType,
-} from '../../src/common/b2Constants';
+import { b2BodyFlags, b2BodyType, b2ContactFeatureType, b2JointType, b2LimitState, b2ManifoldType, b2ShapeType } from '../../src/common/b2Constants';
 import {
   b2_angularSleepTolerance,
   b2_angularSlop,
@@ -85,6 +77,6 @@ function literal(type: 'u32' | 'f32', value: number): string {
 }
 
 export const ENGINE_WGSL = [
-  '// The engine\'s constants (src-gpu/device/engineWgsl.ts, generated from src/common/b2Constants.ts and b2Settings.ts).',
+  "// The engine's constants (src-gpu/device/engineWgsl.ts, generated from src/common/b2Constants.ts and b2Settings.ts).",
   ...ENGINE_CONSTANTS.map(([name, type, value]) => `const ${name}: ${type} = ${literal(type, value)};`),
 ].join('\n');

@@ -28,8 +28,7 @@ export class GpuUnavailableError extends Error {
   }
 }
 
-export const WEBGPU_PACKAGE_HINT =
-  "The WebGPU backend in Node needs the optional peer dependency 'webgpu' (Dawn for Node): npm install webgpu@0.6.2";
+export const WEBGPU_PACKAGE_HINT = "The WebGPU backend in Node needs the optional peer dependency 'webgpu' (Dawn for Node): npm install webgpu@0.6.2";
 
 export const SOFTWARE_ADAPTER_HINT =
   'For a software adapter (SwiftShader), install Chromium or Chrome and the Vulkan loader ' +
@@ -110,11 +109,7 @@ export function findSwiftShaderIcd(search: IcdSearchEnv): string | null {
 /** Folders the Vulkan loader reads driver manifests from on Linux. */
 function icdFolders(search: IcdSearchEnv): string[] {
   const dataDirs = (search.env.XDG_DATA_DIRS || '/usr/local/share:/usr/share').split(':');
-  return [
-    ...dataDirs.map((d) => `${d}/vulkan/icd.d`),
-    '/etc/vulkan/icd.d',
-    `${search.home}/.local/share/vulkan/icd.d`,
-  ];
+  return [...dataDirs.map((d) => `${d}/vulkan/icd.d`), '/etc/vulkan/icd.d', `${search.home}/.local/share/vulkan/icd.d`];
 }
 
 /**
@@ -219,9 +214,7 @@ export async function requestNodeAdapter(options: NodeAdapterOptions = {}): Prom
   const adapter = await gpu.requestAdapter(request);
   if (!adapter) {
     const loader = vulkanLoaderPresent(search) ? '' : ' The Vulkan loader (libvulkan.so.1) is not installed:';
-    throw new GpuUnavailableError(
-      `No WebGPU adapter found: Dawn did not accept the SwiftShader driver ${icd}.${loader} ${SOFTWARE_ADAPTER_HINT}`,
-    );
+    throw new GpuUnavailableError(`No WebGPU adapter found: Dawn did not accept the SwiftShader driver ${icd}.${loader} ${SOFTWARE_ADAPTER_HINT}`);
   }
   return { gpu, adapter, source: 'dawn-swiftshader', icd };
 }

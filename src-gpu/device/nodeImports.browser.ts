@@ -7,8 +7,7 @@
 
 import type { IcdSearchEnv } from './node';
 
-const kBrowserBuild =
-  "this is the browser build of webphysics/gpu; Node's `node` export condition selects the build that loads Dawn";
+const kBrowserBuild = "this is the browser build of webphysics/gpu; Node's `node` export condition selects the build that loads Dawn";
 
 export function importPackage(name: string): Promise<unknown> {
   return Promise.reject(new Error(`cannot load ${name}: ${kBrowserBuild}`));

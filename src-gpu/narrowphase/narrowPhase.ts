@@ -46,14 +46,7 @@ import { packWorldContacts } from './seed';
 import type { PersistInputs } from './persist';
 import type { CompactInputs } from './compact';
 import type { SolverInputs } from '../solver/solver';
-import {
-  BIN_COUNT,
-  MANIFOLD_WORDS,
-  NP,
-  NP_INDIRECT_WORDS,
-  NP_STATE_WORDS,
-  USAGE,
-} from '../device/layout';
+import { BIN_COUNT, MANIFOLD_WORDS, NP, NP_INDIRECT_WORDS, NP_STATE_WORDS, USAGE } from '../device/layout';
 import type { GpuWorld, WorldCensus } from '../world/world';
 
 /** The label of the read-backs for tests and tools (readBuffer). */
@@ -392,7 +385,6 @@ export class GpuNarrowPhase {
   }
 
   // ---- Read-back for tests and tools (not part of a step) ----
-
 
   /** The narrow phase's state words now (layout.ts NP). */
   async readState(): Promise<Uint32Array> {

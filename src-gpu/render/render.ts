@@ -171,7 +171,8 @@ export class GpuRenderer {
    * destroyed reuses.
    */
   setBodyColour(body: b2Body, rgb: number): void {
-    if (!Number.isInteger(rgb) || rgb < 0 || rgb > 0xffffff) throw new RangeError(`GpuRenderer.setBodyColour: rgb must be an integer 0xRRGGBB in [0, 0xffffff], got ${rgb}`);
+    if (!Number.isInteger(rgb) || rgb < 0 || rgb > 0xffffff)
+      throw new RangeError(`GpuRenderer.setBodyColour: rgb must be an integer 0xRRGGBB in [0, 0xffffff], got ${rgb}`);
     const slot = this.backend.bodySlot(body);
     if (slot < 0) throw new RangeError('GpuRenderer.setBodyColour: the body is not on the GPU yet (it gets a slot at the next world.Step)');
     this.growColours(slot + 1);
@@ -302,7 +303,11 @@ export class GpuRenderer {
     let group = this.groups.get(key);
     if (group === undefined) {
       if (this.groups.size > 64) this.groups.clear();
-      group = this.ctx.device.createBindGroup({ label: `render.${label}`, layout, entries: buffers.map((buffer, binding) => ({ binding, resource: { buffer } })) });
+      group = this.ctx.device.createBindGroup({
+        label: `render.${label}`,
+        layout,
+        entries: buffers.map((buffer, binding) => ({ binding, resource: { buffer } })),
+      });
       this.groups.set(key, group);
     }
     return group;

@@ -362,7 +362,6 @@ export class GpuSolver {
 
   // ---- Read-back for tests and tools (not part of a step) ----
 
-
   /** The solver state of the last step. */
   async readState(): Promise<SolverState> {
     const w = new Uint32Array(await readBuffer(this.ctx, this.state, 4 * SV_STATE_WORDS, DEBUG_READ));
@@ -383,12 +382,20 @@ export class GpuSolver {
    * the joints' (jointBodies: bodies A, B, C, D | type, dynamic mask, solved, limit state), and
    * the sorted colour list.
    */
-  async readColouring(): Promise<{ joints: number; colours: Uint32Array; bodies: Uint32Array; jointBodies: Uint32Array; keys: Uint32Array; state: SolverState }> {
+  async readColouring(): Promise<{
+    joints: number;
+    colours: Uint32Array;
+    bodies: Uint32Array;
+    jointBodies: Uint32Array;
+    keys: Uint32Array;
+    state: SolverState;
+  }> {
     const state = await this.readState();
     const joints = state.joints;
     const n = state.contacts;
     const items = joints + n;
-    const read = async (buffer: GPUBuffer, bytes: number): Promise<Uint32Array> => (bytes === 0 ? new Uint32Array(0) : new Uint32Array(await readBuffer(this.ctx, buffer, bytes, DEBUG_READ)));
+    const read = async (buffer: GPUBuffer, bytes: number): Promise<Uint32Array> =>
+      bytes === 0 ? new Uint32Array(0) : new Uint32Array(await readBuffer(this.ctx, buffer, bytes, DEBUG_READ));
     return {
       joints,
       colours: await read(this.colouring.colours.buffer, 4 * items),

@@ -43,7 +43,15 @@ export class WarmStartStage {
 
   /** Every colour in one dispatch of one workgroup (a small world). */
   encodeFused(rec: Recorder, io: ColourPassInputs, bodyVel: GPUBuffer): void {
-    const group = this.fused.bind({ 1: io.solverState, 2: io.colourKeys, 3: io.contactBodies, 4: io.constraints, 5: bodyVel, 10: io.jointBodies, 12: io.jointConstraints });
+    const group = this.fused.bind({
+      1: io.solverState,
+      2: io.colourKeys,
+      3: io.contactBodies,
+      4: io.constraints,
+      5: bodyVel,
+      10: io.jointBodies,
+      12: io.jointConstraints,
+    });
     rec.dispatch(this.fused, group, 1);
   }
 

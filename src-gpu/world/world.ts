@@ -451,7 +451,18 @@ export class GpuWorld {
         shapes += shapeSize(f);
       }
     }
-    const perBody = [this.bodyXf, this.bodyCell, this.bodySweep, this.bodyVel, this.bodyForce, this.bodyMass, this.bodyParams, this.bodyFlags, this.bodyAwake, this.jointRange];
+    const perBody = [
+      this.bodyXf,
+      this.bodyCell,
+      this.bodySweep,
+      this.bodyVel,
+      this.bodyForce,
+      this.bodyMass,
+      this.bodyParams,
+      this.bodyFlags,
+      this.bodyAwake,
+      this.jointRange,
+    ];
     const perFixture = [this.fixtureShape, this.fixtureMaterial];
     const perProxy = [this.proxyRef, this.proxyFilter, this.proxyKey];
     MirrorTable.reserveAll(
@@ -793,15 +804,7 @@ export class GpuWorld {
     this.staleShapes.add(fixture);
   }
 
-  private packProxies(
-    f: b2Fixture,
-    fixtureSlot: number,
-    bodySlot: number,
-    bodyType: number,
-    jointed: boolean,
-    gen: number,
-    stats: SyncStats,
-  ): void {
+  private packProxies(f: b2Fixture, fixtureSlot: number, bodySlot: number, bodyType: number, jointed: boolean, gen: number, stats: SyncStats): void {
     // Proxies belong to (fixture slot, child): a fixture slot is reused only after the sync that
     // released it, so the pair names one live proxy.
     const n = f.m_proxyCount;
@@ -815,8 +818,7 @@ export class GpuWorld {
     let rest = this.fixtureProxyRest.get(fixtureSlot);
     if (rest !== undefined && rest.length > n - 1) rest.length = n - 1;
     const filter = f.m_filter;
-    const word =
-      f.m_shape.m_type | (bodyType << 2) | PROXY_LIVE | (f.m_isSensor ? PROXY_SENSOR : 0) | (jointed ? PROXY_JOINTED : 0);
+    const word = f.m_shape.m_type | (bodyType << 2) | PROXY_LIVE | (f.m_isSensor ? PROXY_SENSOR : 0) | (jointed ? PROXY_JOINTED : 0);
     const filterWord = ((filter.categoryBits & 0xffff) | ((filter.maskBits & 0xffff) << 16)) >>> 0;
     const group = filter.groupIndex & 0xffff;
     const proxies = this.proxySlots;

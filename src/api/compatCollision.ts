@@ -27,15 +27,7 @@ import { b2_maxPolygonVertices } from '../common/b2Settings';
 import type { b2Contact } from '../dynamics/contacts/b2Contact';
 import { b2EdgeAndCircleContact } from '../dynamics/contacts/b2EdgeAndCircleContact';
 import { b2Vec2 } from '../common/b2Math';
-import {
-  acceptingArguments,
-  defineAccessor,
-  defineMethods,
-  defineStatics,
-  removedClass,
-  removedMethod,
-  wrapMethod,
-} from './patch';
+import { acceptingArguments, defineAccessor, defineMethods, defineStatics, removedClass, removedMethod, wrapMethod } from './patch';
 
 declare module '../collision/b2Collision' {
   interface b2AABB {
@@ -114,12 +106,7 @@ declare module '../collision/shapes/b2Shape' {
     const e_polygonShape: number;
     const e_edgeShape: number;
     /** 2.1a: do two single-child shapes overlap? */
-    function TestOverlap(
-      shape1: b2Shape,
-      transform1: Readonly<b2Transform>,
-      shape2: b2Shape,
-      transform2: Readonly<b2Transform>,
-    ): boolean;
+    function TestOverlap(shape1: b2Shape, transform1: Readonly<b2Transform>, shape2: b2Shape, transform2: Readonly<b2Transform>): boolean;
   }
 }
 
@@ -184,24 +171,33 @@ declare module '../collision/shapes/b2EdgeShape' {
 
 // b2AABB
 
-wrapMethod(b2AABB.prototype, 'GetCenter', (getCenter) =>
-  function (this: b2AABB, out?: b2Vec2) {
-    return getCenter.call(this, out ?? new b2Vec2());
-  },
+wrapMethod(
+  b2AABB.prototype,
+  'GetCenter',
+  (getCenter) =>
+    function (this: b2AABB, out?: b2Vec2) {
+      return getCenter.call(this, out ?? new b2Vec2());
+    },
 );
-wrapMethod(b2AABB.prototype, 'GetExtents', (getExtents) =>
-  function (this: b2AABB, out?: b2Vec2) {
-    return getExtents.call(this, out ?? new b2Vec2());
-  },
+wrapMethod(
+  b2AABB.prototype,
+  'GetExtents',
+  (getExtents) =>
+    function (this: b2AABB, out?: b2Vec2) {
+      return getExtents.call(this, out ?? new b2Vec2());
+    },
 );
-wrapMethod(b2AABB.prototype, 'Combine', (combine) =>
-  function (this: b2AABB, aabb1: Readonly<b2AABB>, aabb2?: Readonly<b2AABB>) {
-    if (aabb2 !== undefined) {
-      this.Combine2(aabb1, aabb2);
-    } else {
-      combine.call(this, aabb1);
-    }
-  },
+wrapMethod(
+  b2AABB.prototype,
+  'Combine',
+  (combine) =>
+    function (this: b2AABB, aabb1: Readonly<b2AABB>, aabb2?: Readonly<b2AABB>) {
+      if (aabb2 !== undefined) {
+        this.Combine2(aabb1, aabb2);
+      } else {
+        combine.call(this, aabb1);
+      }
+    },
 );
 defineMethods(b2AABB.prototype, {
   TestOverlap(other) {
@@ -224,8 +220,7 @@ export const b2RayCastInputCompat = acceptingArguments(b2RayCastInput, (args, ma
   if (p2 !== undefined) input.p2.Assign(p2);
   if (maxFraction !== undefined) input.maxFraction = maxFraction;
   return input;
-}) as typeof b2RayCastInput &
-  (new (p1?: Readonly<b2Vec2>, p2?: Readonly<b2Vec2>, maxFraction?: number) => b2RayCastInput);
+}) as typeof b2RayCastInput & (new (p1?: Readonly<b2Vec2>, p2?: Readonly<b2Vec2>, maxFraction?: number) => b2RayCastInput);
 
 // Contact ids and manifolds
 
@@ -268,11 +263,7 @@ function aliasFields<T extends object>(proto: T, aliases: Record<string, keyof T
   }
 }
 
-aliasFields(
-  b2ManifoldPoint.prototype,
-  { m_localPoint: 'localPoint', m_normalImpulse: 'normalImpulse', m_tangentImpulse: 'tangentImpulse' },
-  ['m_localPoint'],
-);
+aliasFields(b2ManifoldPoint.prototype, { m_localPoint: 'localPoint', m_normalImpulse: 'normalImpulse', m_tangentImpulse: 'tangentImpulse' }, ['m_localPoint']);
 defineAccessor(b2ManifoldPoint.prototype, 'm_id', function () {
   return this.id;
 });
@@ -291,11 +282,10 @@ defineMethods(b2ManifoldPoint.prototype, {
   },
 });
 
-aliasFields(
-  b2Manifold.prototype,
-  { m_localPlaneNormal: 'localNormal', m_localPoint: 'localPoint', m_type: 'type', m_pointCount: 'pointCount' },
-  ['m_localPlaneNormal', 'm_localPoint'],
-);
+aliasFields(b2Manifold.prototype, { m_localPlaneNormal: 'localNormal', m_localPoint: 'localPoint', m_type: 'type', m_pointCount: 'pointCount' }, [
+  'm_localPlaneNormal',
+  'm_localPoint',
+]);
 defineAccessor(b2Manifold.prototype, 'm_points', function () {
   return this.points;
 });
@@ -401,12 +391,7 @@ const b2Vec2_origin: Readonly<b2Vec2> = new b2Vec2(0.0, 0.0);
  * would give the app several fixtures where it made one, so a longer outline is refused, saying how
  * to split it.
  */
-function setAsArray(
-  polygon: b2PolygonShape,
-  method: string,
-  vertices: readonly Readonly<b2Vec2>[],
-  count: number | undefined,
-): void {
+function setAsArray(polygon: b2PolygonShape, method: string, vertices: readonly Readonly<b2Vec2>[], count: number | undefined): void {
   if (!Array.isArray(vertices)) {
     throw new b2ArgumentError(method, 'vertices', `must be an array of vectors, got ${b2DescribeNumber(vertices)}`);
   }
@@ -473,8 +458,7 @@ defineStatics(b2PolygonShape, {
     polygon.SetAsEdge(v1, v2);
     return polygon;
   },
-  ComputeCentroid: (vertices: readonly Readonly<b2Vec2>[], count: number) =>
-    new b2PolygonShape().Set(vertices, count).m_centroid.Clone(),
+  ComputeCentroid: (vertices: readonly Readonly<b2Vec2>[], count: number) => new b2PolygonShape().Set(vertices, count).m_centroid.Clone(),
 });
 
 /**
@@ -508,17 +492,20 @@ const s_edgePolygon = new b2PolygonShape();
 // agree but for one case that apps hit: a circle centred exactly on the segment's line. 2.1a's
 // polygon test then takes the first normal, cross(v2 - v1, 1), and the edge the other side, so a
 // player spawned on a floor line fell through it. Other edges keep 2.2.1's edge collision.
-wrapMethod(b2EdgeAndCircleContact, 'Evaluate', (evaluate) =>
-  function (contact: b2Contact, manifold: b2Manifold, xfA: b2Transform, xfB: b2Transform) {
-    const edge = contact.m_fixtureA.m_shape;
-    if (!(edge instanceof b2PolygonEdgeShape)) {
-      evaluate(contact, manifold, xfA, xfB);
-      return;
-    }
-    s_edgePolygon.SetAsEdge(edge.m_vertex1, edge.m_vertex2);
-    s_edgePolygon.m_radius = edge.m_radius;
-    b2CollidePolygonAndCircle(manifold, s_edgePolygon, xfA, contact.m_fixtureB.m_shape as b2CircleShape, xfB);
-  },
+wrapMethod(
+  b2EdgeAndCircleContact,
+  'Evaluate',
+  (evaluate) =>
+    function (contact: b2Contact, manifold: b2Manifold, xfA: b2Transform, xfB: b2Transform) {
+      const edge = contact.m_fixtureA.m_shape;
+      if (!(edge instanceof b2PolygonEdgeShape)) {
+        evaluate(contact, manifold, xfA, xfB);
+        return;
+      }
+      s_edgePolygon.SetAsEdge(edge.m_vertex1, edge.m_vertex2);
+      s_edgePolygon.m_radius = edge.m_radius;
+      b2CollidePolygonAndCircle(manifold, s_edgePolygon, xfA, contact.m_fixtureB.m_shape as b2CircleShape, xfB);
+    },
 );
 
 /**

@@ -11,14 +11,7 @@ import { b2AABB, b2RayCastOutput } from '../collision/b2Collision';
 import type { b2RayCastInput } from '../collision/b2Collision';
 import { b2TestOverlapShapes } from '../collision/b2Collision';
 import { b2MassData, b2Shape } from '../collision/shapes/b2Shape';
-import {
-  b2ArgumentError,
-  b2CheckFinite,
-  b2CheckLimits,
-  b2CheckNonNegative,
-  b2DescribeNumber,
-  b2DestroyedError,
-} from '../common/b2ArgumentError';
+import { b2ArgumentError, b2CheckFinite, b2CheckLimits, b2CheckNonNegative, b2DescribeNumber, b2DestroyedError } from '../common/b2ArgumentError';
 import { b2Color } from '../common/b2Draw';
 import { b2Transform, b2Vec2 } from '../common/b2Math';
 import { b2_linearSlop } from '../common/b2Settings';
@@ -44,16 +37,7 @@ import { b2WeldJoint } from '../dynamics/joints/b2WeldJoint';
 import { b2WheelJoint, b2WheelJointDef } from '../dynamics/joints/b2WheelJoint';
 import { b2DebugDraw } from './b2DebugDraw';
 import { fixtureShapeFor2_1a } from './compatCollision';
-import {
-  acceptingArguments,
-  defineMethods,
-  defineRemovedProperty,
-  defineStatics,
-  removedClass,
-  removedError,
-  removedMethod,
-  wrapMethod,
-} from './patch';
+import { acceptingArguments, defineMethods, defineRemovedProperty, defineStatics, removedClass, removedError, removedMethod, wrapMethod } from './patch';
 
 /** 2.1a's query callback: return false to stop (anything falsy stops, as in 2.1a). */
 export type b2QueryFunction = (fixture: b2Fixture) => boolean | void;
@@ -71,19 +55,11 @@ declare module '../dynamics/b2World' {
      * Ray-cast the world, with a callback object (2.2.1) or a function (2.1a; it receives its
      * own copies of the point and the normal).
      */
-    RayCast(
-      callback: b2RayCastCallback | b2RayCastFunction,
-      point1: Readonly<b2Vec2>,
-      point2: Readonly<b2Vec2>,
-    ): void;
+    RayCast(callback: b2RayCastCallback | b2RayCastFunction, point1: Readonly<b2Vec2>, point2: Readonly<b2Vec2>): void;
     /** 2.1a: report each fixture containing the point. */
     QueryPoint(callback: b2QueryCallback | b2QueryFunction, p: Readonly<b2Vec2>): void;
     /** 2.1a: report each fixture overlapping the shape placed at the transform (default identity). */
-    QueryShape(
-      callback: b2QueryCallback | b2QueryFunction,
-      shape: b2Shape,
-      transform?: Readonly<b2Transform> | null,
-    ): void;
+    QueryShape(callback: b2QueryCallback | b2QueryFunction, shape: b2Shape, transform?: Readonly<b2Transform> | null): void;
     /** 2.1a: the fixture closest to point1 that the ray from point1 to point2 hits, or null. */
     RayCastOne(point1: Readonly<b2Vec2>, point2: Readonly<b2Vec2>): b2Fixture | null;
     /** 2.1a: every fixture the ray from point1 to point2 hits. */
@@ -305,68 +281,77 @@ function report(callback: b2QueryCallback | b2QueryFunction, fixture: b2Fixture)
   return typeof callback === 'function' ? Boolean(callback(fixture)) : callback.ReportFixture(fixture) !== false;
 }
 
-wrapMethod(b2World.prototype, 'QueryAABB', (queryAABB) =>
-  function (this: b2World, callback: b2QueryCallback | b2QueryFunction, aabb: Readonly<b2AABB>) {
-    queryAABB.call(this, queryCallbackOf(callback), aabb);
-  },
+wrapMethod(
+  b2World.prototype,
+  'QueryAABB',
+  (queryAABB) =>
+    function (this: b2World, callback: b2QueryCallback | b2QueryFunction, aabb: Readonly<b2AABB>) {
+      queryAABB.call(this, queryCallbackOf(callback), aabb);
+    },
 );
 
-wrapMethod(b2World.prototype, 'RayCast', (rayCast) =>
-  function (
-    this: b2World,
-    callback: b2RayCastCallback | b2RayCastFunction,
-    point1: Readonly<b2Vec2>,
-    point2: Readonly<b2Vec2>,
-  ) {
-    if (typeof callback === 'function') {
-      // 2.1a gave each report a fresh point; callers keep them.
-      const fn = callback;
-      callback = {
-        ReportFixture: (fixture: b2Fixture, point: b2Vec2, normal: b2Vec2, fraction: number) =>
-          fn(fixture, point.Clone(), normal.Clone(), fraction),
-      };
-    }
-    rayCast.call(this, callback, point1, point2);
-  },
+wrapMethod(
+  b2World.prototype,
+  'RayCast',
+  (rayCast) =>
+    function (this: b2World, callback: b2RayCastCallback | b2RayCastFunction, point1: Readonly<b2Vec2>, point2: Readonly<b2Vec2>) {
+      if (typeof callback === 'function') {
+        // 2.1a gave each report a fresh point; callers keep them.
+        const fn = callback;
+        callback = {
+          ReportFixture: (fixture: b2Fixture, point: b2Vec2, normal: b2Vec2, fraction: number) => fn(fixture, point.Clone(), normal.Clone(), fraction),
+        };
+      }
+      rayCast.call(this, callback, point1, point2);
+    },
 );
 
-wrapMethod(b2World.prototype, 'GetGravity', (getGravity) =>
-  function (this: b2World, out?: b2Vec2) {
-    return getGravity.call(this, out ?? new b2Vec2());
-  },
+wrapMethod(
+  b2World.prototype,
+  'GetGravity',
+  (getGravity) =>
+    function (this: b2World, out?: b2Vec2) {
+      return getGravity.call(this, out ?? new b2Vec2());
+    },
 );
 
-wrapMethod(b2World.prototype, 'DrawDebugData', (drawDebugData) =>
-  function (this: b2World) {
-    if (this.m_debugDraw instanceof b2DebugDraw) {
-      this.m_debugDraw.Clear();
-    }
-    drawDebugData.call(this);
-  },
+wrapMethod(
+  b2World.prototype,
+  'DrawDebugData',
+  (drawDebugData) =>
+    function (this: b2World) {
+      if (this.m_debugDraw instanceof b2DebugDraw) {
+        this.m_debugDraw.Clear();
+      }
+      drawDebugData.call(this);
+    },
 );
 
 // DrawShape is 2.1a's public DrawShape(shape, xf, color); a fixture also stands for its shape (the
 // C++ form). Accepted at run time only: a TypeScript overload cannot merge into the class's method.
-wrapMethod(b2World.prototype, 'DrawShape', (drawShape) =>
-  function (this: b2World, shape: b2Shape | b2Fixture, xf: Readonly<b2Transform>, color: b2Color) {
-    const method = 'b2World.DrawShape';
-    if (this.m_debugDraw === null) {
-      throw new b2ArgumentError(method, 'the world', 'has no debug draw (call SetDebugDraw first)');
-    }
-    if (shape instanceof b2Fixture) {
-      if (shape.m_destroyed) throw b2DestroyedError(method, 'fixture');
-      shape = shape.GetShape();
-    } else if (!(shape instanceof b2Shape)) {
-      throw new b2ArgumentError(method, 'shape', `must be a b2Shape or a b2Fixture, got ${b2DescribeNumber(shape)}`);
-    }
-    if (!(xf instanceof b2Transform)) {
-      throw new b2ArgumentError(method, 'xf', `must be a b2Transform, got ${b2DescribeNumber(xf)}`);
-    }
-    if (!(color instanceof b2Color)) {
-      throw new b2ArgumentError(method, 'color', `must be a b2Color, got ${b2DescribeNumber(color)}`);
-    }
-    drawShape.call(this, shape, xf, color);
-  },
+wrapMethod(
+  b2World.prototype,
+  'DrawShape',
+  (drawShape) =>
+    function (this: b2World, shape: b2Shape | b2Fixture, xf: Readonly<b2Transform>, color: b2Color) {
+      const method = 'b2World.DrawShape';
+      if (this.m_debugDraw === null) {
+        throw new b2ArgumentError(method, 'the world', 'has no debug draw (call SetDebugDraw first)');
+      }
+      if (shape instanceof b2Fixture) {
+        if (shape.m_destroyed) throw b2DestroyedError(method, 'fixture');
+        shape = shape.GetShape();
+      } else if (!(shape instanceof b2Shape)) {
+        throw new b2ArgumentError(method, 'shape', `must be a b2Shape or a b2Fixture, got ${b2DescribeNumber(shape)}`);
+      }
+      if (!(xf instanceof b2Transform)) {
+        throw new b2ArgumentError(method, 'xf', `must be a b2Transform, got ${b2DescribeNumber(xf)}`);
+      }
+      if (!(color instanceof b2Color)) {
+        throw new b2ArgumentError(method, 'color', `must be a b2Color, got ${b2DescribeNumber(color)}`);
+      }
+      drawShape.call(this, shape, xf, color);
+    },
 );
 
 const s_groundBodies = new WeakMap<b2World, b2Body>();
@@ -463,10 +448,7 @@ for (const name of ['AddController', 'RemoveController', 'CreateController', 'De
   });
 }
 Object.defineProperty(b2World.prototype, 'SetBroadPhase', {
-  value: removedMethod(
-    'b2World.SetBroadPhase',
-    'The world always uses its dynamic-tree broad phase (b2BroadPhase); remove the call.',
-  ),
+  value: removedMethod('b2World.SetBroadPhase', 'The world always uses its dynamic-tree broad phase (b2BroadPhase); remove the call.'),
   writable: true,
   configurable: true,
   enumerable: false,
@@ -480,34 +462,40 @@ defineStatics(b2Body, {
   b2_dynamicBody: b2BodyType.b2_dynamicBody,
 });
 
-wrapMethod(b2Body.prototype, 'CreateFixture', (createFixture) =>
-  function (this: b2Body, defOrShape: b2FixtureDef | b2Shape, density?: number) {
-    if (defOrShape instanceof b2Shape) {
-      return createFixture.call(this, fixtureShapeFor2_1a(defOrShape), density);
-    }
-    const shape = defOrShape.shape;
-    const fixtureShape = shape === null ? null : fixtureShapeFor2_1a(shape);
-    if (fixtureShape === shape) return createFixture.call(this, defOrShape);
-    // The caller's definition keeps its shape.
-    defOrShape.shape = fixtureShape;
-    try {
-      return createFixture.call(this, defOrShape);
-    } finally {
-      defOrShape.shape = shape;
-    }
-  },
+wrapMethod(
+  b2Body.prototype,
+  'CreateFixture',
+  (createFixture) =>
+    function (this: b2Body, defOrShape: b2FixtureDef | b2Shape, density?: number) {
+      if (defOrShape instanceof b2Shape) {
+        return createFixture.call(this, fixtureShapeFor2_1a(defOrShape), density);
+      }
+      const shape = defOrShape.shape;
+      const fixtureShape = shape === null ? null : fixtureShapeFor2_1a(shape);
+      if (fixtureShape === shape) return createFixture.call(this, defOrShape);
+      // The caller's definition keeps its shape.
+      defOrShape.shape = fixtureShape;
+      try {
+        return createFixture.call(this, defOrShape);
+      } finally {
+        defOrShape.shape = shape;
+      }
+    },
 );
 
 // 2.1a's SetTransform(xf) takes a b2Transform. Accepted at run time only: a TypeScript overload
 // cannot merge into SetTransform(position, angle).
-wrapMethod(b2Body.prototype, 'SetTransform', (setTransform) =>
-  function (this: b2Body, position: Readonly<b2Vec2> | Readonly<b2Transform>, angle?: number) {
-    if (angle === undefined && position instanceof b2Transform) {
-      setTransform.call(this, position.p, position.q.GetAngle());
-      return;
-    }
-    setTransform.call(this, position as Readonly<b2Vec2>, angle as number);
-  },
+wrapMethod(
+  b2Body.prototype,
+  'SetTransform',
+  (setTransform) =>
+    function (this: b2Body, position: Readonly<b2Vec2> | Readonly<b2Transform>, angle?: number) {
+      if (angle === undefined && position instanceof b2Transform) {
+        setTransform.call(this, position.p, position.q.GetAngle());
+        return;
+      }
+      setTransform.call(this, position as Readonly<b2Vec2>, angle as number);
+    },
 );
 
 defineMethods(b2Body.prototype, {
@@ -566,10 +554,7 @@ Object.defineProperty(b2BodyDef.prototype, 'inertiaScale', {
   },
   set(value: number) {
     if (value !== 1.0) {
-      throw removedError(
-        'b2BodyDef.inertiaScale',
-        'To change the rotational inertia, call body.SetMassData({mass, center, I}) after creating the fixtures.',
-      );
+      throw removedError('b2BodyDef.inertiaScale', 'To change the rotational inertia, call body.SetMassData({mass, center, I}) after creating the fixtures.');
     }
   },
   configurable: true,
@@ -578,38 +563,47 @@ Object.defineProperty(b2BodyDef.prototype, 'inertiaScale', {
 
 // Fixtures and filters
 
-wrapMethod(b2Fixture.prototype, 'GetAABB', (getAABB) =>
-  function (this: b2Fixture, childIndex?: number) {
-    if (childIndex !== undefined) return getAABB.call(this, childIndex);
-    if (this.m_proxyCount === 1) return getAABB.call(this, 0);
-    const aabb = new b2AABB();
-    if (this.m_proxyCount > 1) {
-      aabb.Assign(getAABB.call(this, 0));
-      for (let i = 1; i < this.m_proxyCount; ++i) aabb.Combine(getAABB.call(this, i));
+wrapMethod(
+  b2Fixture.prototype,
+  'GetAABB',
+  (getAABB) =>
+    function (this: b2Fixture, childIndex?: number) {
+      if (childIndex !== undefined) return getAABB.call(this, childIndex);
+      if (this.m_proxyCount === 1) return getAABB.call(this, 0);
+      const aabb = new b2AABB();
+      if (this.m_proxyCount > 1) {
+        aabb.Assign(getAABB.call(this, 0));
+        for (let i = 1; i < this.m_proxyCount; ++i) aabb.Combine(getAABB.call(this, i));
+        return aabb;
+      }
+      const shape = this.GetShape();
+      const xf = this.GetBody().GetTransform();
+      const childAABB = new b2AABB();
+      shape.ComputeAABB(aabb, xf, 0);
+      for (let i = 1; i < shape.GetChildCount(); ++i) {
+        shape.ComputeAABB(childAABB, xf, i);
+        aabb.Combine(childAABB);
+      }
       return aabb;
-    }
-    const shape = this.GetShape();
-    const xf = this.GetBody().GetTransform();
-    const childAABB = new b2AABB();
-    shape.ComputeAABB(aabb, xf, 0);
-    for (let i = 1; i < shape.GetChildCount(); ++i) {
-      shape.ComputeAABB(childAABB, xf, i);
-      aabb.Combine(childAABB);
-    }
-    return aabb;
-  },
+    },
 );
-wrapMethod(b2Fixture.prototype, 'RayCast', (rayCast) =>
-  function (this: b2Fixture, output: b2RayCastOutput, input: Readonly<b2RayCastInput>, childIndex?: number) {
-    return rayCast.call(this, output, input, childIndex ?? 0);
-  },
+wrapMethod(
+  b2Fixture.prototype,
+  'RayCast',
+  (rayCast) =>
+    function (this: b2Fixture, output: b2RayCastOutput, input: Readonly<b2RayCastInput>, childIndex?: number) {
+      return rayCast.call(this, output, input, childIndex ?? 0);
+    },
 );
-wrapMethod(b2Fixture.prototype, 'GetMassData', (getMassData) =>
-  function (this: b2Fixture, massData?: b2MassData) {
-    const out = massData ?? new b2MassData();
-    getMassData.call(this, out);
-    return out;
-  } as b2Fixture['GetMassData'],
+wrapMethod(
+  b2Fixture.prototype,
+  'GetMassData',
+  (getMassData) =>
+    function (this: b2Fixture, massData?: b2MassData) {
+      const out = massData ?? new b2MassData();
+      getMassData.call(this, out);
+      return out;
+    } as b2Fixture['GetMassData'],
 );
 
 defineMethods(b2Filter.prototype, {
@@ -715,8 +709,7 @@ function checkLineJointDef(def: b2LineJointDef): void {
     throw new b2ArgumentError(
       method,
       'def.enableLimit',
-      "must be false for a b2LineJointDef: Box2D 2.2's wheel joint, which the line joint became, has no translation " +
-        `limits (${prismaticInstead})`,
+      "must be false for a b2LineJointDef: Box2D 2.2's wheel joint, which the line joint became, has no translation " + `limits (${prismaticInstead})`,
     );
   }
   if (def.enableMotor) {
@@ -838,50 +831,67 @@ for (const joint of [
   b2WheelJoint,
 ]) {
   const proto = joint.prototype as b2Joint;
-  wrapMethod(proto, 'GetAnchorA', (getAnchorA) =>
-    function (this: b2Joint, out?: b2Vec2) {
-      return getAnchorA.call(this, out ?? new b2Vec2());
-    },
+  wrapMethod(
+    proto,
+    'GetAnchorA',
+    (getAnchorA) =>
+      function (this: b2Joint, out?: b2Vec2) {
+        return getAnchorA.call(this, out ?? new b2Vec2());
+      },
   );
-  wrapMethod(proto, 'GetAnchorB', (getAnchorB) =>
-    function (this: b2Joint, out?: b2Vec2) {
-      return getAnchorB.call(this, out ?? new b2Vec2());
-    },
+  wrapMethod(
+    proto,
+    'GetAnchorB',
+    (getAnchorB) =>
+      function (this: b2Joint, out?: b2Vec2) {
+        return getAnchorB.call(this, out ?? new b2Vec2());
+      },
   );
-  wrapMethod(proto, 'GetReactionForce', (getReactionForce) =>
-    function (this: b2Joint, inv_dt: number, out?: b2Vec2) {
-      return getReactionForce.call(this, inv_dt, out ?? new b2Vec2());
-    },
+  wrapMethod(
+    proto,
+    'GetReactionForce',
+    (getReactionForce) =>
+      function (this: b2Joint, inv_dt: number, out?: b2Vec2) {
+        return getReactionForce.call(this, inv_dt, out ?? new b2Vec2());
+      },
   );
 }
 
 /** 2.1a called these without the inverse time step, and got an impulse or the limit back. */
 function requireInvDt<T extends object>(proto: T, name: keyof T & string, limitGetter: string): void {
-  wrapMethod(proto, name, (original) =>
-    function (this: T, inv_dt: number) {
-      if (inv_dt === undefined) {
-        throw new Error(
-          `${name}() needs the inverse time step in Box2D 2.2: call ${name}(1 / timeStep) for the current value, ` +
-            `or ${limitGetter}() for the limit.`,
-        );
-      }
-      return (original as (inv_dt: number) => number).call(this, inv_dt);
-    } as T[keyof T & string],
+  wrapMethod(
+    proto,
+    name,
+    (original) =>
+      function (this: T, inv_dt: number) {
+        if (inv_dt === undefined) {
+          throw new Error(
+            `${name}() needs the inverse time step in Box2D 2.2: call ${name}(1 / timeStep) for the current value, ` + `or ${limitGetter}() for the limit.`,
+          );
+        }
+        return (original as (inv_dt: number) => number).call(this, inv_dt);
+      } as T[keyof T & string],
   );
 }
 requireInvDt(b2RevoluteJoint.prototype, 'GetMotorTorque', 'GetMaxMotorTorque');
 requireInvDt(b2PrismaticJoint.prototype, 'GetMotorForce', 'GetMaxMotorForce');
 requireInvDt(b2WheelJoint.prototype, 'GetMotorTorque', 'GetMaxMotorTorque');
 
-wrapMethod(b2PulleyJoint.prototype, 'GetGroundAnchorA', (getGroundAnchorA) =>
-  function (this: b2PulleyJoint, out?: b2Vec2) {
-    return getGroundAnchorA.call(this, out ?? new b2Vec2());
-  },
+wrapMethod(
+  b2PulleyJoint.prototype,
+  'GetGroundAnchorA',
+  (getGroundAnchorA) =>
+    function (this: b2PulleyJoint, out?: b2Vec2) {
+      return getGroundAnchorA.call(this, out ?? new b2Vec2());
+    },
 );
-wrapMethod(b2PulleyJoint.prototype, 'GetGroundAnchorB', (getGroundAnchorB) =>
-  function (this: b2PulleyJoint, out?: b2Vec2) {
-    return getGroundAnchorB.call(this, out ?? new b2Vec2());
-  },
+wrapMethod(
+  b2PulleyJoint.prototype,
+  'GetGroundAnchorB',
+  (getGroundAnchorB) =>
+    function (this: b2PulleyJoint, out?: b2Vec2) {
+      return getGroundAnchorB.call(this, out ?? new b2Vec2());
+    },
 );
 defineMethods(b2PulleyJoint.prototype, {
   GetLength1() {

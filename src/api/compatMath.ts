@@ -256,14 +256,17 @@ defineAccessor(
 );
 // 2.1a's Set(angle) sets the rotation matrix of an angle. It is accepted at run time only: a
 // TypeScript overload cannot merge into Set(c1, c2); typed code calls b2Mat22.FromAngle or SetVV.
-wrapMethod(b2Mat22.prototype, 'Set', (set) =>
-  function (this: b2Mat22, a: Readonly<b2Vec2> | number, b?: Readonly<b2Vec2>) {
-    if (typeof a === 'number') {
-      setRotationMatrix(this, a);
-      return this;
-    }
-    return set.call(this, a, b as Readonly<b2Vec2>);
-  } as b2Mat22['Set'],
+wrapMethod(
+  b2Mat22.prototype,
+  'Set',
+  (set) =>
+    function (this: b2Mat22, a: Readonly<b2Vec2> | number, b?: Readonly<b2Vec2>) {
+      if (typeof a === 'number') {
+        setRotationMatrix(this, a);
+        return this;
+      }
+      return set.call(this, a, b as Readonly<b2Vec2>);
+    } as b2Mat22['Set'],
 );
 defineMethods(b2Mat22.prototype, {
   SetVV(c1, c2) {
@@ -365,13 +368,16 @@ defineAccessor(
   },
 );
 // 2.1a's Set(xf) copies a transform. Accepted at run time only (typed code calls Assign).
-wrapMethod(b2Transform.prototype, 'Set', (set) =>
-  function (this: b2Transform, a: Readonly<b2Vec2> | Readonly<b2Transform>, angle?: number) {
-    if (angle === undefined && a instanceof b2Transform) {
-      return this.Assign(a);
-    }
-    return set.call(this, a as Readonly<b2Vec2>, angle as number);
-  } as b2Transform['Set'],
+wrapMethod(
+  b2Transform.prototype,
+  'Set',
+  (set) =>
+    function (this: b2Transform, a: Readonly<b2Vec2> | Readonly<b2Transform>, angle?: number) {
+      if (angle === undefined && a instanceof b2Transform) {
+        return this.Assign(a);
+      }
+      return set.call(this, a as Readonly<b2Vec2>, angle as number);
+    } as b2Transform['Set'],
 );
 defineMethods(b2Transform.prototype, {
   Initialize(position, R) {
@@ -454,8 +460,7 @@ export const b2Math = {
   Max: (a: number, b: number): number => b2Max(a, b),
   MaxV: (a: Readonly<b2Vec2>, b: Readonly<b2Vec2>): b2Vec2 => b2MaxV(a, b, new b2Vec2()),
   Clamp: (a: number, low: number, high: number): number => b2Clamp(a, low, high),
-  ClampV: (a: Readonly<b2Vec2>, low: Readonly<b2Vec2>, high: Readonly<b2Vec2>): b2Vec2 =>
-    b2ClampV(a, low, high, new b2Vec2()),
+  ClampV: (a: Readonly<b2Vec2>, low: Readonly<b2Vec2>, high: Readonly<b2Vec2>): b2Vec2 => b2ClampV(a, low, high, new b2Vec2()),
   /** 2.1a: exchange a[0] and b[0] (its stand-in for swapping two numbers by reference). */
   Swap: (a: unknown[], b: unknown[]): void => {
     const t = a[0];

@@ -23,11 +23,7 @@ export function defineMethods<T extends object>(proto: T, methods: Partial<T> & 
 }
 
 /** Replace an engine method by a wrapper that handles a 2.1a calling form and otherwise calls it. */
-export function wrapMethod<T extends object, K extends keyof T>(
-  proto: T,
-  name: K,
-  wrap: (original: T[K]) => T[K],
-): void {
+export function wrapMethod<T extends object, K extends keyof T>(proto: T, name: K, wrap: (original: T[K]) => T[K]): void {
   const original = proto[name];
   if (typeof original !== 'function') {
     throw new Error(`webphysics compat: ${String(name)} is not a method to wrap`);
@@ -41,12 +37,7 @@ export function wrapMethod<T extends object, K extends keyof T>(
 }
 
 /** A 2.1a field name read and written through its 2.2.1 equivalent. */
-export function defineAccessor<T extends object>(
-  proto: T,
-  name: string,
-  get: (this: T) => unknown,
-  set?: (this: T, value: any) => void,
-): void {
+export function defineAccessor<T extends object>(proto: T, name: string, get: (this: T) => unknown, set?: (this: T, value: any) => void): void {
   Object.defineProperty(proto, name, { get, set, configurable: true, enumerable: false });
 }
 

@@ -30,10 +30,7 @@ type BenchMain = (argv: string[]) => Promise<number>;
 async function loadBench(context: CliContext): Promise<BenchMain> {
   const runner = path.join(context.packageRoot, 'bench', 'run.mjs');
   if (!existsSync(runner)) {
-    throw new CliError(
-      'the benchmark suite is not part of the published package: run it from a checkout of the repository after `npm ci`',
-      EXIT_FAILURE,
-    );
+    throw new CliError('the benchmark suite is not part of the published package: run it from a checkout of the repository after `npm ci`', EXIT_FAILURE);
   }
   const module = (await import(pathToFileURL(runner).href)) as { main: BenchMain };
   return module.main;

@@ -67,9 +67,7 @@ export async function main(argv: string[], context: CliContext): Promise<number>
     const command = findCommand(first);
     if (command === undefined) {
       throw new CliError(
-        first.startsWith('-')
-          ? `unknown option ${first} (see webphysics --help)`
-          : `unknown command ${JSON.stringify(first)} (see webphysics --help)`,
+        first.startsWith('-') ? `unknown option ${first} (see webphysics --help)` : `unknown command ${JSON.stringify(first)} (see webphysics --help)`,
         EXIT_USAGE,
       );
     }

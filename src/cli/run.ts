@@ -92,16 +92,11 @@ function parseRunArgs(args: string[], context: CliContext): RunOptions | null {
   const out = text('out');
   if (out === '') throw usageError('--out expects a file name');
   return {
-    scenePath:
-      positionals.length === 1
-        ? path.resolve(context.cwd, positionals[0])
-        : path.join(context.packageRoot, DEFAULT_SCENE),
+    scenePath: positionals.length === 1 ? path.resolve(context.cwd, positionals[0]) : path.join(context.packageRoot, DEFAULT_SCENE),
     steps: steps === undefined ? DEFAULT_STEPS : parseInteger('steps', steps, 0),
     hz: hz === undefined ? undefined : parsePositive('hz', hz),
-    velocityIterations:
-      velocityIterations === undefined ? undefined : parseInteger('velocity-iterations', velocityIterations, 0),
-    positionIterations:
-      positionIterations === undefined ? undefined : parseInteger('position-iterations', positionIterations, 0),
+    velocityIterations: velocityIterations === undefined ? undefined : parseInteger('velocity-iterations', velocityIterations, 0),
+    positionIterations: positionIterations === undefined ? undefined : parseInteger('position-iterations', positionIterations, 0),
     out: out === undefined ? undefined : path.resolve(context.cwd, out),
   };
 }

@@ -5,14 +5,7 @@
 
 import { b2MakeArray } from '../common/b2MakeArray';
 import { b2Min, b2MulRV, b2MulTXV, b2MulTXX, b2MulXV, b2Normalize, b2Transform, b2Vec2, b2Vec2_zero } from '../common/b2Math';
-import {
-  b2_angularSlop,
-  b2_maxFloat,
-  b2_maxManifoldPoints,
-  b2_maxPolygonVertices,
-  b2_polygonRadius,
-  b2Assert,
-} from '../common/b2Settings';
+import { b2_angularSlop, b2_maxFloat, b2_maxManifoldPoints, b2_maxPolygonVertices, b2_polygonRadius, b2Assert } from '../common/b2Settings';
 import { b2ClipSegment, b2ClipSegmentOffset, b2ClipVertex, b2ContactFeature, b2ContactKey, b2Manifold } from './b2Collision';
 import { b2SetManifoldFace, b2SetManifoldPoint } from './b2ManifoldRecord';
 import type { b2CircleShape } from './shapes/b2CircleShape';
@@ -235,13 +228,7 @@ class b2EPCollider {
   // 6. Visit each separating axes, only accept axes within the range
   // 7. Return if _any_ axis indicates separation
   // 8. Clip
-  Collide(
-    manifold: b2Manifold,
-    edgeA: b2EdgeShape,
-    xfA: Readonly<b2Transform>,
-    polygonB: b2PolygonShape,
-    xfB: Readonly<b2Transform>,
-  ): void {
+  Collide(manifold: b2Manifold, edgeA: b2EdgeShape, xfA: Readonly<b2Transform>, polygonB: b2PolygonShape, xfB: Readonly<b2Transform>): void {
     const xf = b2MulTXX(xfA, xfB, this.m_xf);
 
     const centroidB = b2MulXV(xf, polygonB.m_centroid, this.m_centroidB);

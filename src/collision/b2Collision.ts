@@ -324,13 +324,7 @@ export class b2WorldManifold {
    * state. This does not change the point count, impulses, etc. The radii must come from the
    * shapes that generated the manifold.
    */
-  Initialize(
-    manifold: Readonly<b2Manifold>,
-    xfA: Readonly<b2Transform>,
-    radiusA: number,
-    xfB: Readonly<b2Transform>,
-    radiusB: number,
-  ): void {
+  Initialize(manifold: Readonly<b2Manifold>, xfA: Readonly<b2Transform>, radiusA: number, xfB: Readonly<b2Transform>, radiusB: number): void {
     if (manifold.pointCount === 0) {
       return;
     }
@@ -427,12 +421,7 @@ export const b2_removeState = b2PointState.b2_removeState;
  * manifold1 to manifold2. So state1 is either persist or remove while state2 is either add or
  * persist.
  */
-export function b2GetPointStates(
-  state1: b2PointState[],
-  state2: b2PointState[],
-  manifold1: Readonly<b2Manifold>,
-  manifold2: Readonly<b2Manifold>,
-): void {
+export function b2GetPointStates(state1: b2PointState[], state2: b2PointState[], manifold1: Readonly<b2Manifold>, manifold2: Readonly<b2Manifold>): void {
   for (let i = 0; i < b2_maxManifoldPoints; ++i) {
     state1[i] = b2_nullState;
     state2[i] = b2_nullState;
@@ -685,12 +674,7 @@ export const b2ClipSegmentOffset = new Float64Array(1);
  * boxes a double passed to a call it does not inline, which made this argument a heap allocation
  * for every polygon contact of every step (most of the bytes a step allocated).
  */
-export function b2ClipSegment(
-  vOut: readonly b2ClipVertex[],
-  vIn: readonly b2ClipVertex[],
-  normal: Readonly<b2Vec2>,
-  vertexIndexA: number,
-): number {
+export function b2ClipSegment(vOut: readonly b2ClipVertex[], vIn: readonly b2ClipVertex[], normal: Readonly<b2Vec2>, vertexIndexA: number): number {
   const offset = b2ClipSegmentOffset[0];
   const vIn0 = vIn[0];
   const vIn1 = vIn[1];

@@ -4,16 +4,7 @@
  * GJK using Voronoi regions (Christer Ericson) and barycentric coordinates.
  */
 
-import {
-  b2Cross,
-  b2Max,
-  b2MulTRV,
-  b2MulXV,
-  b2SubVV,
-  b2Transform,
-  b2Vec2,
-  b2Vec2Distance,
-} from '../common/b2Math';
+import { b2Cross, b2Max, b2MulTRV, b2MulXV, b2SubVV, b2Transform, b2Vec2, b2Vec2Distance } from '../common/b2Math';
 import { b2Assert, b2_epsilon } from '../common/b2Settings';
 import type { b2ChainShape } from './shapes/b2ChainShape';
 import type { b2CircleShape } from './shapes/b2CircleShape';

@@ -521,12 +521,7 @@ export class b2DynamicTree {
         const lowerY = fat[o + Box.lowerY];
         const upperX = fat[o + Box.upperX];
         const upperY = fat[o + Box.upperY];
-        if (
-          segmentLowerX - upperX > 0.0 ||
-          segmentLowerY - upperY > 0.0 ||
-          lowerX - segmentUpperX > 0.0 ||
-          lowerY - segmentUpperY > 0.0
-        ) {
+        if (segmentLowerX - upperX > 0.0 || segmentLowerY - upperY > 0.0 || lowerX - segmentUpperX > 0.0 || lowerY - segmentUpperY > 0.0) {
           continue;
         }
 

@@ -106,13 +106,7 @@ class b2SeparationFunction {
   readonly m_localPoint = new b2Vec2();
   readonly m_axis = new b2Vec2();
 
-  Initialize(
-    cache: Readonly<b2SimplexCache>,
-    proxyA: b2DistanceProxy,
-    sweepA: Readonly<b2Sweep>,
-    proxyB: b2DistanceProxy,
-    sweepB: Readonly<b2Sweep>,
-  ): void {
+  Initialize(cache: Readonly<b2SimplexCache>, proxyA: b2DistanceProxy, sweepA: Readonly<b2Sweep>, proxyB: b2DistanceProxy, sweepB: Readonly<b2Sweep>): void {
     // Vectors are set field by field and normalized by b2Normalize: this function is past V8's
     // inlining budget, and a call it leaves out of line boxes the doubles it passes or returns.
     const t1 = s_separationIo[0];

@@ -86,11 +86,7 @@ export function b2CheckObject(method: string, argument: string, value: unknown):
 export function b2CheckVec2(method: string, argument: string, v: { readonly x: number; readonly y: number }): void {
   b2CheckObject(method, argument, v);
   if (!isNumber(v.x) || !Number.isFinite(v.x) || !isNumber(v.y) || !Number.isFinite(v.y)) {
-    throw new b2ArgumentError(
-      method,
-      argument,
-      `must be a vector of finite numbers, got (${b2DescribeNumber(v.x)}, ${b2DescribeNumber(v.y)})`,
-    );
+    throw new b2ArgumentError(method, argument, `must be a vector of finite numbers, got (${b2DescribeNumber(v.x)}, ${b2DescribeNumber(v.y)})`);
   }
 }
 
@@ -99,11 +95,7 @@ export function b2CheckLimits(method: string, lowerArgument: string, upperArgume
   b2CheckFinite(method, lowerArgument, lower);
   b2CheckFinite(method, upperArgument, upper);
   if (!(lower <= upper)) {
-    throw new b2ArgumentError(
-      method,
-      lowerArgument,
-      `must not exceed ${upperArgument} (${b2DescribeNumber(lower)} > ${b2DescribeNumber(upper)})`,
-    );
+    throw new b2ArgumentError(method, lowerArgument, `must not exceed ${upperArgument} (${b2DescribeNumber(lower)} > ${b2DescribeNumber(upper)})`);
   }
 }
 

@@ -361,8 +361,7 @@ export class b2Mat33 {
     const ey = this.ey;
     const ez = this.ez;
     // det = dot(ex, cross(ey, ez))
-    let det =
-      ex.x * (ey.y * ez.z - ey.z * ez.y) + ex.y * (ey.z * ez.x - ey.x * ez.z) + ex.z * (ey.x * ez.y - ey.y * ez.x);
+    let det = ex.x * (ey.y * ez.z - ey.z * ez.y) + ex.y * (ey.z * ez.x - ey.x * ez.z) + ex.z * (ey.x * ez.y - ey.y * ez.x);
     if (det !== 0.0) {
       det = 1.0 / det;
     }
@@ -370,8 +369,7 @@ export class b2Mat33 {
     const by = b.y;
     const bz = b.z;
     // x = det * dot(b, cross(ey, ez))
-    const x =
-      det * (bx * (ey.y * ez.z - ey.z * ez.y) + by * (ey.z * ez.x - ey.x * ez.z) + bz * (ey.x * ez.y - ey.y * ez.x));
+    const x = det * (bx * (ey.y * ez.z - ey.z * ez.y) + by * (ey.z * ez.x - ey.x * ez.z) + bz * (ey.x * ez.y - ey.y * ez.x));
     // y = det * dot(ex, cross(b, ez))
     const y = det * (ex.x * (by * ez.z - bz * ez.y) + ex.y * (bz * ez.x - bx * ez.z) + ex.z * (bx * ez.y - by * ez.x));
     // z = det * dot(ex, cross(ey, b))
@@ -425,8 +423,7 @@ export class b2Mat33 {
     const ex = this.ex;
     const ey = this.ey;
     const ez = this.ez;
-    let det =
-      ex.x * (ey.y * ez.z - ey.z * ez.y) + ex.y * (ey.z * ez.x - ey.x * ez.z) + ex.z * (ey.x * ez.y - ey.y * ez.x);
+    let det = ex.x * (ey.y * ez.z - ey.z * ez.y) + ex.y * (ey.z * ez.x - ey.x * ez.z) + ex.z * (ey.x * ez.y - ey.y * ez.x);
     if (det !== 0.0) {
       det = 1.0 / det;
     }

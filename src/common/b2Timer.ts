@@ -1,6 +1,5 @@
 // The host's monotonic clock where it has one (browsers, Node, Deno), else the wall clock.
-const now: () => number =
-  typeof performance !== 'undefined' && typeof performance.now === 'function' ? () => performance.now() : () => Date.now();
+const now: () => number = typeof performance !== 'undefined' && typeof performance.now === 'function' ? () => performance.now() : () => Date.now();
 
 /** Timer for profiling (b2Timer.h), in milliseconds. */
 export class b2Timer {

@@ -8,15 +8,7 @@
 import { b2Assert, b2Log } from '../common/b2Settings';
 import { b2BodyFlags, b2BodyType, b2JointType, b2WorldFlags } from '../common/b2Constants';
 import { b2Transform, b2Sweep, b2SweepTime, b2Vec2 } from '../common/b2Math';
-import {
-  b2ArgumentError,
-  b2CheckFinite,
-  b2CheckNonNegative,
-  b2CheckObject,
-  b2CheckVec2,
-  b2DestroyedError,
-  b2LockedError,
-} from '../common/b2ArgumentError';
+import { b2ArgumentError, b2CheckFinite, b2CheckNonNegative, b2CheckObject, b2CheckVec2, b2DestroyedError, b2LockedError } from '../common/b2ArgumentError';
 import { b2MassData, b2Shape } from '../collision/shapes/b2Shape';
 import { b2Fixture, b2FixtureDef } from './b2Fixture';
 import type { b2World } from './b2World';
@@ -914,11 +906,7 @@ export class b2Body {
     if (type !== b2BodyType.b2_dynamicBody) {
       for (let je = this.m_jointList; je; je = je.next) {
         if (je.joint.m_type === b2JointType.e_mouseJoint && je.joint.m_bodyB === this) {
-          throw new b2ArgumentError(
-            'b2Body.SetType',
-            'type',
-            'must stay b2_dynamicBody while a mouse joint drags this body (destroy the mouse joint first)',
-          );
+          throw new b2ArgumentError('b2Body.SetType', 'type', 'must stay b2_dynamicBody while a mouse joint drags this body (destroy the mouse joint first)');
         }
       }
     }

@@ -14,11 +14,7 @@ import type { b2FixtureDef } from './b2Fixture';
 /** `type` must be one of b2_staticBody, b2_kinematicBody, b2_dynamicBody. */
 export function b2CheckBodyType(method: string, argument: string, type: b2BodyType): void {
   if (type !== b2BodyType.b2_staticBody && type !== b2BodyType.b2_kinematicBody && type !== b2BodyType.b2_dynamicBody) {
-    throw new b2ArgumentError(
-      method,
-      argument,
-      `must be b2_staticBody (0), b2_kinematicBody (1) or b2_dynamicBody (2), got ${b2DescribeNumber(type)}`,
-    );
+    throw new b2ArgumentError(method, argument, `must be b2_staticBody (0), b2_kinematicBody (1) or b2_dynamicBody (2), got ${b2DescribeNumber(type)}`);
   }
 }
 

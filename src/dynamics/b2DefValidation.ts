@@ -72,11 +72,7 @@ function checkGearJoint(method: string, argument: string, joint: b2Joint | null,
   b2CheckJointOf(method, argument, joint, world);
   const type = (joint as b2Joint).m_type;
   if (type !== b2JointType.e_revoluteJoint && type !== b2JointType.e_prismaticJoint) {
-    throw new b2ArgumentError(
-      method,
-      argument,
-      `must be a revolute or prismatic joint, got a ${b2JointType[type] ?? b2DescribeNumber(type)}`,
-    );
+    throw new b2ArgumentError(method, argument, `must be a revolute or prismatic joint, got a ${b2JointType[type] ?? b2DescribeNumber(type)}`);
   }
 }
 
@@ -188,10 +184,6 @@ export function b2CheckJointDef(method: string, def: Readonly<b2JointDef>, world
       return;
     }
     default:
-      throw new b2ArgumentError(
-        method,
-        'def.type',
-        `must be a joint type (use a b2XxxJointDef), got ${b2JointType[def.type] ?? b2DescribeNumber(def.type)}`,
-      );
+      throw new b2ArgumentError(method, 'def.type', `must be a joint type (use a b2XxxJointDef), got ${b2JointType[def.type] ?? b2DescribeNumber(def.type)}`);
   }
 }

@@ -229,9 +229,7 @@ export class b2Island {
       for (let j = 0; j < this.m_jointCount; ++j) {
         const record = jointRecords[j];
         const jointOkay =
-          record !== null
-            ? b2RevoluteSolvePosition(record, jointRecordOffsets[j], solverData)
-            : this.m_joints[j].SolvePositionConstraints(solverData);
+          record !== null ? b2RevoluteSolvePosition(record, jointRecordOffsets[j], solverData) : this.m_joints[j].SolvePositionConstraints(solverData);
         jointsOkay = jointsOkay && jointOkay;
       }
 
@@ -271,11 +269,7 @@ export class b2Island {
         }
 
         const v = b.m_linearVelocity;
-        if (
-          (b.m_flags & b2BodyFlags.e_autoSleepFlag) === 0 ||
-          b.m_angularVelocity * b.m_angularVelocity > angTolSqr ||
-          v.x * v.x + v.y * v.y > linTolSqr
-        ) {
+        if ((b.m_flags & b2BodyFlags.e_autoSleepFlag) === 0 || b.m_angularVelocity * b.m_angularVelocity > angTolSqr || v.x * v.x + v.y * v.y > linTolSqr) {
           b.m_sleepTime = 0.0;
           minSleepTime = 0.0;
         } else {

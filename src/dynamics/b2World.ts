@@ -21,14 +21,7 @@ import { b2MulRV, b2MulXV, b2Sweep, b2SweepTime, b2Transform, b2Vec2 } from '../
 import { b2Assert, b2Log, b2_epsilon, b2_maxPolygonVertices, b2_maxSubSteps, b2_maxTOIContacts } from '../common/b2Settings';
 import { b2Timer } from '../common/b2Timer';
 import { b2BodyType, b2JointType, b2WorldFlags } from '../common/b2Constants';
-import {
-  b2ArgumentError,
-  b2CheckInteger,
-  b2CheckObject,
-  b2CheckVec2,
-  b2DescribeNumber,
-  b2LockedError,
-} from '../common/b2ArgumentError';
+import { b2ArgumentError, b2CheckInteger, b2CheckObject, b2CheckVec2, b2DescribeNumber, b2LockedError } from '../common/b2ArgumentError';
 import { b2CheckBodyOf, b2CheckJointDef, b2CheckJointOf } from './b2DefValidation';
 import { b2Body, type b2BodyDef } from './b2Body';
 import { b2ContactManager } from './b2ContactManager';
@@ -37,14 +30,7 @@ import { b2AccuracyController, b2CheckAccuracyTarget, type b2Accuracy, type b2Ac
 import type { b2FixtureProxy } from './b2Fixture';
 import { b2Island } from './b2Island';
 import { b2Profile, b2TimeStep } from './b2TimeStep';
-import type {
-  b2ChangeListener,
-  b2ContactFilter,
-  b2ContactListener,
-  b2DestructionListener,
-  b2QueryCallback,
-  b2RayCastCallback,
-} from './b2WorldCallbacks';
+import type { b2ChangeListener, b2ContactFilter, b2ContactListener, b2DestructionListener, b2QueryCallback, b2RayCastCallback } from './b2WorldCallbacks';
 import { b2Contact, b2ContactScalars } from './contacts/b2Contact';
 import type { b2Joint, b2JointDef } from './joints/b2Joint';
 import { b2JointFactory } from './joints/b2JointFactory';
@@ -350,11 +336,7 @@ export class b2World {
     for (let je = b.m_jointList; je; je = je.next) {
       const gear = gearCoupling(je.joint);
       if (gear !== null && gear.m_bodyA !== b && gear.m_bodyB !== b) {
-        throw new b2ArgumentError(
-          'b2World.DestroyBody',
-          'body',
-          'has a joint that a gear joint on other bodies couples (destroy the gear joint first)',
-        );
+        throw new b2ArgumentError('b2World.DestroyBody', 'body', 'has a joint that a gear joint on other bodies couples (destroy the gear joint first)');
       }
     }
     b2Assert(this.m_bodyCount > 0);
@@ -1181,12 +1163,7 @@ export class b2World {
 
     // Size the island for the worst case.
     const island = this.m_island;
-    island.Initialize(
-      this.m_bodyCount,
-      this.m_contactManager.m_contactCount,
-      this.m_jointCount,
-      this.m_contactManager.m_contactListener,
-    );
+    island.Initialize(this.m_bodyCount, this.m_contactManager.m_contactCount, this.m_jointCount, this.m_contactManager.m_contactListener);
 
     // Clear all the island flags.
     for (let b = this.m_bodyList; b; b = b.m_next) {

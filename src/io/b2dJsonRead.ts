@@ -181,14 +181,7 @@ function checkAxis(path: string, key: string, axis: b2Vec2): void {
   if (!(axis.x * axis.x + axis.y * axis.y > 0)) fail(keyPath(path, key), 'expected a non-zero axis, got (0, 0)');
 }
 
-function optInteger(
-  o: b2dJsonObject,
-  key: string,
-  path: string,
-  defaultValue: number,
-  min: number,
-  max: number,
-): number {
+function optInteger(o: b2dJsonObject, key: string, path: string, defaultValue: number, min: number, max: number): number {
   const value = member(o, key);
   return value === undefined ? defaultValue : asInteger(value, keyPath(path, key), min, max);
 }
@@ -236,9 +229,7 @@ function reqVertices(o: b2dJsonObject, key: string, path: string): b2Vec2[] {
   if (xs.length !== ys.length) fail(p, `x has ${xs.length} entries but y has ${ys.length}`);
   const vertices: b2Vec2[] = [];
   for (let i = 0; i < xs.length; ++i) {
-    vertices.push(
-      new b2Vec2(asNumber(xs[i], indexPath(keyPath(p, 'x'), i)), asNumber(ys[i], indexPath(keyPath(p, 'y'), i))),
-    );
+    vertices.push(new b2Vec2(asNumber(xs[i], indexPath(keyPath(p, 'x'), i)), asNumber(ys[i], indexPath(keyPath(p, 'y'), i))));
   }
   return vertices;
 }
@@ -280,9 +271,7 @@ function readCustomProperty(value: unknown, path: string): b2dJsonCustomProperty
 
 function readMetadata(scene: b2dJsonScene, item: b2dJsonItem, o: b2dJsonObject, path: string): void {
   scene.setName(item, optString(o, 'name', path));
-  const properties = optArray(o, 'customProperties', path).map((v, i) =>
-    readCustomProperty(v, indexPath(keyPath(path, 'customProperties'), i)),
-  );
+  const properties = optArray(o, 'customProperties', path).map((v, i) => readCustomProperty(v, indexPath(keyPath(path, 'customProperties'), i)));
   scene.setCustomProperties(item, properties);
 }
 
@@ -455,10 +444,7 @@ function readBody(reading: Reading, value: unknown, path: string): b2Body {
     const data = massData;
     guard(keyPath(path, 'massData-mass'), () => body.SetMassData(data));
   }
-  b2dJsonRecordBody(
-    body,
-    new b2dJsonBodyRecipe(def.position.Clone(), def.angle, def.linearVelocity.Clone(), def.angularVelocity, massData),
-  );
+  b2dJsonRecordBody(body, new b2dJsonBodyRecipe(def.position.Clone(), def.angle, def.linearVelocity.Clone(), def.angularVelocity, massData));
   readMetadata(scene, body, o, path);
   return body;
 }

@@ -60,11 +60,7 @@ function isValueObject(value: unknown): boolean {
  * (b2Vec2, b2Vec3, b2Mat22, b2Mat33, b2Rot, b2Jacobian) it owns; references to other engine
  * objects (bodies, joints, edges) and user data are skipped. The names are dotted paths.
  */
-export function b2dJsonForEachField(
-  object: object,
-  visit: (name: string, value: number | boolean) => void,
-  prefix = '',
-): void {
+export function b2dJsonForEachField(object: object, visit: (name: string, value: number | boolean) => void, prefix = ''): void {
   for (const key of Object.keys(object)) {
     const value = (object as Record<string, unknown>)[key];
     const name = prefix === '' ? key : `${prefix}.${key}`;
@@ -313,12 +309,7 @@ function readJointState(j: b2Joint, o: b2dJsonObject, path: string): void {
   }
 }
 
-function fixtureAt(
-  bodies: readonly b2Body[],
-  fixtures: readonly b2Fixture[][],
-  value: unknown,
-  path: string,
-): [b2Fixture, number] {
+function fixtureAt(bodies: readonly b2Body[], fixtures: readonly b2Fixture[][], value: unknown, path: string): [b2Fixture, number] {
   const [bi, fi, ci] = arr(value, path, 3);
   const body = int(bi, `${path}[0]`, 0, bodies.length - 1);
   const fixture = fixtures[body][int(fi, `${path}[1]`, 0, fixtures[body].length - 1)];
@@ -330,12 +321,7 @@ function fixtureAt(
  * Apply a `webphysicsState` object to a world freshly built from the same document's plain part
  * (`bodies` and `joints` in creation order). Throws b2dJsonError naming the offending path.
  */
-export function b2dJsonReadState(
-  world: b2World,
-  bodies: readonly b2Body[],
-  joints: readonly b2Joint[],
-  value: unknown,
-): void {
+export function b2dJsonReadState(world: b2World, bodies: readonly b2Body[], joints: readonly b2Joint[], value: unknown): void {
   const root = b2dJson_stateKey;
   const o = obj(value, root);
   const version = o.version;

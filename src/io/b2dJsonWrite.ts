@@ -151,13 +151,7 @@ function samePolygon(a: b2PolygonShape, b: b2PolygonShape): boolean {
   return true;
 }
 
-function boxReproduces(
-  shape: b2PolygonShape,
-  hx: number,
-  hy: number,
-  center: Readonly<b2Vec2> | null,
-  angle: number,
-): boolean {
+function boxReproduces(shape: b2PolygonShape, hx: number, hy: number, center: Readonly<b2Vec2> | null, angle: number): boolean {
   // SetAsBox takes positive half-widths only (a box turned by pi can look like negative ones).
   if (!(hx > 0.0 && hy > 0.0)) return false;
   if (center === null) s_polygon.SetAsBox(hx, hy);
@@ -637,9 +631,7 @@ function stringifyValue(value: b2dJsonValue, indent: string, current: string, pa
   const keys = Object.keys(value).filter((k) => value[k] !== undefined);
   if (keys.length === 0) return '{}';
   const colon = indent === '' ? ':' : ': ';
-  const members = keys.map(
-    (k) => `${JSON.stringify(k)}${colon}${stringifyValue(value[k], indent, inner, path === '' ? k : `${path}.${k}`)}`,
-  );
+  const members = keys.map((k) => `${JSON.stringify(k)}${colon}${stringifyValue(value[k], indent, inner, path === '' ? k : `${path}.${k}`)}`);
   return `{${open}${members.join(separator)}${close}}`;
 }
 
@@ -648,16 +640,11 @@ function stringifyValue(value: b2dJsonValue, indent: string, current: string, pa
  * (which JSON.parse reads back as -0) and refusing non-finite numbers with their path.
  */
 export function b2dJsonStringify(value: b2dJsonValue, space: string | number = ''): string {
-  const indent =
-    typeof space === 'number' ? ' '.repeat(Math.max(0, Math.min(10, Math.floor(space)))) : space.slice(0, 10);
+  const indent = typeof space === 'number' ? ' '.repeat(Math.max(0, Math.min(10, Math.floor(space)))) : space.slice(0, 10);
   return stringifyValue(value, indent, '', '');
 }
 
 /** b2dJsonWrite, serialized with b2dJsonStringify. */
-export function b2dJsonWriteString(
-  source: b2World | b2dJsonScene,
-  space: string | number = '',
-  options: b2dJsonWriteOptions = {},
-): string {
+export function b2dJsonWriteString(source: b2World | b2dJsonScene, space: string | number = '', options: b2dJsonWriteOptions = {}): string {
   return b2dJsonStringify(b2dJsonWrite(source, options), space);
 }

@@ -58,10 +58,7 @@ export class b2Rope {
 
   Initialize(def: Readonly<b2RopeDef>): void {
     b2Assert(def.count >= 3, 'b2Rope.Initialize: count must be at least 3');
-    b2Assert(
-      def.vertices.length >= def.count && def.masses.length >= def.count,
-      'b2Rope.Initialize: vertices and masses need count entries',
-    );
+    b2Assert(def.vertices.length >= def.count && def.masses.length >= def.count, 'b2Rope.Initialize: vertices and masses need count entries');
     const count = def.count;
     this.m_count = count;
     this.m_ps = new Array<b2Vec2>(count);

@@ -130,13 +130,9 @@ describe('b2DebugDraw', () => {
       0.4,
     ]);
     expect(dd.GetFlags()).toBe(0x1 | 0x4);
-    expect([
-      b2DebugDraw.e_shapeBit,
-      b2DebugDraw.e_jointBit,
-      b2DebugDraw.e_aabbBit,
-      b2DebugDraw.e_pairBit,
-      b2DebugDraw.e_centerOfMassBit,
-    ]).toEqual([1, 2, 4, 8, 16]);
+    expect([b2DebugDraw.e_shapeBit, b2DebugDraw.e_jointBit, b2DebugDraw.e_aabbBit, b2DebugDraw.e_pairBit, b2DebugDraw.e_centerOfMassBit]).toEqual([
+      1, 2, 4, 8, 16,
+    ]);
   });
 
   it('e_shapeBit: solid polygons and circles in the color of their body state, edges and chains as segments', () => {
@@ -167,13 +163,7 @@ describe('b2DebugDraw', () => {
       'rgba(128,128,230,1)', // kinematic (0.5, 0.5, 0.9)
       'rgba(128,230,128,1)', // static box (0.5, 0.9, 0.5)
     ]);
-    expect(fills(calls)).toEqual([
-      'rgba(230,179,179,0.5)',
-      'rgba(128,128,77,0.5)',
-      'rgba(153,153,153,0.5)',
-      'rgba(128,128,230,0.5)',
-      'rgba(128,230,128,0.5)',
-    ]);
+    expect(fills(calls)).toEqual(['rgba(230,179,179,0.5)', 'rgba(128,128,77,0.5)', 'rgba(153,153,153,0.5)', 'rgba(128,128,230,0.5)', 'rgba(128,230,128,0.5)']);
     const shapes = drawing(calls);
     // Chain: a segment, then a 0.05 circle at its first vertex, for each of its two edges.
     expect(shapes.slice(0, 12)).toEqual([

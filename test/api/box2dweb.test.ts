@@ -38,9 +38,7 @@ describe('the classic script in a browser-like page', () => {
     }
     expect(page.run('Box2D.Dynamics.b2Body.b2_dynamicBody')).toBe(2);
     expect(page.run('Box2D.Dynamics.b2DebugDraw.e_centerOfMassBit')).toBe(0x10);
-    expect(page.run('new Box2D.Dynamics.Joints.b2RevoluteJointDef().type')).toBe(
-      page.run('Box2D.Dynamics.Joints.b2Joint.e_revoluteJoint'),
-    );
+    expect(page.run('new Box2D.Dynamics.Joints.b2RevoluteJointDef().type')).toBe(page.run('Box2D.Dynamics.Joints.b2Joint.e_revoluteJoint'));
   });
 
   for (const script of ['box2d.js', 'box2d.min.js']) {

@@ -95,9 +95,7 @@ describe('destroying while walking the lists', () => {
 
   it('leaves the destroyed body and joint unusable, and the world consistent', () => {
     const { world, doomedBody, doomedJoint } = destroyWhileWalking(webphysics);
-    expect(thrown(() => doomedBody.ApplyForce(new wp.b2Vec2(1, 0), new wp.b2Vec2(0, 0))).message).toBe(
-      'b2Body.ApplyForce: this body has been destroyed',
-    );
+    expect(thrown(() => doomedBody.ApplyForce(new wp.b2Vec2(1, 0), new wp.b2Vec2(0, 0))).message).toBe('b2Body.ApplyForce: this body has been destroyed');
     expect(thrown(() => world.DestroyBody(doomedBody)).message).toBe('b2World.DestroyBody: body has been destroyed');
     expect(thrown(() => world.DestroyJoint(doomedJoint)).message).toBe('b2World.DestroyJoint: joint has been destroyed');
     let count = 0;
@@ -210,15 +208,11 @@ describe('world.DrawShape', () => {
     expect(shapeError).toBeInstanceOf(wp.b2ArgumentError);
     expect(shapeError.message).toBe('b2World.DrawShape: shape must be a b2Shape or a b2Fixture, got an object');
     expect(thrown(() => world.DrawShape(circle, null, color)).message).toBe('b2World.DrawShape: xf must be a b2Transform, got null');
-    expect(thrown(() => world.DrawShape(circle, xf, undefined)).message).toBe(
-      'b2World.DrawShape: color must be a b2Color, got undefined',
-    );
+    expect(thrown(() => world.DrawShape(circle, xf, undefined)).message).toBe('b2World.DrawShape: color must be a b2Color, got undefined');
     body.DestroyFixture(fixture);
     expect(thrown(() => world.DrawShape(fixture, xf, color)).message).toBe('b2World.DrawShape: fixture has been destroyed');
     world.SetDebugDraw(null);
-    expect(thrown(() => world.DrawShape(circle, xf, color)).message).toBe(
-      'b2World.DrawShape: the world has no debug draw (call SetDebugDraw first)',
-    );
+    expect(thrown(() => world.DrawShape(circle, xf, color)).message).toBe('b2World.DrawShape: the world has no debug draw (call SetDebugDraw first)');
     // The world is untouched.
     world.Step(1 / 60, 8, 3);
     expect(world.GetBodyCount()).toBe(1);
@@ -416,7 +410,9 @@ describe('b2LineJointDef', () => {
     def.enableLimit = true;
     const limitError = thrown(() => world.CreateJoint(def));
     expect(limitError).toBeInstanceOf(wp.b2ArgumentError);
-    expect(limitError.message).toMatch(/^b2World\.CreateJoint: def\.enableLimit must be false for a b2LineJointDef: .*no translation limits .*b2PrismaticJointDef/);
+    expect(limitError.message).toMatch(
+      /^b2World\.CreateJoint: def\.enableLimit must be false for a b2LineJointDef: .*no translation limits .*b2PrismaticJointDef/,
+    );
     def.enableLimit = false;
     def.enableMotor = true;
     expect(thrown(() => world.CreateJoint(def)).message).toMatch(
@@ -482,8 +478,7 @@ describe('Box2D.Collision.b2Segment', () => {
 
 describe('polygons of more than b2_maxPolygonVertices', () => {
   /** A regular polygon of n vertices, counter-clockwise, as plain {x, y} objects. */
-  const outline = (n: number) =>
-    Array.from({ length: n }, (_, i) => ({ x: Math.cos((2 * Math.PI * i) / n), y: Math.sin((2 * Math.PI * i) / n) }));
+  const outline = (n: number) => Array.from({ length: n }, (_, i) => ({ x: Math.cos((2 * Math.PI * i) / n), y: Math.sin((2 * Math.PI * i) / n) }));
 
   it('are refused, saying how to split them (2.1a took any number), and the shape is left as it was', () => {
     const accepted = box2dweb.Collision.Shapes.b2PolygonShape.AsArray(outline(12), 12);
@@ -498,9 +493,7 @@ describe('polygons of more than b2_maxPolygonVertices', () => {
     );
     expect(polygon.m_vertexCount).toBe(4);
     expect(polygon.m_vertices[2].y).toBe(2);
-    expect(thrown(() => wp.b2PolygonShape.AsVector(outline(9) as wp.b2Vec2[])).message).toMatch(
-      /^b2PolygonShape\.AsVector: vertices has 9 vertices/,
-    );
+    expect(thrown(() => wp.b2PolygonShape.AsVector(outline(9) as wp.b2Vec2[])).message).toMatch(/^b2PolygonShape\.AsVector: vertices has 9 vertices/);
     expect(thrown(() => polygon.SetAsVector(null as unknown as wp.b2Vec2[])).message).toBe(
       'b2PolygonShape.SetAsVector: vertices must be an array of vectors, got null',
     );
@@ -561,13 +554,26 @@ describe('2.1a habits that keep working', () => {
     fd.density = 1;
     fd.friction = 0.5;
     fd.shape = new b2PolygonShape();
-    fd.shape.SetAsArray([{ x: -10, y: 0 }, { x: 10, y: 0 }, { x: 10, y: 1 }, { x: -10, y: 1 }], 4);
+    fd.shape.SetAsArray(
+      [
+        { x: -10, y: 0 },
+        { x: 10, y: 0 },
+        { x: 10, y: 1 },
+        { x: -10, y: 1 },
+      ],
+      4,
+    );
     const bd = new b2BodyDef();
     bd.position.Set(0, 10);
     world.CreateBody(bd).CreateFixture(fd);
     bd.type = b2Body.b2_dynamicBody;
     fd.shape = new b2PolygonShape();
-    fd.shape.SetAsArray([{ x: -0.5, y: -0.5 }, { x: 0.5, y: -0.5 }, { x: 0.5, y: 0.5 }, { x: -0.5, y: 0.5 }]);
+    fd.shape.SetAsArray([
+      { x: -0.5, y: -0.5 },
+      { x: 0.5, y: -0.5 },
+      { x: 0.5, y: 0.5 },
+      { x: -0.5, y: 0.5 },
+    ]);
     const boxes = [];
     const jd = new b2DistanceJointDef();
     for (let i = 0; i < 4; i++) {
@@ -650,11 +656,14 @@ describe('2.1a habits that keep working', () => {
     try {
       const result = reusedDefinitions(webphysics);
       expect(result.jointCount).toBe(3);
-      const scene = wp.b2dJsonRead({
-        gravity: { x: 0, y: -10 },
-        body: [{ type: 2, awake: true, fixture: [{ density: 1, circle: { radius: 1 } }] }],
-        joint: [{ type: 'motor', bodyA: 0, bodyB: 0 }],
-      }, { skipUnknown: true });
+      const scene = wp.b2dJsonRead(
+        {
+          gravity: { x: 0, y: -10 },
+          body: [{ type: 2, awake: true, fixture: [{ density: 1, circle: { radius: 1 } }] }],
+          joint: [{ type: 'motor', bodyA: 0, bodyB: 0 }],
+        },
+        { skipUnknown: true },
+      );
       scene.step();
       expect(scene.bodies[0].GetPosition().y).toBeLessThan(0);
       expect(wp.b2dJsonWriteString(scene)).toContain('"body"');
@@ -684,8 +693,6 @@ for (const name of ['beginPath', 'closePath', 'moveTo', 'lineTo', 'arc', 'stroke
 /** What a drawing puts on the canvas: circles (centre, radius) and the distinct path points. */
 function geometry(context: RecordingContext): { arcs: number[][]; points: string[] } {
   const arcs = context.calls.filter((c) => c[0] === 'arc').map((c) => c.slice(1, 4) as number[]);
-  const points = context.calls
-    .filter((c) => (c[0] === 'moveTo' || c[0] === 'lineTo') && !(c[1] === 0 && c[2] === 0))
-    .map((c) => `${c[1]},${c[2]}`);
+  const points = context.calls.filter((c) => (c[0] === 'moveTo' || c[0] === 'lineTo') && !(c[1] === 0 && c[2] === 0)).map((c) => `${c[1]},${c[2]}`);
   return { arcs, points: [...new Set(points)].sort() };
 }

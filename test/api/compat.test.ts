@@ -261,9 +261,7 @@ describe('Box2D.Collision', () => {
     expect(b2PolygonShape.AsArray(vertices, 0)).toEqual(new b2PolygonShape().Set(vertices));
     expect(b2PolygonShape.AsVector(vertices, 3)).toEqual(new b2PolygonShape().Set(vertices, 3));
     expect(b2PolygonShape.AsBox(1, 2)).toEqual(new b2PolygonShape().SetAsBox(1, 2));
-    expect(b2PolygonShape.AsOrientedBox(1, 2, new b2Vec2(3, 4), 0.5)).toEqual(
-      new b2PolygonShape().SetAsBox(1, 2, new b2Vec2(3, 4), 0.5),
-    );
+    expect(b2PolygonShape.AsOrientedBox(1, 2, new b2Vec2(3, 4), 0.5)).toEqual(new b2PolygonShape().SetAsBox(1, 2, new b2Vec2(3, 4), 0.5));
     const shape = new b2PolygonShape();
     shape.SetAsArray(vertices);
     expect(shape.GetVertices()).toEqual(vertices);
@@ -289,9 +287,7 @@ describe('Box2D.Collision', () => {
     const box = dynamicBody(world, 0, 2, b2PolygonShape.AsBox(0.5, 0.5));
     for (let i = 0; i < 120; ++i) world.Step(1 / 60, 8, 3);
     expect(box.GetPosition().y).toBeCloseTo(0.5, 1);
-    expect(groundBody.CreateFixture2(b2PolygonShape.AsEdge(new b2Vec2(0, 0), new b2Vec2(1, 1))).GetType()).toBe(
-      wp.b2Shape.e_edge,
-    );
+    expect(groundBody.CreateFixture2(b2PolygonShape.AsEdge(new b2Vec2(0, 0), new b2Vec2(1, 1))).GetType()).toBe(wp.b2Shape.e_edge);
   });
 });
 
@@ -391,13 +387,7 @@ describe('Box2D.Dynamics', () => {
     a.SetLinearVelocity(new b2Vec2(1, 2));
     a.SetUserData({ name: 'a' });
     const def = a.GetDefinition();
-    expect([def.type, def.position.x, def.angle, def.linearVelocity.y, def.userData.name]).toEqual([
-      wp.b2_dynamicBody,
-      -1,
-      a.GetAngle(),
-      2,
-      'a',
-    ]);
+    expect([def.type, def.position.x, def.angle, def.linearVelocity.y, def.userData.name]).toEqual([wp.b2_dynamicBody, -1, a.GetAngle(), 2, 'a']);
     const twin = world.CreateBody(def);
     expect([twin.GetPosition().x, twin.GetAngle(), twin.GetLinearVelocity().x]).toEqual([-1, a.GetAngle(), 1]);
 

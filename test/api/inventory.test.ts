@@ -46,10 +46,19 @@ import type {
 const OMITTED: readonly (readonly [cpp: string, reason: string])[] = [
   ['b2Settings.h: void* b2Alloc(int32 size)', 'allocator: JavaScript memory is garbage collected'],
   ['b2Settings.h: void b2Free(void* mem)', 'allocator: JavaScript memory is garbage collected'],
-  ['b2BlockAllocator.h: class b2BlockAllocator (Allocate, Free, Clear, b2_chunkSize, b2_maxBlockSize, b2_blockSizes, b2_chunkArrayIncrement)', 'allocator (§2.5): objects come from the garbage-collected heap'],
-  ['b2StackAllocator.h: class b2StackAllocator (Allocate, Free, GetMaxAllocation, b2StackEntry, b2_stackSize, b2_maxStackEntries)', 'allocator (§2.5): solver scratch arrays are preallocated and reused instead'],
+  [
+    'b2BlockAllocator.h: class b2BlockAllocator (Allocate, Free, Clear, b2_chunkSize, b2_maxBlockSize, b2_blockSizes, b2_chunkArrayIncrement)',
+    'allocator (§2.5): objects come from the garbage-collected heap',
+  ],
+  [
+    'b2StackAllocator.h: class b2StackAllocator (Allocate, Free, GetMaxAllocation, b2StackEntry, b2_stackSize, b2_maxStackEntries)',
+    'allocator (§2.5): solver scratch arrays are preallocated and reused instead',
+  ],
   ['b2BlockAllocator* argument of b2Shape::Clone', 'allocator argument: dropped, the method exists without it'],
-  ['destructors ~b2World, ~b2Draw, ~b2Shape, ~b2ChainShape, ~b2DynamicTree, ~b2BroadPhase, ~b2Rope', 'allocator: they only release allocator or heap memory, which the garbage collector does'],
+  [
+    'destructors ~b2World, ~b2Draw, ~b2Shape, ~b2ChainShape, ~b2DynamicTree, ~b2BroadPhase, ~b2Rope',
+    'allocator: they only release allocator or heap memory, which the garbage collector does',
+  ],
 ];
 
 /** Names that must stay absent, so OMITTED cannot hide something that was ported after all. */
@@ -109,7 +118,14 @@ class NullDraw extends WP.b2Draw {
 }
 
 // Compile-time checks of the pure virtual members (tsc fails if one is missing or renamed).
-const pureDraw = ['DrawPolygon', 'DrawSolidPolygon', 'DrawCircle', 'DrawSolidCircle', 'DrawSegment', 'DrawTransform'] as const satisfies readonly (keyof b2Draw)[];
+const pureDraw = [
+  'DrawPolygon',
+  'DrawSolidPolygon',
+  'DrawCircle',
+  'DrawSolidCircle',
+  'DrawSegment',
+  'DrawTransform',
+] as const satisfies readonly (keyof b2Draw)[];
 const pureShape = ['Clone', 'GetChildCount', 'TestPoint', 'RayCast', 'ComputeAABB', 'ComputeMass'] as const satisfies readonly (keyof b2Shape)[];
 const pureListener = ['SayGoodbyeJoint', 'SayGoodbyeFixture'] as const satisfies readonly (keyof b2DestructionListener)[];
 const pureQuery = ['ReportFixture'] as const satisfies readonly (keyof b2QueryCallback)[];
@@ -156,14 +172,7 @@ const JOINT_COMMON = ['GetAnchorA', 'GetAnchorB', 'GetReactionForce', 'GetReacti
 const JOINT_SOLVER = ['InitVelocityConstraints', 'SolveVelocityConstraints', 'SolvePositionConstraints'];
 const JOINT_DEF_BASE = ['type', 'userData', 'bodyA', 'bodyB', 'collideConnected'];
 /** The shape interface (§2.11), implemented by each shape. */
-const SHAPE_VIRTUALS: readonly Member[] = [
-  ['Clone(b2BlockAllocator*)', 'Clone'],
-  'GetChildCount',
-  'TestPoint',
-  'RayCast',
-  'ComputeAABB',
-  'ComputeMass',
-];
+const SHAPE_VIRTUALS: readonly Member[] = [['Clone(b2BlockAllocator*)', 'Clone'], 'GetChildCount', 'TestPoint', 'RayCast', 'ComputeAABB', 'ComputeMass'];
 
 const SECTIONS: readonly Section[] = [
   {
@@ -491,14 +500,7 @@ const SECTIONS: readonly Section[] = [
       {
         cls: 'b2PolygonShape',
         fields: ['m_centroid', 'm_vertices', 'm_normals', 'm_vertexCount'],
-        methods: [
-          'Set',
-          ['SetAsBox(hx, hy)', 'SetAsBox'],
-          ['SetAsBox(hx, hy, center, angle)', 'SetAsBox'],
-          'GetVertexCount',
-          'GetVertex',
-          ...SHAPE_VIRTUALS,
-        ],
+        methods: ['Set', ['SetAsBox(hx, hy)', 'SetAsBox'], ['SetAsBox(hx, hy, center, angle)', 'SetAsBox'], 'GetVertexCount', 'GetVertex', ...SHAPE_VIRTUALS],
       },
     ],
     ctors: [
@@ -745,11 +747,7 @@ const SECTIONS: readonly Section[] = [
   },
   {
     header: 'b2Contact.h',
-    exports: [
-      'b2MixFriction',
-      'b2MixRestitution',
-      ['b2Contact::InitializeRegisters', 'b2InitializeContactRegisters'],
-    ],
+    exports: ['b2MixFriction', 'b2MixRestitution', ['b2Contact::InitializeRegisters', 'b2InitializeContactRegisters']],
     classes: [
       { cls: 'b2ContactRegister', fields: ['createFcn', 'destroyFcn', 'primary'] },
       { cls: 'b2ContactEdge', fields: ['other', 'contact', 'prev', 'next'] },
@@ -812,16 +810,37 @@ const SECTIONS: readonly Section[] = [
         pure: pureJoint,
         impls: JOINTS,
       },
-      { cls: 'b2JointFactory', statics: [['b2Joint::Create', 'Create'], ['b2Joint::Destroy', 'Destroy']] },
+      {
+        cls: 'b2JointFactory',
+        statics: [
+          ['b2Joint::Create', 'Create'],
+          ['b2Joint::Destroy', 'Destroy'],
+        ],
+      },
     ],
   },
   {
     header: 'b2DistanceJoint.h',
     classes: [
-      { cls: 'b2DistanceJointDef', fields: [...JOINT_DEF_BASE, 'localAnchorA', 'localAnchorB', 'length', 'frequencyHz', 'dampingRatio'], methods: ['Initialize'] },
+      {
+        cls: 'b2DistanceJointDef',
+        fields: [...JOINT_DEF_BASE, 'localAnchorA', 'localAnchorB', 'length', 'frequencyHz', 'dampingRatio'],
+        methods: ['Initialize'],
+      },
       {
         cls: 'b2DistanceJoint',
-        methods: [...JOINT_COMMON, 'GetLocalAnchorA', 'GetLocalAnchorB', 'SetLength', 'GetLength', 'SetFrequency', 'GetFrequency', 'SetDampingRatio', 'GetDampingRatio', ...JOINT_SOLVER],
+        methods: [
+          ...JOINT_COMMON,
+          'GetLocalAnchorA',
+          'GetLocalAnchorB',
+          'SetLength',
+          'GetLength',
+          'SetFrequency',
+          'GetFrequency',
+          'SetDampingRatio',
+          'GetDampingRatio',
+          ...JOINT_SOLVER,
+        ],
       },
     ],
   },
@@ -848,7 +867,18 @@ const SECTIONS: readonly Section[] = [
       { cls: 'b2MouseJointDef', fields: [...JOINT_DEF_BASE, 'target', 'maxForce', 'frequencyHz', 'dampingRatio'] },
       {
         cls: 'b2MouseJoint',
-        methods: [...JOINT_COMMON, 'SetTarget', 'GetTarget', 'SetMaxForce', 'GetMaxForce', 'SetFrequency', 'GetFrequency', 'SetDampingRatio', 'GetDampingRatio', ...JOINT_SOLVER],
+        methods: [
+          ...JOINT_COMMON,
+          'SetTarget',
+          'GetTarget',
+          'SetMaxForce',
+          'GetMaxForce',
+          'SetFrequency',
+          'GetFrequency',
+          'SetDampingRatio',
+          'GetDampingRatio',
+          ...JOINT_SOLVER,
+        ],
       },
     ],
   },
@@ -973,7 +1003,11 @@ const SECTIONS: readonly Section[] = [
   {
     header: 'b2WeldJoint.h',
     classes: [
-      { cls: 'b2WeldJointDef', fields: [...JOINT_DEF_BASE, 'localAnchorA', 'localAnchorB', 'referenceAngle', 'frequencyHz', 'dampingRatio'], methods: ['Initialize'] },
+      {
+        cls: 'b2WeldJointDef',
+        fields: [...JOINT_DEF_BASE, 'localAnchorA', 'localAnchorB', 'referenceAngle', 'frequencyHz', 'dampingRatio'],
+        methods: ['Initialize'],
+      },
       {
         cls: 'b2WeldJoint',
         methods: [
@@ -1037,7 +1071,10 @@ const SECTIONS: readonly Section[] = [
     // (b2EPCollider, b2Simplex, b2SeparationFunction, b2WorldQueryWrapper...) are module-private.
     header: 'internal classes (§2.35)',
     classes: [
-      { cls: 'b2Island', methods: ['Clear', 'Solve', 'SolveTOI', ['Add(b2Body*)', 'Add'], ['Add(b2Contact*)', 'AddContact'], ['Add(b2Joint*)', 'AddJoint'], 'Report'] },
+      {
+        cls: 'b2Island',
+        methods: ['Clear', 'Solve', 'SolveTOI', ['Add(b2Body*)', 'Add'], ['Add(b2Contact*)', 'AddContact'], ['Add(b2Joint*)', 'AddJoint'], 'Report'],
+      },
       {
         cls: 'b2ContactSolver',
         methods: [
@@ -1054,7 +1091,22 @@ const SECTIONS: readonly Section[] = [
       { cls: 'b2VelocityConstraintPoint', fields: ['rA', 'rB', 'normalImpulse', 'tangentImpulse', 'normalMass', 'tangentMass', 'velocityBias'] },
       {
         cls: 'b2ContactVelocityConstraint',
-        fields: ['points', 'normal', 'normalMass', 'K', 'indexA', 'indexB', 'invMassA', 'invMassB', 'invIA', 'invIB', 'friction', 'restitution', 'pointCount', 'contactIndex'],
+        fields: [
+          'points',
+          'normal',
+          'normalMass',
+          'K',
+          'indexA',
+          'indexB',
+          'invMassA',
+          'invMassB',
+          'invIA',
+          'invIB',
+          'friction',
+          'restitution',
+          'pointCount',
+          'contactIndex',
+        ],
       },
       { cls: 'b2PositionSolverManifold', methods: ['Initialize'], fields: ['normal', 'point', 'separation'] },
       { cls: 'b2Body', methods: ['SynchronizeFixtures', 'SynchronizeTransform', 'ShouldCollide', 'Advance'] },

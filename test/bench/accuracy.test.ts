@@ -167,7 +167,7 @@ describe('the mechanisms scene', () => {
 });
 
 describe('measures on states whose answer is known', () => {
-  it('penetration, from the shapes alone: two circles 0.1 m into each other, two boxes 0.05 m (plus the polygons\' skins), a ball on a chain', () => {
+  it("penetration, from the shapes alone: two circles 0.1 m into each other, two boxes 0.05 m (plus the polygons' skins), a ball on a chain", () => {
     const world = new b2World(new b2Vec2(0, 0));
     circle(body(world, 0, 0, true), 0.5);
     circle(body(world, 0.9, 0, true), 0.5);
@@ -314,8 +314,26 @@ describe('runAccuracy --quick', () => {
 
 describe('merging parts of a study run apart', () => {
   it("puts another run's scenes and limits in place of the same scenes' and methods', and names the device a GPU limit was found on", () => {
-    const limit = (method: string, value: number) => ({ id: 'stack height', test: 'a column', unit: 'boxes', method, range: [2, 80] as [number, number], smallest: false, limit: value, tests: 7, bracket: [value, value + 1] as [number, number], outside: null });
-    const scene = (id: string, drift: number) => ({ id, title: id, seconds: 1, measures: ['drift'], results: [{ key: 'iter-8-3', method: 'iter-8-3', backend: 'js', msPerSecond: 1, measures: { drift } }], fronts: { drift: ['iter-8-3'] } });
+    const limit = (method: string, value: number) => ({
+      id: 'stack height',
+      test: 'a column',
+      unit: 'boxes',
+      method,
+      range: [2, 80] as [number, number],
+      smallest: false,
+      limit: value,
+      tests: 7,
+      bracket: [value, value + 1] as [number, number],
+      outside: null,
+    });
+    const scene = (id: string, drift: number) => ({
+      id,
+      title: id,
+      seconds: 1,
+      measures: ['drift'],
+      results: [{ key: 'iter-8-3', method: 'iter-8-3', backend: 'js', msPerSecond: 1, measures: { drift } }],
+      fronts: { drift: ['iter-8-3'] },
+    });
     const run = (gpu: object | null, limits: ReturnType<typeof limit>[], scenes: ReturnType<typeof scene>[] = []) => ({
       schema: 's',
       date: 'd',

@@ -74,8 +74,27 @@ describe('nativeSceneText', () => {
       {
         ...ground,
         shapes: [
-          { ...ground.shapes[0], kind: 'chain', vertices: [[0, 0], [1, 0], [2, 1]], loop: false, prev: [-1, 0], next: null },
-          { ...ground.shapes[0], kind: 'polygon', vertices: [[0, 0], [1, 0], [0, 1]] },
+          {
+            ...ground.shapes[0],
+            kind: 'chain',
+            vertices: [
+              [0, 0],
+              [1, 0],
+              [2, 1],
+            ],
+            loop: false,
+            prev: [-1, 0],
+            next: null,
+          },
+          {
+            ...ground.shapes[0],
+            kind: 'polygon',
+            vertices: [
+              [0, 0],
+              [1, 0],
+              [0, 1],
+            ],
+          },
         ],
       },
     ];
@@ -108,9 +127,13 @@ describe('--box2d', () => {
     expect(() => resolveProcessesOptions({ engines: 'box2d-native', box2d: temp })).toThrow('no Box2D/Box2D.h');
   });
 
-  it.runIf(process.env.WEBPHYSICS_BOX2D)('builds Box2D 2.2.1 twice and times both builds on a scene', async () => {
-    const result = await runProcesses({ engines: 'box2d-native,box2d-native-f64', box2d: process.env.WEBPHYSICS_BOX2D, quick: true, runs: 1, log: null });
-    expect(result.engines.map((e: { name: string }) => e.name)).toEqual(['Box2D 2.2.1 C++ float32', 'Box2D 2.2.1 C++ float64']);
-    for (const e of result.engines) for (const ms of e.windowMs) expect(ms).toBeGreaterThan(0);
-  }, 600_000);
+  it.runIf(process.env.WEBPHYSICS_BOX2D)(
+    'builds Box2D 2.2.1 twice and times both builds on a scene',
+    async () => {
+      const result = await runProcesses({ engines: 'box2d-native,box2d-native-f64', box2d: process.env.WEBPHYSICS_BOX2D, quick: true, runs: 1, log: null });
+      expect(result.engines.map((e: { name: string }) => e.name)).toEqual(['Box2D 2.2.1 C++ float32', 'Box2D 2.2.1 C++ float64']);
+      for (const e of result.engines) for (const ms of e.windowMs) expect(ms).toBeGreaterThan(0);
+    },
+    600_000,
+  );
 });

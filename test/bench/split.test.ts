@@ -45,10 +45,12 @@ describe('fitLine', () => {
 
   it('refuses points that do not span two x values', () => {
     expect(() => fitLine([[3, 1]])).toThrow(/two or more distinct x/);
-    expect(() => fitLine([
-      [3, 1],
-      [3, 2],
-    ])).toThrow(/two or more distinct x/);
+    expect(() =>
+      fitLine([
+        [3, 1],
+        [3, 2],
+      ]),
+    ).toThrow(/two or more distinct x/);
   });
 });
 

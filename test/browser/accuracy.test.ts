@@ -62,7 +62,12 @@ describe('the accuracy page (Chromium)', () => {
     const scene = study.scenes.find((s) => s.id === 'pyramid')!;
     const timed = scene.results.filter((r) => r.msPerSecond !== null && Number.isFinite(r.measures.drift));
     expect(state.points.map((p) => p.key).sort()).toEqual(timed.map((r) => r.key).sort());
-    expect(state.points.filter((p) => p.front).map((p) => p.key).sort()).toEqual([...scene.fronts.drift].sort());
+    expect(
+      state.points
+        .filter((p) => p.front)
+        .map((p) => p.key)
+        .sort(),
+    ).toEqual([...scene.fronts.drift].sort());
     const target = state.points.find((p) => p.key === 'iter-8-3')!;
     const box = (await page.$('#chart'))!.boundingBox();
     const rect = (await box)!;
@@ -118,7 +123,9 @@ describe('the accuracy page (Chromium)', () => {
       await page.select('#scene', scene);
       await page.select('#method', method);
       const replay = await replayed(page);
-      expect(replay.replay!.measures, scene).toEqual(study.scenes.find((s) => s.id === scene)!.results.find((r) => r.backend === 'js' && r.method === method)!.measures);
+      expect(replay.replay!.measures, scene).toEqual(
+        study.scenes.find((s) => s.id === scene)!.results.find((r) => r.backend === 'js' && r.method === method)!.measures,
+      );
       await page.screenshot({ path: path.join(artifacts, `accuracy-${scene}-replay.png`) });
     }
     expect(errors).toEqual([]);

@@ -42,7 +42,11 @@ for (const [name, launch, backend, query, particles, prefix] of [
         // A gas started with normal velocity components: its mean speed is the distribution's.
         expect(Math.abs(h.meanSpeed / h.expectedMeanSpeed - 1)).toBeLessThan(0.05);
         expect(s.heavyMoved).toBeGreaterThan(0);
-        expect(await page.$eval('#adapter', (e) => e.textContent)).toMatch(backend === 'webgpu' ? /^WebGPU adapter: / : /^This browser (lacks WebGPU|has WebGPU but no adapter).*: the JavaScript engine steps up to 3,000 discs/);
+        expect(await page.$eval('#adapter', (e) => e.textContent)).toMatch(
+          backend === 'webgpu'
+            ? /^WebGPU adapter: /
+            : /^This browser (lacks WebGPU|has WebGPU but no adapter).*: the JavaScript engine steps up to 3,000 discs/,
+        );
         await page.screenshot({ path: path.join(artifacts, `${prefix}brownian.png`) });
         expect(await page.$eval('#message', (e) => (e as HTMLElement).hidden)).toBe(true);
         expect(errors).toEqual([]);

@@ -37,7 +37,11 @@ const demo = (page: Page): Promise<WebPhysicsDemo> => page.evaluate(() => JSON.p
 
 /** Waits until every pane running has taken at least `steps` steps. */
 async function stepped(page: Page, steps: number): Promise<WebPhysicsDemo> {
-  await page.waitForFunction((n) => window.webphysicsDemo.ready && window.webphysicsDemo.panes.every((p) => p.steps >= n), { timeout: 240_000, polling: 200 }, steps);
+  await page.waitForFunction(
+    (n) => window.webphysicsDemo.ready && window.webphysicsDemo.panes.every((p) => p.steps >= n),
+    { timeout: 240_000, polling: 200 },
+    steps,
+  );
   return demo(page);
 }
 
@@ -86,7 +90,10 @@ describe('the comparison page with WebGPU (Chromium, SwiftShader)', () => {
     expect(await drawnPixels(page, 'js')).toBeGreaterThan(2000);
     expect(await drawnPixels(page, 'webgpu')).toBeGreaterThan(2000);
     const stats = await page.$$eval('.pane .stats', (list) => list.map((e) => e.textContent ?? ''));
-    for (const line of stats) expect(line).toMatch(/^step \d+(\.\d+)? ms \(median, last second\) · \d+ steps, \d+\.\d s simulated\n501 bodies \(\d+ awake\) · [\d,]+ contacts \([\d,]+ touching\)\n/);
+    for (const line of stats)
+      expect(line).toMatch(
+        /^step \d+(\.\d+)? ms \(median, last second\) · \d+ steps, \d+\.\d s simulated\n501 bodies \(\d+ awake\) · [\d,]+ contacts \([\d,]+ touching\)\n/,
+      );
     await page.screenshot({ path: path.join(artifacts, 'compare.png') });
     expect(errors).toEqual([]);
   }, 300_000);
@@ -118,7 +125,9 @@ describe('the comparison page with WebGPU (Chromium, SwiftShader)', () => {
     const bad = await open(chromium, '?scene=pyramids&bodies=3');
     try {
       const state = await stepped(bad.page, 1);
-      expect(await bad.page.$eval('#message', (e) => e.textContent)).toBe('URL: bodies must be an integer from 100 to 200000; got 3. Using the default instead.');
+      expect(await bad.page.$eval('#message', (e) => e.textContent)).toBe(
+        'URL: bodies must be an integer from 100 to 200000; got 3. Using the default instead.',
+      );
       expect(state.panes.map((p) => p.bodies)).toEqual([1001, 1001]);
       expect(bad.errors).toEqual([]);
     } finally {
@@ -138,10 +147,15 @@ describe('the comparison page with WebGPU (Chromium, SwiftShader)', () => {
       // the software adapter computes in the browser's GPU process, which also composites.)
       const latencies: number[] = [];
       for (let i = 0; i < 10; ++i) {
-        latencies.push(await big.page.evaluate(() => new Promise<number>((resolve) => {
-          const t = performance.now();
-          setTimeout(() => resolve(performance.now() - t), 0);
-        })));
+        latencies.push(
+          await big.page.evaluate(
+            () =>
+              new Promise<number>((resolve) => {
+                const t = performance.now();
+                setTimeout(() => resolve(performance.now() - t), 0);
+              }),
+          ),
+        );
         // Moving the slider (without letting go) relabels it at once: 50,000 and 100,000 in turn.
         const stop = i % 2 === 0 ? 8 : 9;
         const label = await big.page.evaluate((stop) => {
@@ -175,7 +189,9 @@ for (const [name, launch, prefix] of [
       const { page, errors } = await open(browser(), '?scene=tumbler&bodies=500');
       const state = await stepped(page, 3);
       expect(state.panes.map((p) => p.backend)).toEqual(['js']);
-      expect(await page.$eval('#adapter', (e) => e.textContent)).toMatch(/^This browser (lacks WebGPU|has WebGPU but no adapter).*: the JavaScript engine runs alone\.$/);
+      expect(await page.$eval('#adapter', (e) => e.textContent)).toMatch(
+        /^This browser (lacks WebGPU|has WebGPU but no adapter).*: the JavaScript engine runs alone\.$/,
+      );
       expect(await drawnPixels(page, 'js')).toBeGreaterThan(1000);
       await page.screenshot({ path: path.join(artifacts, `${prefix}compare-no-webgpu.png`) });
       expect(errors).toEqual([]);

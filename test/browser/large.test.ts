@@ -132,7 +132,9 @@ for (const [name, launch, prefix] of [
         const s = await framesDone(page, 3);
         expect(s.backend).toBe('js');
         expect(s.bodies).toBe(2_001);
-        expect(await page.$eval('#adapter', (e) => e.textContent)).toMatch(/^This browser (lacks WebGPU|has WebGPU but no adapter).*: the JavaScript engine runs, with at most 10,000 bodies drawn on a 2D canvas\.$/);
+        expect(await page.$eval('#adapter', (e) => e.textContent)).toMatch(
+          /^This browser (lacks WebGPU|has WebGPU but no adapter).*: the JavaScript engine runs, with at most 10,000 bodies drawn on a 2D canvas\.$/,
+        );
         expect(await page.$$eval('#bodies option', (o) => o.map((e) => e.textContent))).toEqual(['1,000', '2,000', '5,000', '10,000']);
         expect(await screenshotPixels(page, '#world')).toBeGreaterThan(1_000);
         await page.screenshot({ path: path.join(artifacts, `${prefix}large-no-webgpu.png`) });

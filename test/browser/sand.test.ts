@@ -42,7 +42,11 @@ for (const [name, launch, backend, prefix] of [
         expect(later.grains).toBeGreaterThan(first.grains);
         expect(later.grains).toBeLessThanOrEqual(later.maxGrains);
         expect(later.maxGrains).toBe(backend === 'webgpu' ? 200_000 : 5_000);
-        expect(await page.$eval('#adapter', (e) => e.textContent)).toMatch(backend === 'webgpu' ? /^WebGPU adapter: / : /^This browser (lacks WebGPU|has WebGPU but no adapter).*: the JavaScript engine pours up to 5,000 grains/);
+        expect(await page.$eval('#adapter', (e) => e.textContent)).toMatch(
+          backend === 'webgpu'
+            ? /^WebGPU adapter: /
+            : /^This browser (lacks WebGPU|has WebGPU but no adapter).*: the JavaScript engine pours up to 5,000 grains/,
+        );
 
         // A V drawn to the right of the first container.
         const points = await page.evaluate(() => [

@@ -87,7 +87,12 @@ function testbedSuite(launch: () => Promise<LaunchedBrowser>, agent: RegExp, pre
           const status = await window.testbed.webgpu;
           const before = window.testbed.state().stepCount;
           window.testbed.frame(3);
-          return { status, backend: window.testbed.backend(), steps: window.testbed.state().stepCount - before, message: document.getElementById('message')!.textContent };
+          return {
+            status,
+            backend: window.testbed.backend(),
+            steps: window.testbed.state().stepCount - before,
+            message: document.getElementById('message')!.textContent,
+          };
         });
         // Launched with --disable-gpu: no adapter (testbedWebgpu.test.ts runs the browser that has one).
         expect(state.status.adapter).toBe(false);
@@ -103,30 +108,34 @@ function testbedSuite(launch: () => Promise<LaunchedBrowser>, agent: RegExp, pre
 
   describe(`every scene runs ${kSteps} steps and draws`, () => {
     for (const name of sceneNames) {
-      it(name, async () => {
-        const from = errors.length;
-        const result = await page.evaluate(
-          (sceneName: string, steps: number) => {
-            const tb = window.testbed;
-            if (!tb.select(sceneName)) return null;
-            tb.frame(1);
-            const firstPixels = tb.drawnPixels();
-            tb.frame(steps - 1);
-            return { state: tb.state(), firstPixels, pixels: tb.drawnPixels(), text: tb.text() };
-          },
-          name,
-          kSteps,
-        );
-        await page.screenshot({ path: path.join(artifacts, `${prefix}${slug(name)}.png`) });
-        expect(result, `select(${name})`).not.toBeNull();
-        expect(await newErrors(from)).toEqual([]);
-        expect(result!.state.name).toBe(name);
-        expect(result!.state.frames).toBeGreaterThan(0);
-        // Pixels other than the background, outside the text: the scene itself was drawn.
-        expect(result!.firstPixels).toBeGreaterThan(kMinPixels);
-        if (!(name in kLeavesTheView)) expect(result!.pixels).toBeGreaterThan(kMinPixels);
-        expect(result!.text[result!.text.length - 1]).toBe(name); // the title, drawn last
-      }, 180_000);
+      it(
+        name,
+        async () => {
+          const from = errors.length;
+          const result = await page.evaluate(
+            (sceneName: string, steps: number) => {
+              const tb = window.testbed;
+              if (!tb.select(sceneName)) return null;
+              tb.frame(1);
+              const firstPixels = tb.drawnPixels();
+              tb.frame(steps - 1);
+              return { state: tb.state(), firstPixels, pixels: tb.drawnPixels(), text: tb.text() };
+            },
+            name,
+            kSteps,
+          );
+          await page.screenshot({ path: path.join(artifacts, `${prefix}${slug(name)}.png`) });
+          expect(result, `select(${name})`).not.toBeNull();
+          expect(await newErrors(from)).toEqual([]);
+          expect(result!.state.name).toBe(name);
+          expect(result!.state.frames).toBeGreaterThan(0);
+          // Pixels other than the background, outside the text: the scene itself was drawn.
+          expect(result!.firstPixels).toBeGreaterThan(kMinPixels);
+          if (!(name in kLeavesTheView)) expect(result!.pixels).toBeGreaterThan(kMinPixels);
+          expect(result!.text[result!.text.length - 1]).toBe(name); // the title, drawn last
+        },
+        180_000,
+      );
     }
   });
 
@@ -224,8 +233,7 @@ function testbedSuite(launch: () => Promise<LaunchedBrowser>, agent: RegExp, pre
         window.testbed.frame(30);
       });
       // The left flipper turns about (-2, 0).
-      const angle = () =>
-        page.evaluate(() => window.testbed.bodies().find((b) => b.type === 'dynamic' && Math.hypot(b.x + 2, b.y) < 0.05)!.angle);
+      const angle = () => page.evaluate(() => window.testbed.bodies().find((b) => b.type === 'dynamic' && Math.hypot(b.x + 2, b.y) < 0.05)!.angle);
       const down = await angle();
       await page.keyboard.down('a');
       await page.evaluate(() => window.testbed.frame(20));
@@ -342,7 +350,13 @@ function testbedSuite(launch: () => Promise<LaunchedBrowser>, agent: RegExp, pre
       const sizes = await page.evaluate(() => {
         window.testbed.frame(1);
         const canvas = document.getElementById('canvas') as HTMLCanvasElement;
-        return { width: canvas.width, height: canvas.height, cssWidth: canvas.clientWidth, cssHeight: canvas.clientHeight, pixels: window.testbed.drawnPixels() };
+        return {
+          width: canvas.width,
+          height: canvas.height,
+          cssWidth: canvas.clientWidth,
+          cssHeight: canvas.clientHeight,
+          pixels: window.testbed.drawnPixels(),
+        };
       });
       await page.setViewport({ width: 1000, height: 700, deviceScaleFactor: 1 });
       expect(sizes.width).toBe(2 * sizes.cssWidth);

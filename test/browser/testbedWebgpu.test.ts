@@ -227,9 +227,13 @@ describe('the testbed on the WebGPU backend (Chromium, SwiftShader)', () => {
     await page.screenshot({ path: path.join(artifacts, 'testbed-webgpu.png') });
     expect(shown.text.some((line: string) => /^backend: WebGPU, step \+ read-back \d+\.\d\d ms \(median, last second\)$/.test(line))).toBe(true);
     expect(shown.text).toContain(`adapter: ${shown.demo.panes[0].adapter}`);
-    expect(shown.text.some((line: string) => /^read-back per frame: [1-9]\d*\.\d KB, \d+\.\d\d ms to unpack, \d+\.\d\d ms to update the bodies$/.test(line))).toBe(true);
+    expect(
+      shown.text.some((line: string) => /^read-back per frame: [1-9]\d*\.\d KB, \d+\.\d\d ms to unpack, \d+\.\d\d ms to update the bodies$/.test(line)),
+    ).toBe(true);
     expect(shown.text.some((line: string) => /^bodies\/contacts\/joints = 212\/[1-9]\d*\/0$/.test(line))).toBe(true);
-    expect(shown.note).toMatch(/^Stepping on WebGPU \(google \/ swiftshader.*\)\. Each frame reads the world back once .*: [1-9]\d*\.\d KB, \d+\.\d\d ms on the host to unpack and \d+\.\d\d ms to update the bodies drawn/);
+    expect(shown.note).toMatch(
+      /^Stepping on WebGPU \(google \/ swiftshader.*\)\. Each frame reads the world back once .*: [1-9]\d*\.\d KB, \d+\.\d\d ms on the host to unpack and \d+\.\d\d ms to update the bodies drawn/,
+    );
     expect(shown.demo.ready).toBe(true);
     expect(shown.demo.panes).toHaveLength(1);
     const [pane] = shown.demo.panes;

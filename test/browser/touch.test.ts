@@ -36,7 +36,10 @@ describe('the touch and play page with WebGPU (Chromium, SwiftShader)', () => {
       expect((await state(page)).backend).toBe('webgpu');
       const cdp = await page.createCDPSession();
       const touch = (type: string, points: { x: number; y: number }[]) =>
-        cdp.send('Input.dispatchTouchEvent', { type: type as 'touchStart', touchPoints: points.map((p, id) => ({ x: Math.round(p.x), y: Math.round(p.y), id })) });
+        cdp.send('Input.dispatchTouchEvent', {
+          type: type as 'touchStart',
+          touchPoints: points.map((p, id) => ({ x: Math.round(p.x), y: Math.round(p.y), id })),
+        });
       const client = (x: number, y: number) => page.evaluate((a, b) => window.touchDemo.worldToClient(a, b), x, y);
       const position = (i: number) => page.evaluate(async (k) => window.touchDemo.bodyPosition(k), i);
 
@@ -49,7 +52,11 @@ describe('the touch and play page with WebGPU (Chromium, SwiftShader)', () => {
       const up = await client(0, 3);
       const down = await client(0, 0);
       const lift = up.y - down.y;
-      for (let k = 1; k <= 5; ++k) await touch('touchMove', fingers.map((f) => ({ x: f.x, y: f.y + (lift * k) / 5 })));
+      for (let k = 1; k <= 5; ++k)
+        await touch(
+          'touchMove',
+          fingers.map((f) => ({ x: f.x, y: f.y + (lift * k) / 5 })),
+        );
       const moved = (await state(page)).steps;
       await until(page, `window.touchDemo.steps >= ${moved + 20}`);
       const [a2, b2] = [await position(0), await position(1)];
@@ -89,7 +96,9 @@ describe('the touch and play page without WebGPU (Firefox)', () => {
       const errors = await open(page);
       const s = await state(page);
       expect(s.backend).toBe('js');
-      expect(await page.$eval('#adapter', (e) => e.textContent)).toMatch(/^This browser (lacks WebGPU|has WebGPU but no adapter).*: the JavaScript engine runs/);
+      expect(await page.$eval('#adapter', (e) => e.textContent)).toMatch(
+        /^This browser (lacks WebGPU|has WebGPU but no adapter).*: the JavaScript engine runs/,
+      );
       const empty = await page.evaluate(() => window.touchDemo.worldToClient(5, 12));
       await page.mouse.click(Math.round(empty.x), Math.round(empty.y));
       await until(page, `window.touchDemo.bodies === ${s.bodies + 1}`);

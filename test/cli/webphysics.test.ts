@@ -39,7 +39,12 @@ function webphysics(args: string[], bin = path.join(repoRoot, 'bin/webphysics.mj
 
 /** The report's `name  value` lines as a map. */
 function report(stdout: string): Map<string, string> {
-  return new Map(stdout.trimEnd().split('\n').map((line) => [line.slice(0, 10).trim(), line.slice(10)]));
+  return new Map(
+    stdout
+      .trimEnd()
+      .split('\n')
+      .map((line) => [line.slice(0, 10).trim(), line.slice(10)]),
+  );
 }
 
 const kNumber = String.raw`\d+\.\d{3}`;
@@ -68,9 +73,7 @@ describe('webphysics run', () => {
     expect(run.status).toBe(0);
     const lines = report(run.stdout);
     const settings = b2dJsonRead(readFileSync(scene, 'utf8')).stepSettings;
-    expect(lines.get('steps')).toBe(
-      `300 at 60 Hz, ${settings.velocityIterations} velocity / ${settings.positionIterations} position iterations`,
-    );
+    expect(lines.get('steps')).toBe(`300 at 60 Hz, ${settings.velocityIterations} velocity / ${settings.positionIterations} position iterations`);
     expect(settings.stepsPerSecond).toBe(60);
     expect(lines.get('bodies')).toBe(String(sample.bodies.length));
     expect(lines.get('awake')).toBe(String(sample.awake));
@@ -94,7 +97,7 @@ describe('webphysics run', () => {
     expect(reloaded.bodies[1].GetPosition().y).toBeLessThan(0.75);
   });
 
-  it('runs a scene that has the world\'s fields and no bodies', () => {
+  it("runs a scene that has the world's fields and no bodies", () => {
     writeFileSync(path.join(tmp, 'world-only.json'), '{"gravity": {"x": 0, "y": -10}, "allowSleep": true}');
     const run = webphysics(['run', 'world-only.json', '--steps', '5']);
     expect(run.stderr).toBe('');
@@ -122,7 +125,12 @@ describe('webphysics run', () => {
     ['a missing scene file', ['run', 'missing.json'], 1, /^webphysics run: cannot read scene .*missing\.json: no such file$/],
     ['a folder as the scene', ['run', '.'], 1, /^webphysics run: cannot read scene .*: it is a folder$/],
     ['a file that is not JSON', ['run', 'bad.json'], 1, /^webphysics run: .*bad\.json: \(root\): not valid JSON \(.*\)$/],
-    ['a scene with a bad field', ['run', 'bad-field.json'], 1, /^webphysics run: .*bad-field\.json: body\[0\]\.type: expected an integer in \[0, 2\], got number 7$/],
+    [
+      'a scene with a bad field',
+      ['run', 'bad-field.json'],
+      1,
+      /^webphysics run: .*bad-field\.json: body\[0\]\.type: expected an integer in \[0, 2\], got number 7$/,
+    ],
     ['a JSON file that is not a scene', ['run', 'package.json'], 1, kNotAScene('package.json')],
     ['an empty JSON object', ['run', 'empty.json'], 1, kNotAScene('empty.json')],
     ['an unknown option', ['run', '--fast'], 2, /^webphysics run: unknown option --fast \(see webphysics run --help\)$/],

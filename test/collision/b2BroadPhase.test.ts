@@ -203,9 +203,7 @@ describe('b2BroadPhase', () => {
         }
         expect(got).toEqual(want);
         // TestOverlap (on the tree's copy of the fat AABBs) agrees with b2TestOverlap on the AABBs.
-        const disagree = live.flatMap((p) =>
-          live.filter((q) => bp.TestOverlap(p.id, q.id) !== b2TestOverlap(bp.GetFatAABB(p.id), bp.GetFatAABB(q.id))),
-        );
+        const disagree = live.flatMap((p) => live.filter((q) => bp.TestOverlap(p.id, q.id) !== b2TestOverlap(bp.GetFatAABB(p.id), bp.GetFatAABB(q.id))));
         expect(disagree).toEqual([]);
       }
     }

@@ -4,21 +4,13 @@ import { b2CollideCircles, b2CollidePolygonAndCircle } from '../../src/collision
 import { b2CircleShape } from '../../src/collision/shapes/b2CircleShape';
 import { b2PolygonShape } from '../../src/collision/shapes/b2PolygonShape';
 import { b2Transform, b2Vec2 } from '../../src/common/b2Math';
-import {
-  collisionVectors,
-  checkManifoldFamily,
-  describeFamilyResult,
-  makeCircle,
-  makePolygon,
-} from '../support/collisionVectors';
+import { collisionVectors, checkManifoldFamily, describeFamilyResult, makeCircle, makePolygon } from '../support/collisionVectors';
 
 describe('b2CollideCircles', () => {
   it('reproduces all 300 reference manifolds bit for bit', () => {
     const cases = collisionVectors.collideCircles;
     expect(cases.length).toBe(300);
-    const result = checkManifoldFamily(cases, (manifold, c, xfA, xfB) =>
-      b2CollideCircles(manifold, makeCircle(c.shapeA), xfA, makeCircle(c.shapeB), xfB),
-    );
+    const result = checkManifoldFamily(cases, (manifold, c, xfA, xfB) => b2CollideCircles(manifold, makeCircle(c.shapeA), xfA, makeCircle(c.shapeB), xfB));
     expect(describeFamilyResult('collideCircles', result)).toBeNull();
   });
 

@@ -5,14 +5,7 @@ import { b2CircleShape } from '../../src/collision/shapes/b2CircleShape';
 import { b2EdgeShape } from '../../src/collision/shapes/b2EdgeShape';
 import { b2PolygonShape } from '../../src/collision/shapes/b2PolygonShape';
 import { b2Rot, b2Transform, b2Vec2 } from '../../src/common/b2Math';
-import {
-  collisionVectors,
-  checkManifoldFamily,
-  describeFamilyResult,
-  makeCircle,
-  makeEdge,
-  makePolygon,
-} from '../support/collisionVectors';
+import { collisionVectors, checkManifoldFamily, describeFamilyResult, makeCircle, makeEdge, makePolygon } from '../support/collisionVectors';
 
 function edge(x1: number, y1: number, x2: number, y2: number): b2EdgeShape {
   const shape = new b2EdgeShape();
@@ -42,9 +35,7 @@ describe('b2CollideEdgeAndCircle', () => {
   it('reproduces all 300 reference edge-circle manifolds bit for bit', () => {
     const cases = collisionVectors.collideEdgeAndCircle;
     expect(cases.length).toBe(300);
-    const result = checkManifoldFamily(cases, (manifold, c, xfA, xfB) =>
-      b2CollideEdgeAndCircle(manifold, makeEdge(c.shapeA), xfA, makeCircle(c.shapeB), xfB),
-    );
+    const result = checkManifoldFamily(cases, (manifold, c, xfA, xfB) => b2CollideEdgeAndCircle(manifold, makeEdge(c.shapeA), xfA, makeCircle(c.shapeB), xfB));
     expect(describeFamilyResult('collideEdgeAndCircle', result)).toBeNull();
   });
 

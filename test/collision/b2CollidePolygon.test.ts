@@ -9,9 +9,7 @@ describe('b2CollidePolygons', () => {
   it('reproduces all 300 reference manifolds bit for bit (documented reference-rotation outliers aside)', () => {
     const cases = collisionVectors.collidePolygons;
     expect(cases.length).toBe(300);
-    const result = checkManifoldFamily(cases, (manifold, c, xfA, xfB) =>
-      b2CollidePolygons(manifold, makePolygon(c.shapeA), xfA, makePolygon(c.shapeB), xfB),
-    );
+    const result = checkManifoldFamily(cases, (manifold, c, xfA, xfB) => b2CollidePolygons(manifold, makePolygon(c.shapeA), xfA, makePolygon(c.shapeB), xfB));
     expect(describeFamilyResult('collidePolygons', result)).toBeNull();
   });
 

@@ -44,14 +44,7 @@ function transform(x: number, y: number, angle: number): b2Transform {
   return new b2Transform(new b2Vec2(x, y), new b2Rot(angle));
 }
 
-function distance(
-  shapeA: b2Shape,
-  xfA: b2Transform,
-  shapeB: b2Shape,
-  xfB: b2Transform,
-  useRadii: boolean,
-  cache = new b2SimplexCache(),
-): b2DistanceOutput {
+function distance(shapeA: b2Shape, xfA: b2Transform, shapeB: b2Shape, xfB: b2Transform, useRadii: boolean, cache = new b2SimplexCache()): b2DistanceOutput {
   const input = new b2DistanceInput();
   input.proxyA.Set(shapeA, 0);
   input.proxyB.Set(shapeB, 0);
@@ -145,12 +138,7 @@ describe('b2Distance', () => {
 
     const warm = distance(shapeA, xfA, shapeB, xfB, true, cache);
     expect(Object.is(warm.distance, cold.distance)).toBe(true);
-    expect([warm.pointA.x, warm.pointA.y, warm.pointB.x, warm.pointB.y]).toEqual([
-      cold.pointA.x,
-      cold.pointA.y,
-      cold.pointB.x,
-      cold.pointB.y,
-    ]);
+    expect([warm.pointA.x, warm.pointA.y, warm.pointB.x, warm.pointB.y]).toEqual([cold.pointA.x, cold.pointA.y, cold.pointB.x, cold.pointB.y]);
     // The warm start begins from the converged simplex, so it needs no more support calls.
     expect(warm.iterations).toBeLessThanOrEqual(cold.iterations);
     expect(cache.count).toBe(saved.count);

@@ -131,12 +131,7 @@ describe('b2DynamicTree proxies', () => {
     const id = tree.CreateProxy(box(0, 0, 1, 1), null);
     const moved = box(0.5, -0.25, 1.5, 0.75);
     expect(tree.MoveProxy(id, moved, new b2Vec2(0.5, -0.25))).toBe(true);
-    expect(bounds(tree.GetFatAABB(id))).toEqual([
-      0.5 - 0.1,
-      -0.25 - 0.1 + 2.0 * -0.25,
-      1.5 + 0.1 + 2.0 * 0.5,
-      0.75 + 0.1,
-    ]);
+    expect(bounds(tree.GetFatAABB(id))).toEqual([0.5 - 0.1, -0.25 - 0.1 + 2.0 * -0.25, 1.5 + 0.1 + 2.0 * 0.5, 0.75 + 0.1]);
     expect(tree.m_insertionCount).toBe(2);
     tree.Validate();
   });
@@ -431,10 +426,36 @@ describe('b2DynamicTree against the C++ reference', () => {
   // pool (links, heights, fat AABB bits) and the ids and maxFractions seen by a query, a stopped
   // query and a ray cast.
   const checkpoints = [
-    'a39295ae', 'a54e6b0a', 'b81cb298', '9422e260', 'bd0d7651', 'f42a7ea8', '05a3ee05', 'd7e1033a',
-    'b5a1e572', '3a061fa5', '2b60cc20', '8829f069', 'f84eb63b', '600cc32e', '2b28b040', '0c9b228c',
-    'c981315e', 'e09ccc5c', '71193be0', 'bf8067f5', 'd83fa4c2', 'd44240b7', 'c5004b71', 'dd5598a3',
-    'ca67f137', 'ed202429', '38882eb1', '606afc21', 'd581fd3d', 'f2eaf1fe',
+    'a39295ae',
+    'a54e6b0a',
+    'b81cb298',
+    '9422e260',
+    'bd0d7651',
+    'f42a7ea8',
+    '05a3ee05',
+    'd7e1033a',
+    'b5a1e572',
+    '3a061fa5',
+    '2b60cc20',
+    '8829f069',
+    'f84eb63b',
+    '600cc32e',
+    '2b28b040',
+    '0c9b228c',
+    'c981315e',
+    'e09ccc5c',
+    '71193be0',
+    'bf8067f5',
+    'd83fa4c2',
+    'd44240b7',
+    'c5004b71',
+    'dd5598a3',
+    'ca67f137',
+    'ed202429',
+    '38882eb1',
+    '606afc21',
+    'd581fd3d',
+    'f2eaf1fe',
   ];
 
   it('allocates ids, shapes the tree and orders query and ray-cast callbacks exactly as Box2D 2.2.1', () => {

@@ -170,4 +170,3 @@ describe('manifold records', () => {
     expect([...misuses]).toEqual([]);
   });
 });
-

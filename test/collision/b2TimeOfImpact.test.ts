@@ -1,24 +1,10 @@
 import { describe, expect, it } from 'vitest';
-import {
-  b2ResetToiCounters,
-  b2TimeOfImpact,
-  b2TOIInput,
-  b2TOIOutput,
-  b2_toiCalls,
-  b2_toiIters,
-  b2_toiMaxIters,
-} from '../../src/collision/b2TimeOfImpact';
+import { b2ResetToiCounters, b2TimeOfImpact, b2TOIInput, b2TOIOutput, b2_toiCalls, b2_toiIters, b2_toiMaxIters } from '../../src/collision/b2TimeOfImpact';
 import { b2Distance, b2DistanceInput, b2DistanceOutput, b2SimplexCache } from '../../src/collision/b2Distance';
 import { b2PolygonShape } from '../../src/collision/shapes/b2PolygonShape';
 import { b2Sweep } from '../../src/common/b2Math';
 import { b2_linearSlop } from '../../src/common/b2Settings';
-import {
-  collisionVectors,
-  compareDouble,
-  makeShape,
-  makeSweep,
-  type TimeOfImpactCase,
-} from '../support/collisionVectors';
+import { collisionVectors, compareDouble, makeShape, makeSweep, type TimeOfImpactCase } from '../support/collisionVectors';
 
 function box(hx: number, hy: number): b2PolygonShape {
   const shape = new b2PolygonShape();

@@ -44,11 +44,33 @@ function* specialInputs(): Generator<number> {
     return out;
   };
   const anchors = [
-    0, Math.PI / 4, (3 * Math.PI) / 4, Math.PI / 2, Math.PI, (3 * Math.PI) / 2, 2 * Math.PI, 0.3, 0.78125,
-    2 ** -27, 2 ** 19 * (Math.PI / 2), 2 ** 20, 1e6, 1e9, 1e15, 1e22, 1e100, 1e300, Number.MAX_VALUE,
-    Number.MIN_VALUE, 2 ** -1022, 3.14159265359, 1.570796326795,
+    0,
+    Math.PI / 4,
+    (3 * Math.PI) / 4,
+    Math.PI / 2,
+    Math.PI,
+    (3 * Math.PI) / 2,
+    2 * Math.PI,
+    0.3,
+    0.78125,
+    2 ** -27,
+    2 ** 19 * (Math.PI / 2),
+    2 ** 20,
+    1e6,
+    1e9,
+    1e15,
+    1e22,
+    1e100,
+    1e300,
+    Number.MAX_VALUE,
+    Number.MIN_VALUE,
+    2 ** -1022,
+    3.14159265359,
+    1.570796326795,
     // b2SinCos's range tests: the doubles whose high words are fdlibm's bounds.
-    0.7853984832763672, 0.2999999523162842, 0.7812504768371582,
+    0.7853984832763672,
+    0.2999999523162842,
+    0.7812504768371582,
   ];
   for (const a of anchors) {
     for (const x of neighbours(a)) {
@@ -79,7 +101,7 @@ describe('b2SinCos (b2Rot.Set, b2Sin, b2Cos) reproduces fdlibm (Math.sin/Math.co
     expect(firstMismatch(cos, Math.cos, randomInputs(6, 100_000, 1e18))).toBeNull();
   });
 
-  it('agrees on special values: signed zeros, the range tests\' bounds, NaN, infinities, huge arguments', () => {
+  it("agrees on special values: signed zeros, the range tests' bounds, NaN, infinities, huge arguments", () => {
     expect(firstMismatch(sin, Math.sin, specialInputs())).toBeNull();
     expect(firstMismatch(cos, Math.cos, specialInputs())).toBeNull();
     expect(Object.is(sin(-0), -0)).toBe(true);

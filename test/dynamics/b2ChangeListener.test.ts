@@ -43,7 +43,13 @@ function setup(): { world: b2World; a: b2Body; ground: b2Body; log: Recorder } {
   fd.density = 1;
   a.CreateFixture(fd);
   ground.CreateFixture(fd);
-  const log = new Recorder(new Map<object, string>([[a, 'a'], [ground, 'ground'], [a.GetFixtureList()!, 'fa']]));
+  const log = new Recorder(
+    new Map<object, string>([
+      [a, 'a'],
+      [ground, 'ground'],
+      [a.GetFixtureList()!, 'fa'],
+    ]),
+  );
   world.SetChangeListener(log);
   return { world, a, ground, log };
 }

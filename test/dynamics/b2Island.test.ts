@@ -1,12 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { b2MassData } from '../../src/collision/shapes/b2Shape';
 import { b2Abs, b2Clamp, b2Rot, b2Vec2 } from '../../src/common/b2Math';
-import {
-  b2_maxRotation,
-  b2_maxRotationSquared,
-  b2_maxTranslation,
-  b2_timeToSleep,
-} from '../../src/common/b2Settings';
+import { b2_maxRotation, b2_maxRotationSquared, b2_maxTranslation, b2_timeToSleep } from '../../src/common/b2Settings';
 import { b2Body, b2BodyDef, b2BodyType } from '../../src/dynamics/b2Body';
 import { b2Island } from '../../src/dynamics/b2Island';
 import { b2Profile, b2TimeStep } from '../../src/dynamics/b2TimeStep';
@@ -232,7 +227,7 @@ describe('b2Island.Solve', () => {
   it('keeps the island awake while a body moves faster than the sleep tolerance or may not sleep', () => {
     const world = new b2World(new b2Vec2(0.0, 0.0));
     const still = createBody(world, () => {});
-    const fast = createBody(world, (bd) => bd.angularVelocity = 0.1);
+    const fast = createBody(world, (bd) => (bd.angularVelocity = 0.1));
     const insomniac = createBody(world, (bd) => (bd.allowSleep = false));
     for (const other of [fast, insomniac]) {
       const island = new b2Island(2, 0, 0, null);

@@ -8,13 +8,7 @@ import { b2SetLogSink, b2_maxTranslation, b2_timeToSleep } from '../../src/commo
 import { b2Body, b2BodyDef, b2BodyType } from '../../src/dynamics/b2Body';
 import { b2Fixture, b2FixtureDef } from '../../src/dynamics/b2Fixture';
 import { b2World } from '../../src/dynamics/b2World';
-import {
-  b2ContactImpulse,
-  b2ContactListener,
-  b2DestructionListener,
-  b2QueryCallback,
-  b2RayCastCallback,
-} from '../../src/dynamics/b2WorldCallbacks';
+import { b2ContactImpulse, b2ContactListener, b2DestructionListener, b2QueryCallback, b2RayCastCallback } from '../../src/dynamics/b2WorldCallbacks';
 import { b2Contact } from '../../src/dynamics/contacts/b2Contact';
 import { b2DistanceJointDef } from '../../src/dynamics/joints/b2DistanceJoint';
 import type { b2Joint } from '../../src/dynamics/joints/b2Joint';
@@ -271,7 +265,7 @@ describe('b2World sleeping', () => {
 });
 
 describe('b2World waking by contact', () => {
-  it('wakes a sleeping box when a falling ball\'s contact with it is created (2.2.1 AddPair), and both then sleep together', () => {
+  it("wakes a sleeping box when a falling ball's contact with it is created (2.2.1 AddPair), and both then sleep together", () => {
     const { world, box } = restingBox();
     expect(stepUntilAsleep(world, box, 240)).toBeGreaterThan(0);
     const ball = createBody(world, b2BodyType.b2_dynamicBody, 0.0, 2.5);
@@ -1025,16 +1019,7 @@ describe('b2World contacts, listener and profile', () => {
     expect(world.GetProfiling()).toBe(true);
     for (let i = 0; i < 5; ++i) world.Step(h, 8, 3);
     const profile = world.GetProfile();
-    for (const key of [
-      'step',
-      'collide',
-      'solve',
-      'solveInit',
-      'solveVelocity',
-      'solvePosition',
-      'broadphase',
-      'solveTOI',
-    ] as const) {
+    for (const key of ['step', 'collide', 'solve', 'solveInit', 'solveVelocity', 'solvePosition', 'broadphase', 'solveTOI'] as const) {
       expect(Number.isFinite(profile[key]), key).toBe(true);
       expect(profile[key], key).toBeGreaterThanOrEqual(0.0);
     }

@@ -204,7 +204,7 @@ describe('state fetched as it is read, on a backend that keeps it (b2World.m_sta
     expect(backend.pulled).toEqual([box]);
   });
 
-  it('queries, ray casts, the debug draw and fixtures\' AABBs fetch every body first (PullAll); joint getters fetch their bodies', async () => {
+  it("queries, ray casts, the debug draw and fixtures' AABBs fetch every body first (PullAll); joint getters fetch their bodies", async () => {
     const { world, box } = scene();
     const backend = new Lifting();
     await world.SetBackend(backend);

@@ -19,12 +19,7 @@ import { b2_linearSlop, b2_polygonRadius } from '../../src/common/b2Settings';
 import { b2Body, b2BodyDef, b2BodyType } from '../../src/dynamics/b2Body';
 import { b2Fixture, b2FixtureDef } from '../../src/dynamics/b2Fixture';
 import { b2World } from '../../src/dynamics/b2World';
-import {
-  b2ContactFilter,
-  b2ContactImpulse,
-  b2ContactListener,
-  b2DestructionListener,
-} from '../../src/dynamics/b2WorldCallbacks';
+import { b2ContactFilter, b2ContactImpulse, b2ContactListener, b2DestructionListener } from '../../src/dynamics/b2WorldCallbacks';
 import { b2Contact } from '../../src/dynamics/contacts/b2Contact';
 import { b2DistanceJointDef } from '../../src/dynamics/joints/b2DistanceJoint';
 import type { b2Joint } from '../../src/dynamics/joints/b2Joint';

@@ -8,6 +8,7 @@
 import { goldenSceneNames, runGoldenScene } from '../support/scene';
 
 const bun = (globalThis as { Bun?: { version: string } }).Bun;
-const engine = bun !== undefined ? `Bun ${bun.version} (JavaScriptCore ${process.versions.webkit ?? '?'})` : `Node ${process.version} (V8 ${process.versions.v8})`;
+const engine =
+  bun !== undefined ? `Bun ${bun.version} (JavaScriptCore ${process.versions.webkit ?? '?'})` : `Node ${process.version} (V8 ${process.versions.v8})`;
 const scenes = goldenSceneNames().map((name) => ({ name, failure: runGoldenScene(name) }));
 process.stdout.write(JSON.stringify({ engine, scenes }) + '\n');

@@ -49,11 +49,7 @@ describe('the golden suite in SpiderMonkey (Firefox ESR)', () => {
     it(`${name} follows the C++ reference trajectory in every step`, async () => {
       const reference = readTrajectory(name).digests;
       const json = readFileSync(path.join(goldenDir, 'scenes', `${name}.scene.json`), 'utf8');
-      const digests = await page.evaluate(
-        (text: string, steps: number) => window.testbed.sceneDigests(JSON.parse(text), steps),
-        json,
-        reference.length - 1,
-      );
+      const digests = await page.evaluate((text: string, steps: number) => window.testbed.sceneDigests(JSON.parse(text), steps), json, reference.length - 1);
       expect(firstDifference(digests, reference), 'first step where SpiderMonkey differs from the C++ reference').toBe(-1);
       expect(errors).toEqual([]);
     });

@@ -67,7 +67,7 @@ describe('AutoBackend without WebGPU', () => {
     expect((world.GetBackend() as AutoBackend).choice).toEqual(auto.choice);
   });
 
-  it("steps on the engine bit for bit as a world without a backend: 60 steps give exactly the same positions", async () => {
+  it('steps on the engine bit for bit as a world without a backend: 60 steps give exactly the same positions', async () => {
     const plain = boxWorld(30);
     const auto = boxWorld(30);
     await auto.world.SetBackend(await AutoBackend.create({ gpu: noAdapter }));
@@ -90,7 +90,9 @@ describe('AutoBackend without WebGPU', () => {
       /options\.calibration\.crossoverBodies must be a number > 0/,
     );
     await expect(AutoBackend.create({ calibration: { crossoverBodies: NaN, source: 'x' } })).rejects.toThrow(/crossoverBodies must be a number > 0.*NaN/);
-    await expect(AutoBackend.create({ calibration: { crossoverBodies: 10, source: '' } })).rejects.toThrow(/options\.calibration\.source must be a non-empty string/);
+    await expect(AutoBackend.create({ calibration: { crossoverBodies: 10, source: '' } })).rejects.toThrow(
+      /options\.calibration\.source must be a non-empty string/,
+    );
     await expect(AutoBackend.create({ calibration: null as never })).rejects.toThrow(/options\.calibration must be an object/);
     await expect(AutoBackend.create({ onChange: 3 as never })).rejects.toThrow(/options\.onChange must be a function/);
     await expect(AutoBackend.create({ context: {} as never })).rejects.toThrow(/options\.context must be a GpuContext/);

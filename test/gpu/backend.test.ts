@@ -123,7 +123,7 @@ describeGpu('WebGPUBackend: the world API on the GPU', (ctx) => {
     expect(gpu.world.GetBackend()).toBeNull();
   }, 300_000);
 
-  it('golden vertical-stack: 240 steps on the GPU backend end within solverScenes.test.ts\'s thresholds of the engine', async () => {
+  it("golden vertical-stack: 240 steps on the GPU backend end within solverScenes.test.ts's thresholds of the engine", async () => {
     // The thresholds of solverScenes.test.ts's 'golden vertical-stack' case (largest distance 0.02
     // m, mean 0.01 m, angle 0.01 rad: colour-ordered against island-ordered Gauss-Seidel), which
     // steps the same scene through GpuStepper directly.
@@ -152,7 +152,9 @@ describeGpu('WebGPUBackend: the world API on the GPU', (ctx) => {
       count++;
       angle = Math.max(angle, Math.abs(a.GetAngle() - b.GetAngle()));
     }
-    console.log(`golden vertical-stack on the backend: ${count} bodies, max ${max.toExponential(2)} m, mean ${(sum / count).toExponential(2)} m, angle ${angle.toExponential(2)}`);
+    console.log(
+      `golden vertical-stack on the backend: ${count} bodies, max ${max.toExponential(2)} m, mean ${(sum / count).toExponential(2)} m, angle ${angle.toExponential(2)}`,
+    );
     expect(count).toBeGreaterThan(0);
     expect(max).toBeLessThan(0.02);
     expect(sum / count).toBeLessThan(0.01);
@@ -384,14 +386,16 @@ describeGpu('WebGPUBackend: the world API on the GPU', (ctx) => {
         expect(now).toBeGreaterThan(0);
         warmWorst = Math.max(warmWorst, Math.abs(now - before[0]) / before[0]);
       }
-      console.log(`round ${round}: first engine step after the switch, impulses off the GPU's by ${(100 * warmWorst).toFixed(3)}% (cold: ${(100 * coldWorst).toFixed(1)}%)`);
+      console.log(
+        `round ${round}: first engine step after the switch, impulses off the GPU's by ${(100 * warmWorst).toFixed(3)}% (cold: ${(100 * coldWorst).toFixed(1)}%)`,
+      );
       expect(warmWorst).toBeLessThan(1e-3);
       for (const b of boxes) expect(Math.abs(b.GetLinearVelocity().y)).toBeLessThan(0.01);
       boxes.forEach((b, i) => expect(Math.abs(b.GetPosition().y - positions[i].y)).toBeLessThan(1e-3));
     }
   }, 300_000);
 
-  it('readTransforms: one map copies every body slot\'s transform and awake flag, bit for bit what Synchronize gives the getters (float32: the nearest float32, packed on the GPU); empty slots are NaN', async () => {
+  it("readTransforms: one map copies every body slot's transform and awake flag, bit for bit what Synchronize gives the getters (float32: the nearest float32, packed on the GPU); empty slots are NaN", async () => {
     const { world, boxes } = dropScene();
     const backend = await WebGPUBackend.create({ context: ctx });
     await world.SetBackend(backend);
@@ -435,7 +439,9 @@ describeGpu('WebGPUBackend: the world API on the GPU', (ctx) => {
     await expect(backend.readTransforms(new Float32Array(4 * slots - 1))).rejects.toThrow(
       `readTransforms: out holds ${4 * slots - 1} numbers; this world needs 4 per body slot, ${4 * slots}`,
     );
-    await expect(backend.readTransforms(out, new Uint8Array(1))).rejects.toThrow(`readTransforms: awake holds 1 flags; this world needs one per body slot, ${slots}`);
+    await expect(backend.readTransforms(out, new Uint8Array(1))).rejects.toThrow(
+      `readTransforms: awake holds 1 flags; this world needs one per body slot, ${slots}`,
+    );
     // A rejected read loses nothing: the world steps and reads on.
     world.Step(DT, 8, 3);
     await backend.readTransforms(out);
@@ -549,7 +555,7 @@ describeGpu('WebGPUBackend: the world API on the GPU', (ctx) => {
     await world.SetBackend(null);
   }, 300_000);
 
-  it('destroy() frees a discarded world\'s GPU buffers without reading it back; the backend is finished and says so', async () => {
+  it("destroy() frees a discarded world's GPU buffers without reading it back; the backend is finished and says so", async () => {
     const { world } = dropScene();
     const backend = await WebGPUBackend.create({ context: ctx });
     await world.SetBackend(backend);

@@ -96,7 +96,12 @@ class PostSolveRecorder extends b2ContactListener {
   readonly postSolves: PostSolveCall[] = [];
 
   override PostSolve(c: b2Contact, impulse: b2ContactImpulse): void {
-    this.postSolves.push({ step: this.step, pair: pairName(c), normal: impulse.normalImpulses.slice(0, impulse.count), tangent: impulse.tangentImpulses.slice(0, impulse.count) });
+    this.postSolves.push({
+      step: this.step,
+      pair: pairName(c),
+      normal: impulse.normalImpulses.slice(0, impulse.count),
+      tangent: impulse.tangentImpulses.slice(0, impulse.count),
+    });
   }
 }
 
@@ -121,7 +126,12 @@ class Recorder extends b2ContactListener {
     for (const c of this.seen) {
       if (!c.IsTouching()) continue;
       const m = c.GetManifold();
-      list.push(`${Recorder.pair(c)}: ${m.points.slice(0, m.pointCount).map((p) => `${p.normalImpulse} ${p.tangentImpulse}`).join(', ')}`);
+      list.push(
+        `${Recorder.pair(c)}: ${m.points
+          .slice(0, m.pointCount)
+          .map((p) => `${p.normalImpulse} ${p.tangentImpulse}`)
+          .join(', ')}`,
+      );
     }
     this.snapshots.set(step, list.sort());
   }
@@ -135,7 +145,9 @@ class Recorder extends b2ContactListener {
     const m = c.GetManifold();
     c.GetWorldManifold(this.wm);
     if (m.pointCount < 1 || Math.abs(Math.abs(this.wm.normal.y) - 1) > 1e-3 || Math.abs(this.wm.points[0].y) > 0.1) {
-      this.checks.push(`step ${this.step} ${Recorder.pair(c)}: ${m.pointCount} points, normal (${this.wm.normal.x}, ${this.wm.normal.y}), point y ${this.wm.points[0].y}`);
+      this.checks.push(
+        `step ${this.step} ${Recorder.pair(c)}: ${m.pointCount} points, normal (${this.wm.normal.x}, ${this.wm.normal.y}), point y ${this.wm.points[0].y}`,
+      );
     }
   }
 
@@ -145,14 +157,23 @@ class Recorder extends b2ContactListener {
   }
 
   override PostSolve(c: b2Contact, impulse: b2ContactImpulse): void {
-    const post = { step: this.step, pair: Recorder.pair(c), normal: impulse.normalImpulses.slice(0, impulse.count), tangent: impulse.tangentImpulses.slice(0, impulse.count) };
+    const post = {
+      step: this.step,
+      pair: Recorder.pair(c),
+      normal: impulse.normalImpulses.slice(0, impulse.count),
+      tangent: impulse.tangentImpulses.slice(0, impulse.count),
+    };
     this.postSolves.push(post);
     this.calls.push({ step: this.step, kind: 'post', pair: post.pair, post });
     this.seen.add(c);
     // The contact shows the manifold of the step whose impulses these are.
     const m = c.GetManifold();
-    const same = m.pointCount === impulse.count && post.normal.every((n, k) => m.points[k].normalImpulse === n && m.points[k].tangentImpulse === post.tangent[k]);
-    if (!same) this.checks.push(`step ${this.step} ${post.pair}: PostSolve impulses ${post.normal} but the manifold's ${m.points.slice(0, m.pointCount).map((p) => p.normalImpulse)}`);
+    const same =
+      m.pointCount === impulse.count && post.normal.every((n, k) => m.points[k].normalImpulse === n && m.points[k].tangentImpulse === post.tangent[k]);
+    if (!same)
+      this.checks.push(
+        `step ${this.step} ${post.pair}: PostSolve impulses ${post.normal} but the manifold's ${m.points.slice(0, m.pointCount).map((p) => p.normalImpulse)}`,
+      );
   }
 }
 
@@ -270,7 +291,7 @@ describeGpu('WebGPUBackend: contact events after the step', (ctx) => {
     expect(gpu.checks).toEqual([]);
   }, 400_000);
 
-  it('delivers a step\'s events in the documented order (pair order), with IsTouching set, and the same b2Contact for a begin and its end', () => {
+  it("delivers a step's events in the documented order (pair order), with IsTouching set, and the same b2Contact for a begin and its end", () => {
     // Pairs are ordered by the fixtures' proxy slots, i.e. creation order here: ground, a, b, c.
     const rank = (pair: string) => ['a', 'b', 'c'].indexOf(pair.split('/')[1].split('#')[0]);
     for (const list of perStep(gpu.events).values()) {
@@ -290,7 +311,7 @@ describeGpu('WebGPUBackend: contact events after the step', (ctx) => {
     expect(ends).toBe(1);
   });
 
-  it('steps taken without synchronising: every step\'s events at the next synchronisation, in step order', async () => {
+  it("steps taken without synchronising: every step's events at the next synchronisation, in step order", async () => {
     batched = await run(await WebGPUBackend.create({ context: ctx }), (step) => step % 4 === 0, new Recorder());
     // Each synchronisation delivers after the last of its steps (the listener's `step` then). The
     // push is applied between Steps that wait to be recorded: its force must still go into step
@@ -304,7 +325,7 @@ describeGpu('WebGPUBackend: contact events after the step', (ctx) => {
     }
   }, 300_000);
 
-  it('PostSolve: every touching contact each step, with impulses within 2e-4 N s of the engine\'s for a box at rest', () => {
+  it("PostSolve: every touching contact each step, with impulses within 2e-4 N s of the engine's for a box at rest", () => {
     // Box 'b' lands at about step 16 and rests; by step 35 its contact carries m g dt / 2 = 0.0833
     // N s per point. The engine's float64 block solver and the GPU's float32 one agree to a few
     // ulps of the impulses per iteration; 2e-4 (0.25%) leaves room for the float32 positions.
@@ -321,14 +342,22 @@ describeGpu('WebGPUBackend: contact events after the step', (ctx) => {
       }
       expect(a.normal[0] + a.normal[1]).toBeCloseTo(10 * DT, 2);
       // The same contacts get PostSolve on both.
-      const pairs = (r: Recorder) => r.postSolves.filter((p) => p.step === step).map((p) => p.pair).sort();
+      const pairs = (r: Recorder) =>
+        r.postSolves
+          .filter((p) => p.step === step)
+          .map((p) => p.pair)
+          .sort();
       expect(pairs(gpu)).toEqual(pairs(js));
     }
   });
 
-  it('steps taken without synchronising: each step\'s Begin/End, then its PostSolve (the engine\'s contacts and count), before the next step\'s', () => {
+  it("steps taken without synchronising: each step's Begin/End, then its PostSolve (the engine's contacts and count), before the next step's", () => {
     const steps = cutIntoSteps(js, batched.calls);
-    const show = (calls: Call[]) => calls.map((c) => `${c.kind} ${c.pair}`).sort().join(', ');
+    const show = (calls: Call[]) =>
+      calls
+        .map((c) => `${c.kind} ${c.pair}`)
+        .sort()
+        .join(', ');
     const expected: string[] = [];
     const got: string[] = [];
     for (let step = 1; step <= STEPS; ++step) {
@@ -344,7 +373,7 @@ describeGpu('WebGPUBackend: contact events after the step', (ctx) => {
     for (let step = 20; step <= STEPS; ++step) expect(steps[step - 1].posts.length, `step ${step}`).toBeGreaterThan(0);
   });
 
-  it('steps taken without synchronising: each step\'s PostSolve impulses within 2e-4 N s of the engine\'s, for every contact', () => {
+  it("steps taken without synchronising: each step's PostSolve impulses within 2e-4 N s of the engine's, for every contact", () => {
     // The PostSolve test's bound (a box at rest), here for every step and contact, landings
     // included (the thrown box's impact carries about 1 N s): the measured largest difference is
     // 7.1e-5 N s (box 'a' landing again), at rest 1.1e-5.
@@ -361,7 +390,7 @@ describeGpu('WebGPUBackend: contact events after the step', (ctx) => {
     console.log(`largest impulse differences per contact: ${[...measured.entries()].map(([k, v]) => `${k} ${v.toExponential(2)}`).join(' | ')}`);
   });
 
-  it('PostSolve\'s b2Contact shows that step\'s manifold; after the synchronisation, every contact shows the last step\'s', () => {
+  it("PostSolve's b2Contact shows that step's manifold; after the synchronisation, every contact shows the last step's", () => {
     expect(batched.checks).toEqual([]);
     const steps = cutIntoSteps(js, batched.calls);
     // The check can fail: within a synchronisation, a contact's impulses change from step to step.
@@ -380,7 +409,7 @@ describeGpu('WebGPUBackend: contact events after the step', (ctx) => {
     expect(batched.snapshots.size).toBe(Math.ceil(STEPS / 4));
   });
 
-  it('a listener with PostSolve only gets every step\'s PostSolve, the same as with Begin/End', async () => {
+  it("a listener with PostSolve only gets every step's PostSolve, the same as with Begin/End", async () => {
     const only = await run(await WebGPUBackend.create({ context: ctx }), (step) => step % 4 === 0, new PostSolveRecorder());
     expect(only.postSolves.length).toBe(js.postSolves.length);
     expect(only.postSolves).toEqual(batched.postSolves);
@@ -484,7 +513,7 @@ describeGpu('WebGPUBackend: contact events after the step', (ctx) => {
     expect(gpu.slice(-10)).toEqual(new Array(10).fill(0));
   }, 300_000);
 
-  it('handing the world back right after unsynchronised steps with PostSolve: the engine\'s contacts get the last step\'s manifolds, read once', async () => {
+  it("handing the world back right after unsynchronised steps with PostSolve: the engine's contacts get the last step's manifolds, read once", async () => {
     const { world } = scene();
     const listener = new PostSolveRecorder();
     world.SetContactListener(listener);

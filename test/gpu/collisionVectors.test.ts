@@ -45,7 +45,13 @@ import { describeGpu } from './support';
 import { caseScale, classifyThreshold, margins, THRESHOLD_ULPS } from './thresholds';
 import type { Family } from './thresholds';
 
-const FAMILIES: Exclude<Family, 'overlap'>[] = ['collideCircles', 'collidePolygonAndCircle', 'collidePolygons', 'collideEdgeAndCircle', 'collideEdgeAndPolygon'];
+const FAMILIES: Exclude<Family, 'overlap'>[] = [
+  'collideCircles',
+  'collidePolygonAndCircle',
+  'collidePolygons',
+  'collideEdgeAndCircle',
+  'collideEdgeAndPolygon',
+];
 
 /** Most threshold cases a family may have (each one shown to be a float32 rounding flip). */
 const MAX_THRESHOLD_CASES = 6;

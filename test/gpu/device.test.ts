@@ -10,14 +10,7 @@ import { b2Vec2 } from '../../src/common/b2Math';
 import { b2BodyDef, b2_dynamicBody } from '../../src/dynamics/b2Body';
 import { b2World } from '../../src/dynamics/b2World';
 import { GpuBroadPhase } from '../../src-gpu/broadphase/broadPhase';
-import {
-  GpuCapacityError,
-  GpuDeviceLostError,
-  GpuError,
-  GpuOutOfMemoryError,
-  GpuUnavailableError,
-  requestGpu,
-} from '../../src-gpu/device/device';
+import { GpuCapacityError, GpuDeviceLostError, GpuError, GpuOutOfMemoryError, GpuUnavailableError, requestGpu } from '../../src-gpu/device/device';
 import type { GpuLossInfo } from '../../src-gpu/device/device';
 import { USAGE } from '../../src-gpu/device/layout';
 import { findSwiftShaderIcd, loadDawn, mayHaveHardwareAdapter, SWIFTSHADER_ICD_PATHS, withToggle } from '../../src-gpu/device/node';
@@ -121,7 +114,6 @@ describeGpu('devices', (ctx) => {
     software.destroy();
     custom.destroy();
   });
-
 
   it('passes skip_validation to Dawn only when asked, and the broad phase finds the same pairs with it', async () => {
     const seen: string[][] = [];

@@ -63,7 +63,10 @@ describeGpu('GPU broad phase on the golden scenes', (ctx) => {
           // a0 - a the mirror's float32 angles give (a lever of metres turns the rounding of a
           // large angle into micrometres).
           xf0.q.Set(sweep.a + (Math.fround(sweep.a0) - Math.fround(sweep.a)));
-          xf0.p.Set(sweep.c0.x - (xf0.q.c * sweep.localCenter.x - xf0.q.s * sweep.localCenter.y), sweep.c0.y - (xf0.q.s * sweep.localCenter.x + xf0.q.c * sweep.localCenter.y));
+          xf0.p.Set(
+            sweep.c0.x - (xf0.q.c * sweep.localCenter.x - xf0.q.s * sweep.localCenter.y),
+            sweep.c0.y - (xf0.q.s * sweep.localCenter.x + xf0.q.c * sweep.localCenter.y),
+          );
           f.m_shape.ComputeAABB(start, xf0, proxy.childIndex);
           const d = [b2_aabbMultiplier * (body.m_xf.p.x - xf0.p.x), b2_aabbMultiplier * (body.m_xf.p.y - xf0.p.y)];
           const e = [b2_aabbMultiplier * dt * body.m_linearVelocity.x, b2_aabbMultiplier * dt * body.m_linearVelocity.y];

@@ -112,7 +112,7 @@ it('declares the state words, indirect offsets and flags the host uses', () => {
   expect(Math.max(...Object.values(layout.ARGS)) + 3).toBeLessThanOrEqual(layout.INDIRECT_WORDS);
 });
 
-it('declares the narrow phase\'s state words, bins, indirect offsets and contact flags the host uses', () => {
+it("declares the narrow phase's state words, bins, indirect offsets and contact flags the host uses", () => {
   const c = constants(wgsl('common'));
   for (const [name, value] of Object.entries(layout.NP)) expect(c.get(`NP_${name}`), name).toBe(value);
   for (const [name, value] of Object.entries(layout.NP_ARGS)) expect(c.get(`NP_ARGS_${name}`), name).toBe(value);
@@ -274,7 +274,7 @@ it('keeps the engine free of the GPU backend', () => {
   expect(offenders).toEqual([]);
 });
 
-it("imports from the engine only types and its two constant modules, so the GPU bundle carries no second engine", () => {
+it('imports from the engine only types and its two constant modules, so the GPU bundle carries no second engine', () => {
   const allowed = new Set(['src/common/b2Constants', 'src/common/b2Settings']);
   const offenders: string[] = [];
   for (const file of filesUnder('src-gpu', '.ts')) {

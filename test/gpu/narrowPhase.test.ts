@@ -76,7 +76,7 @@ function scriptedWorld(): Scripted {
 type EventKey = string;
 
 describeGpu('GpuNarrowPhase: events, determinism, capacity, bins', (ctx) => {
-  it('reports the engine listener\'s BeginContact/EndContact, step by step, for a sensor, a bumper and a destroyed body', async () => {
+  it("reports the engine listener's BeginContact/EndContact, step by step, for a sensor, a bumper and a destroyed body", async () => {
     const { world, box } = scriptedWorld();
     const mirror = new GpuWorld(ctx, world);
     const broadPhase = new GpuBroadPhase(ctx);

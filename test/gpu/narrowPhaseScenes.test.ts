@@ -184,7 +184,8 @@ describeGpu('GPU narrow phase against the engine on the golden scenes', (ctx) =>
           const js = snap.get(key);
           let reference: Snapshot;
           if (js) {
-            if (js.proxyA !== c.proxyA) failures.push(`step ${target}: contact (${c.a}, ${c.b}): fixture A is proxy ${c.proxyA} on the GPU, ${js.proxyA} in the engine`);
+            if (js.proxyA !== c.proxyA)
+              failures.push(`step ${target}: contact (${c.a}, ${c.b}): fixture A is proxy ${c.proxyA} on the GPU, ${js.proxyA} in the engine`);
             reference = js;
           } else {
             // A pair the engine has no contact for: its collide function on the same inputs.
@@ -239,7 +240,9 @@ describeGpu('GPU narrow phase against the engine on the golden scenes', (ctx) =>
             pe = Math.max(pe, Math.abs(p.localPoint.x - reference.points[i].x), Math.abs(p.localPoint.y - reference.points[i].y));
           });
           if (ne > 1e-5 || pe > 1e-5 * S) {
-            failures.push(`step ${target}: contact (${c.a}, ${c.b}) ${family}: normal error ${ne.toExponential(2)}, point error ${pe.toExponential(2)} (S ${S.toPrecision(3)})`);
+            failures.push(
+              `step ${target}: contact (${c.a}, ${c.b}) ${family}: normal error ${ne.toExponential(2)}, point error ${pe.toExponential(2)} (S ${S.toPrecision(3)})`,
+            );
           }
           if (js) {
             c.points.forEach((p, i) => {

@@ -23,7 +23,10 @@ function separations(m: Geometry, a: b2Body, radiusA: number, b: b2Body, radiusB
     x: body.m_xf.q.c * v.x - body.m_xf.q.s * v.y + body.m_xf.p.x,
     y: body.m_xf.q.s * v.x + body.m_xf.q.c * v.y + body.m_xf.p.y,
   });
-  const rotate = (body: b2Body, v: { x: number; y: number }) => ({ x: body.m_xf.q.c * v.x - body.m_xf.q.s * v.y, y: body.m_xf.q.s * v.x + body.m_xf.q.c * v.y });
+  const rotate = (body: b2Body, v: { x: number; y: number }) => ({
+    x: body.m_xf.q.c * v.x - body.m_xf.q.s * v.y,
+    y: body.m_xf.q.s * v.x + body.m_xf.q.c * v.y,
+  });
   const out: number[] = [];
   if (m.type === 0) {
     const pA = mul(a, m.localPoint);
@@ -47,8 +50,15 @@ export function engineDeepest(world: b2World): number {
   for (let c = world.m_contactManager.m_contactList; c; c = c.m_next) {
     if ((c.m_flags & 0x0002) === 0 || c.m_fixtureA.m_isSensor || c.m_fixtureB.m_isSensor) continue;
     const m: b2Manifold = c.m_manifold;
-    const g: Geometry = { type: m.type, pointCount: m.pointCount, localNormal: m.localNormal, localPoint: m.localPoint, points: m.points.slice(0, m.pointCount).map((p) => p.localPoint) };
-    for (const s of separations(g, c.m_fixtureA.m_body, c.m_fixtureA.m_shape.m_radius, c.m_fixtureB.m_body, c.m_fixtureB.m_shape.m_radius)) deepest = Math.max(deepest, -s);
+    const g: Geometry = {
+      type: m.type,
+      pointCount: m.pointCount,
+      localNormal: m.localNormal,
+      localPoint: m.localPoint,
+      points: m.points.slice(0, m.pointCount).map((p) => p.localPoint),
+    };
+    for (const s of separations(g, c.m_fixtureA.m_body, c.m_fixtureA.m_shape.m_radius, c.m_fixtureB.m_body, c.m_fixtureB.m_shape.m_radius))
+      deepest = Math.max(deepest, -s);
   }
   return deepest;
 }

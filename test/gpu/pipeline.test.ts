@@ -31,26 +31,29 @@ function passes(first: GpuStage, last: GpuStage): string[] {
 }
 
 describeGpu('GPU pipeline', (ctx) => {
-  it.skipIf(!ctx.timestamps)('records the passes of a step in GpuStage order, the solver after collision and time of impact only with continuous physics', async () => {
-    const scene = loadGoldenScene('pyramid');
-    const world = scene.world;
-    world.SetContinuousPhysics(true);
-    const stepper = new GpuStepper(ctx, world);
-    try {
-      const named = (gpuTime: Record<string, number> | null) => Object.keys(gpuTime ?? {}).filter((k) => k !== 'total');
-      const collision = await stepper.step(0, 8, 3);
-      expect(named(collision.gpuTime)).toEqual(passes(GpuStage.BroadPhase, GpuStage.Compact));
-      const full = await stepper.step(1 / 60, 8, 3);
-      expect(named(full.gpuTime)).toEqual(passes(GpuStage.BroadPhase, GpuStage.TimeOfImpact));
-      world.SetContinuousPhysics(false);
-      const discrete = await stepper.step(1 / 60, 8, 3);
-      expect(named(discrete.gpuTime)).toEqual(passes(GpuStage.BroadPhase, GpuStage.Sleep));
-      expect(discrete.dispatches).toBeLessThan(full.dispatches);
-      expect(collision.dispatches).toBeLessThan(discrete.dispatches);
-    } finally {
-      stepper.destroy();
-    }
-  });
+  it.skipIf(!ctx.timestamps)(
+    'records the passes of a step in GpuStage order, the solver after collision and time of impact only with continuous physics',
+    async () => {
+      const scene = loadGoldenScene('pyramid');
+      const world = scene.world;
+      world.SetContinuousPhysics(true);
+      const stepper = new GpuStepper(ctx, world);
+      try {
+        const named = (gpuTime: Record<string, number> | null) => Object.keys(gpuTime ?? {}).filter((k) => k !== 'total');
+        const collision = await stepper.step(0, 8, 3);
+        expect(named(collision.gpuTime)).toEqual(passes(GpuStage.BroadPhase, GpuStage.Compact));
+        const full = await stepper.step(1 / 60, 8, 3);
+        expect(named(full.gpuTime)).toEqual(passes(GpuStage.BroadPhase, GpuStage.TimeOfImpact));
+        world.SetContinuousPhysics(false);
+        const discrete = await stepper.step(1 / 60, 8, 3);
+        expect(named(discrete.gpuTime)).toEqual(passes(GpuStage.BroadPhase, GpuStage.Sleep));
+        expect(discrete.dispatches).toBeLessThan(full.dispatches);
+        expect(collision.dispatches).toBeLessThan(discrete.dispatches);
+      } finally {
+        stepper.destroy();
+      }
+    },
+  );
 
   it('records a collide kernel only for the pair types the fixtures can form, and time of impact only with bullets or static and kinematic bodies', async () => {
     const world = new b2World(new b2Vec2(0, 0));

@@ -27,7 +27,14 @@ async function read(ctx: GpuContext, buffer: GPUBuffer, bytes: number): Promise<
  * the sort is dispatched indirectly (the tile count in a buffer, as a GPU-computed count would
  * be), its scan sized for `indirect.maxCount`.
  */
-async function gpuSort(ctx: GpuContext, sort: RadixSort, data: Uint32Array<ArrayBuffer>, passes: SortPass[], digits = 16, indirect?: { maxCount: number }): Promise<{ sorted: Uint32Array; totals: Uint32Array; dispatches: number }> {
+async function gpuSort(
+  ctx: GpuContext,
+  sort: RadixSort,
+  data: Uint32Array<ArrayBuffer>,
+  passes: SortPass[],
+  digits = 16,
+  indirect?: { maxCount: number },
+): Promise<{ sorted: Uint32Array; totals: Uint32Array; dispatches: number }> {
   const n = data.length / 2;
   const a = new GpuArray(ctx, 'a', 8, Math.max(1, n));
   const b = new GpuArray(ctx, 'b', 8, Math.max(1, n));
@@ -40,7 +47,15 @@ async function gpuSort(ctx: GpuContext, sort: RadixSort, data: Uint32Array<Array
   const enc = ctx.device.createCommandEncoder();
   const pass = enc.beginComputePass();
   const rec = new Recorder(pass, 65535);
-  const out = sort.encode(rec, a.buffer, b.buffer, passes, state, 0, indirect ? { indirect: args, offset: 0, maxCount: indirect.maxCount } : { groups: Math.ceil(n / SORT_TILE) });
+  const out = sort.encode(
+    rec,
+    a.buffer,
+    b.buffer,
+    passes,
+    state,
+    0,
+    indirect ? { indirect: args, offset: 0, maxCount: indirect.maxCount } : { groups: Math.ceil(n / SORT_TILE) },
+  );
   pass.end();
   ctx.device.queue.submit([enc.finish()]);
   const sorted = await read(ctx, out, Math.max(4, 8 * n));
@@ -233,7 +248,7 @@ describeGpu('radix sort and scan stages', (ctx) => {
     }
   });
 
-  it('leaves the last pass\'s count of each digit in digitTotalsBuffer (the narrow phase\'s bin sizes)', async () => {
+  it("leaves the last pass's count of each digit in digitTotalsBuffer (the narrow phase's bin sizes)", async () => {
     const sort = new RadixSort(ctx);
     const random = rng(29);
     const n = 4000;
@@ -249,7 +264,7 @@ describeGpu('radix sort and scan stages', (ctx) => {
     }
   });
 
-  it('sorts the broad phase\'s keys in fewer passes and dispatches: 3 passes in 7 dispatches for the entries, 5 in 11 for the pairs of 10^6 slots', async () => {
+  it("sorts the broad phase's keys in fewer passes and dispatches: 3 passes in 7 dispatches for the entries, 5 in 11 for the pairs of 10^6 slots", async () => {
     // Before: 4-bit digits over 32-bit entry keys (8 passes) and over a and b apart (5 + 5), then
     // 3 dispatches per pass (9 and 15); now one upsweep, then a scan and a downsweep per pass.
     const entry = digitPasses(KEY_BITS, 0, 8);
@@ -258,13 +273,22 @@ describeGpu('radix sort and scan stages', (ctx) => {
     expect(pairs.map((p) => p.bits)).toEqual([8, 8, 8, 8, 8]);
     expect(pairSortPasses(1000).map((p) => p.bits)).toEqual([8, 8, 4]);
     const sort = new RadixSort(ctx);
-    expect((await gpuSort(ctx, sort, keyed(3000, (i) => i * 7919), entry)).dispatches).toBe(7);
+    expect(
+      (
+        await gpuSort(
+          ctx,
+          sort,
+          keyed(3000, (i) => i * 7919),
+          entry,
+        )
+      ).dispatches,
+    ).toBe(7);
     const pairData = keyed(3000, (i) => (i * 7919) % 1_000_000);
     expect((await gpuSort(ctx, sort, pairData, pairs)).dispatches).toBe(11);
     expect((await gpuSort(ctx, sort, pairData, [{ shift: 0, component: 0 }])).dispatches).toBe(3);
   });
 
-  it('counts each pass\'s digits per tile in the previous pass\'s downsweep exactly as an upsweep of that pass\'s input counts them', async () => {
+  it("counts each pass's digits per tile in the previous pass's downsweep exactly as an upsweep of that pass's input counts them", async () => {
     // After a sort of P passes, histograms[(P - 1) % 2] holds the last pass's tile prefixes and the
     // other buffer the pass before's; from the second pass on, those counts came from the
     // previous downsweep's atomics. Expected: the prefixes of a JavaScript pass-by-pass sort, and

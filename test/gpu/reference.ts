@@ -8,12 +8,7 @@
 export type PairFilter = (a: number, b: number) => boolean;
 
 function overlaps(aabbs: Float32Array, a: number, b: number): boolean {
-  return (
-    aabbs[4 * b] <= aabbs[4 * a + 2] &&
-    aabbs[4 * b + 1] <= aabbs[4 * a + 3] &&
-    aabbs[4 * a] <= aabbs[4 * b + 2] &&
-    aabbs[4 * a + 1] <= aabbs[4 * b + 3]
-  );
+  return aabbs[4 * b] <= aabbs[4 * a + 2] && aabbs[4 * b + 1] <= aabbs[4 * a + 3] && aabbs[4 * a] <= aabbs[4 * b + 2] && aabbs[4 * a + 1] <= aabbs[4 * b + 3];
 }
 
 function isLive(aabbs: Float32Array, i: number): boolean {

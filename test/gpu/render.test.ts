@@ -227,12 +227,18 @@ describeGpu('GpuRenderer: the world drawn from the GPU buffers', (ctx) => {
       await world.Synchronize();
       // The awake dynamic bodies' fills: the box, the ball and the pendulum's bob, each where the
       // GPU has its body.
-      const left = centroid(image.map((v, i) => (Math.floor(i / 4) % SIZE < SIZE / 2 && Math.floor(i / 4 / SIZE) < SIZE / 2 ? v : 0)), awakeFill);
+      const left = centroid(
+        image.map((v, i) => (Math.floor(i / 4) % SIZE < SIZE / 2 && Math.floor(i / 4 / SIZE) < SIZE / 2 ? v : 0)),
+        awakeFill,
+      );
       const boxAt = project(box.GetPosition(), 0, 0);
       expect(left.n).toBeGreaterThan(300); // a 20 x 20 pixel square, its outline aside
       expect(left.x).toBeCloseTo(boxAt.x, -0.5);
       expect(left.y).toBeCloseTo(boxAt.y, -0.5);
-      const right = centroid(image.map((v, i) => (Math.floor(i / 4) % SIZE >= SIZE / 2 ? v : 0)), awakeFill);
+      const right = centroid(
+        image.map((v, i) => (Math.floor(i / 4) % SIZE >= SIZE / 2 ? v : 0)),
+        awakeFill,
+      );
       const ballAt = project(ball.GetPosition(), 0, 0);
       expect(right.n).toBeGreaterThan(250); // a disc of radius 10 pixels: 314, its outline aside
       expect(right.x).toBeCloseTo(ballAt.x, -0.5);
@@ -265,7 +271,11 @@ describeGpu('GpuRenderer: the world drawn from the GPU buffers', (ctx) => {
       await world.Synchronize();
       // The box alone: the bob (80 pixels or more below it) and the ball (at the right edge or
       // beyond) are left out.
-      const onlyBox = (image: Uint8Array) => centroid(image.map((v, i) => (Math.floor(i / 4) % SIZE < 200 && Math.floor(i / 4 / SIZE) < 180 ? v : 0)), awakeFill);
+      const onlyBox = (image: Uint8Array) =>
+        centroid(
+          image.map((v, i) => (Math.floor(i / 4) % SIZE < 200 && Math.floor(i / 4 / SIZE) < 180 ? v : 0)),
+          awakeFill,
+        );
       Object.assign(renderer.camera, { x: -5, y: 4, scale: SCALE });
       await renderer.drawTo(texture);
       const centred = onlyBox(await pixels(ctx, texture, 'render-camera-1'));

@@ -280,7 +280,11 @@ function priority(item: number): number {
 function referenceColours(c: Colouring): number[] {
   const n = c.colours.length;
   const colours = new Array<number>(n).fill(-1);
-  const dynamicBodies = Array.from({ length: n }, (_, k) => itemBodies(c, k).filter(([, dynamic]) => dynamic).map(([body]) => body));
+  const dynamicBodies = Array.from({ length: n }, (_, k) =>
+    itemBodies(c, k)
+      .filter(([, dynamic]) => dynamic)
+      .map(([body]) => body),
+  );
   for (let round = 0; round < COLOUR_CAP; ++round) {
     const best = new Map<number, number>();
     for (let k = 0; k < n; ++k) {
@@ -306,9 +310,16 @@ async function colouringAfter(ctx: Parameters<Parameters<typeof describeGpu>[1]>
   const c = await stepper.solver.readColouring();
   await stepper.readBodies();
   const state: number[] = [];
-  for (let b = world.m_bodyList; b; b = b.m_next) state.push(b.m_xf.p.x, b.m_xf.p.y, b.m_sweep.a, b.m_linearVelocity.x, b.m_linearVelocity.y, b.m_angularVelocity);
+  for (let b = world.m_bodyList; b; b = b.m_next)
+    state.push(b.m_xf.p.x, b.m_xf.p.y, b.m_sweep.a, b.m_linearVelocity.x, b.m_linearVelocity.y, b.m_angularVelocity);
   stepper.destroy();
-  return { colouring: { joints: c.joints, colours: c.colours, bodies: c.bodies, jointBodies: c.jointBodies, keys: c.keys, colourStart: c.state.colourStart }, state, world, dispatches, positionIterations };
+  return {
+    colouring: { joints: c.joints, colours: c.colours, bodies: c.bodies, jointBodies: c.jointBodies, keys: c.keys, colourStart: c.state.colourStart },
+    state,
+    world,
+    dispatches,
+    positionIterations,
+  };
 }
 
 describeGpu('GPU solver: graph colouring', (ctx) => {
@@ -349,7 +360,9 @@ describeGpu('GPU solver: graph colouring', (ctx) => {
     // 11 chain joints + 1 hanger + 4 disc revolutes + 2 gears.
     expect(colouring.joints).toBe(18);
     expect(colouring.colours.length - colouring.joints).toBeGreaterThanOrEqual(12);
-    console.log(`joints and contacts: ${colouring.joints} joints, ${colouring.colours.length - colouring.joints} contacts, ${r.used} colours, ${r.overflow} in the overflow set`);
+    console.log(
+      `joints and contacts: ${colouring.joints} joints, ${colouring.colours.length - colouring.joints} contacts, ${r.used} colours, ${r.overflow} in the overflow set`,
+    );
     expect(r.overflow).toBe(0);
     // Colours mix joints and contacts (the lists put a colour's joints first).
     let mixed = false;

@@ -135,7 +135,19 @@ async function gpuAwake(ctx: GpuContext, mirror: GpuWorld): Promise<Uint32Array>
 
 /** Transform, sweep, velocities and sleep time of the bodies as float64 values (float32 on the GPU side). */
 const motion = (bodies: b2Body[]) =>
-  bodies.map((b) => [b.m_xf.p.x, b.m_xf.p.y, b.m_xf.q.c, b.m_xf.q.s, b.m_sweep.c.x, b.m_sweep.c.y, b.m_sweep.a, b.m_linearVelocity.x, b.m_linearVelocity.y, b.m_angularVelocity, b.m_sleepTime]);
+  bodies.map((b) => [
+    b.m_xf.p.x,
+    b.m_xf.p.y,
+    b.m_xf.q.c,
+    b.m_xf.q.s,
+    b.m_sweep.c.x,
+    b.m_sweep.c.y,
+    b.m_sweep.a,
+    b.m_linearVelocity.x,
+    b.m_linearVelocity.y,
+    b.m_angularVelocity,
+    b.m_sleepTime,
+  ]);
 
 it("compiles the islands stage with b2Settings' sleep constants and the islands layout the host uses", () => {
   const source = SHADERS.islands;

@@ -154,7 +154,12 @@ function differences(a: b2World, b: b2World, jointedOnly = false): { position: n
     const y = bb[i];
     if (jointedOnly && x.m_jointList === null) continue;
     position = Math.max(position, Math.abs(x.m_xf.p.x - y.m_xf.p.x), Math.abs(x.m_xf.p.y - y.m_xf.p.y), Math.abs(x.m_sweep.a - y.m_sweep.a));
-    velocity = Math.max(velocity, Math.abs(x.m_linearVelocity.x - y.m_linearVelocity.x), Math.abs(x.m_linearVelocity.y - y.m_linearVelocity.y), Math.abs(x.m_angularVelocity - y.m_angularVelocity));
+    velocity = Math.max(
+      velocity,
+      Math.abs(x.m_linearVelocity.x - y.m_linearVelocity.x),
+      Math.abs(x.m_linearVelocity.y - y.m_linearVelocity.y),
+      Math.abs(x.m_angularVelocity - y.m_angularVelocity),
+    );
   }
   return { position, velocity };
 }
@@ -231,7 +236,9 @@ describeGpu('GPU solver: revolute and distance joints against the engine', (ctx)
       const d = differences(js.world, gpu.world, true);
       const errors = jointErrors(gpu.world);
       const engineErrors = jointErrors(js.world);
-      console.log(`golden ${name}: step ${GOLDEN_STEPS} position ${d.position.toExponential(2)}; joint errors GPU ${JSON.stringify(errors)}, engine ${JSON.stringify(engineErrors)}`);
+      console.log(
+        `golden ${name}: step ${GOLDEN_STEPS} position ${d.position.toExponential(2)}; joint errors GPU ${JSON.stringify(errors)}, engine ${JSON.stringify(engineErrors)}`,
+      );
       expect(d.position).toBeLessThan(GOLDEN_POSITION);
       expect(errors.anchor).toBeLessThan(Math.max(0.01, GOLDEN_GAP * engineErrors.anchor));
     });
@@ -291,7 +298,9 @@ describeGpu('GPU solver: revolute and distance joints against the engine', (ctx)
     await stepper.readBodies();
     stepper.destroy();
     const d = differences(js, gpu);
-    console.log(`joint grid: largest anchor gap GPU ${gpuGap.toExponential(2)} m, engine ${engineGap.toExponential(2)} m; position difference ${d.position.toExponential(2)}`);
+    console.log(
+      `joint grid: largest anchor gap GPU ${gpuGap.toExponential(2)} m, engine ${engineGap.toExponential(2)} m; position difference ${d.position.toExponential(2)}`,
+    );
     // Connected: no joint opens wider than twice the engine's own largest gap (or 1 cm), and the
     // net hangs where the engine's does within 2 cm (180 joints coloured instead of island-ordered
     // do not converge to the same sag in 8 iterations; measured gaps 7.4 mm against the engine's

@@ -456,7 +456,9 @@ const SCENES: Record<string, Scene> = {
     check: (gpu, js) => {
       const g = bodies(gpu)[0];
       const e = bodies(js)[0];
-      console.log(`friction: speed GPU ${g.m_linearVelocity.Length().toFixed(5)}, engine ${e.m_linearVelocity.Length().toFixed(5)}; w ${g.m_angularVelocity.toFixed(5)}, ${e.m_angularVelocity.toFixed(5)}`);
+      console.log(
+        `friction: speed GPU ${g.m_linearVelocity.Length().toFixed(5)}, engine ${e.m_linearVelocity.Length().toFixed(5)}; w ${g.m_angularVelocity.toFixed(5)}, ${e.m_angularVelocity.toFixed(5)}`,
+      );
       // Slowed by maxForce / mass x 1 s = 2 m/s (from 4.12), as in the engine (1e-4 m/s).
       expect(g.m_linearVelocity.Length()).toBeLessThan(Math.hypot(4, 1) - 1.9);
       expect(Math.abs(g.m_linearVelocity.Length() - e.m_linearVelocity.Length())).toBeLessThan(1e-4);
@@ -513,7 +515,9 @@ describeGpu('GPU solver: prismatic, pulley, mouse, gear, wheel, weld, friction a
       await stepper.readBodies();
       stepper.destroy();
       const position = positionDifference(js, gpu);
-      console.log(`${name}: error above the engine's ${worst.toExponential(2)} (engine's largest ${engineWorst.toExponential(2)}); position ${position.toExponential(2)}`);
+      console.log(
+        `${name}: error above the engine's ${worst.toExponential(2)} (engine's largest ${engineWorst.toExponential(2)}); position ${position.toExponential(2)}`,
+      );
       expect(worst).toBeLessThan(ERROR_SLACK + engineWorst);
       expect(position).toBeLessThan(scene.position);
       scene.check?.(gpu, js);

@@ -155,7 +155,8 @@ describeGpu('GPU solver: stacks and pyramids against the engine', (ctx) => {
         const b = gpu.bodies[i];
         if (a.m_type !== b2_dynamicBody) continue;
         const d = Math.hypot(a.m_xf.p.x - b.m_xf.p.x, a.m_xf.p.y - b.m_xf.p.y);
-        if (d > maxPosition) worst = `body ${i}: engine (${a.m_xf.p.x.toFixed(4)}, ${a.m_xf.p.y.toFixed(4)}), GPU (${b.m_xf.p.x.toFixed(4)}, ${b.m_xf.p.y.toFixed(4)})`;
+        if (d > maxPosition)
+          worst = `body ${i}: engine (${a.m_xf.p.x.toFixed(4)}, ${a.m_xf.p.y.toFixed(4)}), GPU (${b.m_xf.p.x.toFixed(4)}, ${b.m_xf.p.y.toFixed(4)})`;
         maxPosition = Math.max(maxPosition, d);
         sumPosition += d;
         dynamicCount++;

@@ -145,7 +145,12 @@ describeGpu('GPU solver: one step against the engine', (ctx) => {
           const x = ba[i];
           const y = bb[i];
           maxP = Math.max(maxP, Math.abs(x.m_xf.p.x - y.m_xf.p.x), Math.abs(x.m_xf.p.y - y.m_xf.p.y), Math.abs(x.m_sweep.a - y.m_sweep.a));
-          maxV = Math.max(maxV, Math.abs(x.m_linearVelocity.x - y.m_linearVelocity.x), Math.abs(x.m_linearVelocity.y - y.m_linearVelocity.y), Math.abs(x.m_angularVelocity - y.m_angularVelocity));
+          maxV = Math.max(
+            maxV,
+            Math.abs(x.m_linearVelocity.x - y.m_linearVelocity.x),
+            Math.abs(x.m_linearVelocity.y - y.m_linearVelocity.y),
+            Math.abs(x.m_angularVelocity - y.m_angularVelocity),
+          );
         }
         console.log(`${name} warm ${warm}: max position error ${maxP.toExponential(2)}, velocity ${maxV.toExponential(2)}`);
         stepper.destroy();

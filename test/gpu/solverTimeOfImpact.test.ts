@@ -97,7 +97,9 @@ describeGpu('GPU continuous collision', (ctx) => {
         const xOff = off.bullet.GetPosition().x;
         const xOn = on.bullet.GetPosition().x;
         const xGpu = gpu.bullet.GetPosition().x;
-        console.log(`${kind} bullet, ${wall}: x after ${STEPS} steps: engine without continuous physics ${xOff.toFixed(3)}, with it ${xOn.toFixed(5)}, GPU ${xGpu.toFixed(5)} m`);
+        console.log(
+          `${kind} bullet, ${wall}: x after ${STEPS} steps: engine without continuous physics ${xOff.toFixed(3)}, with it ${xOn.toFixed(5)}, GPU ${xGpu.toFixed(5)} m`,
+        );
         expect(xOff).toBeGreaterThan(WALL_X + 10);
         expect(xOn).toBeLessThan(WALL_X);
         expect(xGpu).toBeLessThan(WALL_X);
@@ -140,7 +142,9 @@ describeGpu('GPU continuous collision', (ctx) => {
     }
     await on.readBodies();
     await off.readBodies();
-    console.log(`falling box: y after 15 steps: engine ${js.body.GetPosition().y.toFixed(5)}, GPU ${gpuOn.body.GetPosition().y.toFixed(5)}, GPU without continuous physics ${gpuOff.body.GetPosition().y.toFixed(3)} m; dispatches per step ${dispatchesOn} / ${dispatchesOff}`);
+    console.log(
+      `falling box: y after 15 steps: engine ${js.body.GetPosition().y.toFixed(5)}, GPU ${gpuOn.body.GetPosition().y.toFixed(5)}, GPU without continuous physics ${gpuOff.body.GetPosition().y.toFixed(3)} m; dispatches per step ${dispatchesOn} / ${dispatchesOff}`,
+    );
     expect(js.body.GetPosition().y).toBeGreaterThan(0);
     expect(gpuOn.body.GetPosition().y).toBeGreaterThan(0);
     expect(Math.abs(gpuOn.body.GetPosition().y - js.body.GetPosition().y)).toBeLessThan(REST_TOLERANCE);
@@ -179,7 +183,13 @@ describeGpu('GPU continuous collision', (ctx) => {
 
   it("gives the engine's b2TimeOfImpact (state, and t within 1e-4) on hand-built sweeps, at a separation within its tolerance of the target", async () => {
     const world = new b2World(new b2Vec2(0, 0));
-    const make = (shape: b2Shape, type: number, c0: [number, number, number], c: [number, number, number], localCenter: [number, number] = [0, 0]): b2Fixture => {
+    const make = (
+      shape: b2Shape,
+      type: number,
+      c0: [number, number, number],
+      c: [number, number, number],
+      localCenter: [number, number] = [0, 0],
+    ): b2Fixture => {
       const def = new b2BodyDef();
       def.type = type;
       const body = world.CreateBody(def);
@@ -192,7 +202,10 @@ describeGpu('GPU continuous collision', (ctx) => {
       s.a = c[2];
       s.alpha0 = 0;
       body.m_xf.q.Set(s.a);
-      body.m_xf.p.Set(s.c.x - (body.m_xf.q.c * localCenter[0] - body.m_xf.q.s * localCenter[1]), s.c.y - (body.m_xf.q.s * localCenter[0] + body.m_xf.q.c * localCenter[1]));
+      body.m_xf.p.Set(
+        s.c.x - (body.m_xf.q.c * localCenter[0] - body.m_xf.q.s * localCenter[1]),
+        s.c.y - (body.m_xf.q.s * localCenter[0] + body.m_xf.q.c * localCenter[1]),
+      );
       return fixture;
     };
     const circle = (r: number) => {
@@ -212,17 +225,37 @@ describeGpu('GPU continuous collision', (ctx) => {
     };
     const cases: { name: string; a: b2Fixture; b: b2Fixture }[] = [
       // A circle crossing an edge: touching part way.
-      { name: 'edge / circle', a: make(edge(5, -5, 5, 5), b2_staticBody, [0, 0, 0], [0, 0, 0]), b: make(circle(0.1), b2_dynamicBody, [2, 0.3, 0], [8, 0.3, 0]) },
+      {
+        name: 'edge / circle',
+        a: make(edge(5, -5, 5, 5), b2_staticBody, [0, 0, 0], [0, 0, 0]),
+        b: make(circle(0.1), b2_dynamicBody, [2, 0.3, 0], [8, 0.3, 0]),
+      },
       // A spinning box through a thin box, off centre (face and vertex axes, the root finder).
-      { name: 'box / spinning box', a: make(box(0.025, 3), b2_staticBody, [10, 0, 0], [10, 0, 0]), b: make(box(0.2, 0.1), b2_dynamicBody, [8.5, 0.5, 0.3], [11.5, 0.2, 2.1], [0.05, -0.02]) },
+      {
+        name: 'box / spinning box',
+        a: make(box(0.025, 3), b2_staticBody, [10, 0, 0], [10, 0, 0]),
+        b: make(box(0.2, 0.1), b2_dynamicBody, [8.5, 0.5, 0.3], [11.5, 0.2, 2.1], [0.05, -0.02]),
+      },
       // Two moving boxes meeting corner first.
-      { name: 'box / box, both moving', a: make(box(0.5, 0.5, 0.4), b2_dynamicBody, [-3, 0, 0], [0.5, 0.2, 0.5]), b: make(box(0.3, 0.6), b2_dynamicBody, [3, 0.4, 1], [-0.5, 0.1, 0.2]) },
+      {
+        name: 'box / box, both moving',
+        a: make(box(0.5, 0.5, 0.4), b2_dynamicBody, [-3, 0, 0], [0.5, 0.2, 0.5]),
+        b: make(box(0.3, 0.6), b2_dynamicBody, [3, 0.4, 1], [-0.5, 0.1, 0.2]),
+      },
       // Passing by: separated at the end.
       { name: 'circle / box, missing', a: make(box(1, 1), b2_staticBody, [0, 0, 0], [0, 0, 0]), b: make(circle(0.25), b2_dynamicBody, [-4, 2, 0], [4, 2, 0]) },
       // Close at the start (touching at t = 0).
-      { name: 'edge / box, touching at the start', a: make(edge(-5, 0, 5, 0), b2_staticBody, [0, 0, 0], [0, 0, 0]), b: make(box(0.5, 0.5), b2_dynamicBody, [0, 0.505, 0], [0, -1, 0]) },
+      {
+        name: 'edge / box, touching at the start',
+        a: make(edge(-5, 0, 5, 0), b2_staticBody, [0, 0, 0], [0, 0, 0]),
+        b: make(box(0.5, 0.5), b2_dynamicBody, [0, 0.505, 0], [0, -1, 0]),
+      },
       // A circle and a polygon across a cell boundary (the sweep of B is moved into A's cell).
-      { name: 'polygon / circle across cells', a: make(box(0.5, 0.5), b2_staticBody, [15.8, 0, 0], [15.8, 0, 0]), b: make(circle(0.2), b2_dynamicBody, [18.5, 0.1, 0], [16.3, 0.1, 0]) },
+      {
+        name: 'polygon / circle across cells',
+        a: make(box(0.5, 0.5), b2_staticBody, [15.8, 0, 0], [15.8, 0, 0]),
+        b: make(circle(0.2), b2_dynamicBody, [18.5, 0.1, 0], [16.3, 0.1, 0]),
+      },
     ];
     const mirror = new GpuWorld(ctx, world);
     mirror.sync();

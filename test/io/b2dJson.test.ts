@@ -28,16 +28,7 @@ import { goldenSceneNames, readGoldenScene, stateDigest } from '../support/scene
 // A comparable picture of a world: every field of every body, fixture (with shape and proxies)
 // and joint, numbers as text so -0 differs from 0, references to other objects by name.
 type Snapshot = string | boolean | null | Snapshot[] | { [key: string]: Snapshot };
-const kSkippedFields = new Set([
-  'm_prev',
-  'm_next',
-  'm_world',
-  'm_userData',
-  'm_edgeA',
-  'm_edgeB',
-  'm_contactList',
-  'm_jointList',
-]);
+const kSkippedFields = new Set(['m_prev', 'm_next', 'm_world', 'm_userData', 'm_edgeA', 'm_edgeB', 'm_contactList', 'm_jointList']);
 
 function snap(value: unknown, refs: Map<object, string>, depth = 0): Snapshot {
   if (typeof value === 'number') return Object.is(value, -0) ? '-0' : String(value);
@@ -165,8 +156,7 @@ function readError(input: unknown): b2dJsonError {
   throw new Error('expected b2dJsonRead to throw');
 }
 
-const kWrittenFlags =
-  b2Body.e_bulletFlag | b2Body.e_autoSleepFlag | b2Body.e_awakeFlag | b2Body.e_activeFlag | b2Body.e_fixedRotationFlag;
+const kWrittenFlags = b2Body.e_bulletFlag | b2Body.e_autoSleepFlag | b2Body.e_awakeFlag | b2Body.e_activeFlag | b2Body.e_fixedRotationFlag;
 
 const circleFixture = { density: 1, circle: { radius: 0.5, center: { x: 0, y: 0 } } };
 
@@ -328,9 +318,7 @@ describe('b2dJson numbers and vectors', () => {
   it('vectors written as the number 0 load as zero vectors', () => {
     const scene = b2dJsonRead({
       gravity: 0,
-      body: [
-        { type: 2, position: 0, linearVelocity: 0, fixture: [{ density: 1, circle: { radius: 0.5, center: 0 } }] },
-      ],
+      body: [{ type: 2, position: 0, linearVelocity: 0, fixture: [{ density: 1, circle: { radius: 0.5, center: 0 } }] }],
     });
     expect([scene.world.m_gravity.x, scene.world.m_gravity.y]).toEqual([0, 0]);
     const body = scene.bodies[0];
@@ -454,9 +442,7 @@ describe('b2dJson defaults and extensions', () => {
         },
         { name: 'crate', type: 2, fixture: [circleFixture] },
       ],
-      joint: [
-        { name: 'hinge', type: 'revolute', bodyA: 0, bodyB: 1, customProperties: [{ name: 'breakable', bool: false }] },
-      ],
+      joint: [{ name: 'hinge', type: 'revolute', bodyA: 0, bodyB: 1, customProperties: [{ name: 'breakable', bool: false }] }],
       image: [{ name: 'sky', body: 1, file: 'sky.png', scale: 2, customProperties: [{ name: 'layer', int: -1 }] }],
     };
     const check = (scene: b2dJsonScene) => {
@@ -517,64 +503,24 @@ describe('b2dJson malformed input', () => {
       body({ polygon: { vertices: { x: [0, 0, 1], y: [0, 0, 1] } } }),
       'body[0].fixture[0].polygon.vertices: rejected by b2PolygonShape.Set: vertices[1] coincides with vertices[0]',
     ],
-    [
-      'an unknown shape type',
-      body({ ellipse: { rx: 1 } }),
-      'body[0].fixture[0]: no shape: expected one of circle, edge, chain, loop, polygon',
-    ],
-    [
-      'two shapes in one fixture',
-      body({ circle: { radius: 1 }, edge: {} }),
-      'body[0].fixture[0]: more than one shape: circle, edge',
-    ],
-    [
-      'a missing box half-width',
-      body({ polygon: { box: { hy: 1 } } }),
-      'body[0].fixture[0].polygon.box.hx: required field is missing',
-    ],
+    ['an unknown shape type', body({ ellipse: { rx: 1 } }), 'body[0].fixture[0]: no shape: expected one of circle, edge, chain, loop, polygon'],
+    ['two shapes in one fixture', body({ circle: { radius: 1 }, edge: {} }), 'body[0].fixture[0]: more than one shape: circle, edge'],
+    ['a missing box half-width', body({ polygon: { box: { hy: 1 } } }), 'body[0].fixture[0].polygon.box.hx: required field is missing'],
     ['a bad body type', { body: [{ type: 3 }] }, 'body[0].type: expected an integer in [0, 2], got number 3'],
-    [
-      'a negative damping',
-      { body: [{ type: 2, linearDamping: -1 }] },
-      'body[0].linearDamping: expected a finite number >= 0',
-    ],
-    [
-      'a flag that is not a boolean',
-      { body: [{ type: 2, bullet: 1 }] },
-      'body[0].bullet: expected true or false, got number 1',
-    ],
+    ['a negative damping', { body: [{ type: 2, linearDamping: -1 }] }, 'body[0].linearDamping: expected a finite number >= 0'],
+    ['a flag that is not a boolean', { body: [{ type: 2, bullet: 1 }] }, 'body[0].bullet: expected true or false, got number 1'],
     [
       'a filter outside uint16',
       body({ circle: { radius: 1 }, 'filter-maskBits': 70000 }),
       'body[0].fixture[0].filter-maskBits: expected an integer in [0, 65535]',
     ],
     ['a vector that is a non-zero number', { gravity: 5 }, 'gravity: expected a vector {x, y} or 0, got number 5'],
-    [
-      'a body index out of range',
-      twoBodies({ type: 'revolute', bodyA: 0, bodyB: 5 }),
-      'joint[0].bodyB: expected an integer in [0, 1], got number 5',
-    ],
+    ['a body index out of range', twoBodies({ type: 'revolute', bodyA: 0, bodyB: 5 }), 'joint[0].bodyB: expected an integer in [0, 1], got number 5'],
     ['a missing body index', twoBodies({ type: 'weld', bodyA: 0 }), 'joint[0].bodyB: required field is missing'],
-    [
-      'a joint on one body',
-      twoBodies({ type: 'rope', bodyA: 1, bodyB: 1, maxLength: 2 }),
-      'joint[0].bodyB: bodyA and bodyB are the same body',
-    ],
-    [
-      'an unknown joint type',
-      twoBodies({ type: 'spring', bodyA: 0, bodyB: 1 }),
-      'joint[0].type: unknown joint type "spring"',
-    ],
-    [
-      'a motor joint',
-      twoBodies({ type: 'motor', bodyA: 0, bodyB: 1 }),
-      'joint[0].type: motor joints are not part of Box2D 2.2.1',
-    ],
-    [
-      'a zero pulley ratio',
-      twoBodies({ type: 'pulley', bodyA: 0, bodyB: 1 }),
-      'joint[0].ratio: must not be 0 (the pulley joint divides by it)',
-    ],
+    ['a joint on one body', twoBodies({ type: 'rope', bodyA: 1, bodyB: 1, maxLength: 2 }), 'joint[0].bodyB: bodyA and bodyB are the same body'],
+    ['an unknown joint type', twoBodies({ type: 'spring', bodyA: 0, bodyB: 1 }), 'joint[0].type: unknown joint type "spring"'],
+    ['a motor joint', twoBodies({ type: 'motor', bodyA: 0, bodyB: 1 }), 'joint[0].type: motor joints are not part of Box2D 2.2.1'],
+    ['a zero pulley ratio', twoBodies({ type: 'pulley', bodyA: 0, bodyB: 1 }), 'joint[0].ratio: must not be 0 (the pulley joint divides by it)'],
     [
       'a gear before any joint',
       twoBodies({ type: 'gear', bodyA: 0, bodyB: 1, joint1: 0, joint2: 0 }),
@@ -590,11 +536,7 @@ describe('b2dJson malformed input', () => {
       { customProperties: [{ name: 'x', int: 1, bool: true }] },
       'customProperties[0]: expected exactly one value (int, float, string, vec2, bool, color), found int, bool',
     ],
-    [
-      'an image on a missing body',
-      { image: [{ body: 2 }] },
-      'image[0].body: expected an integer in [-1, -1], got number 2',
-    ],
+    ['an image on a missing body', { image: [{ body: 2 }] }, 'image[0].body: expected an integer in [-1, -1], got number 2'],
   ];
   for (const [what, input, message] of cases) {
     it(`${what} is reported with its path and rule`, () => {

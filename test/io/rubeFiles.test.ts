@@ -19,7 +19,12 @@ function carWithMotorJoint(): b2dJsonObject {
     gravity: { x: 0, y: -10 },
     body: [
       { type: 0, position: 0, fixture: [{ friction: 0.8, edge: { vertex1: { x: -20, y: 0 }, vertex2: { x: 20, y: 0 } } }] },
-      { type: 2, awake: true, position: { x: 0, y: 1.5 }, fixture: [{ density: 1, polygon: { vertices: { x: [-1, 1, 1, -1], y: [-0.25, -0.25, 0.25, 0.25] } } }] },
+      {
+        type: 2,
+        awake: true,
+        position: { x: 0, y: 1.5 },
+        fixture: [{ density: 1, polygon: { vertices: { x: [-1, 1, 1, -1], y: [-0.25, -0.25, 0.25, 0.25] } } }],
+      },
       { type: 2, awake: true, position: { x: -0.8, y: 0.6 }, fixture: [circle] },
       { type: 2, awake: true, position: { x: 0.8, y: 0.6 }, fixture: [circle] },
     ],
@@ -51,11 +56,7 @@ describe('b2dJsonRead with skipUnknown', () => {
     expect(scene.bodies).toHaveLength(4);
     expect(scene.bodies[3].GetFixtureList()!.GetNext()).toBeNull();
     // The gear after the skipped joint couples the file's joint[0] and joint[2].
-    expect(scene.joints.map((j) => j.GetType())).toEqual([
-      b2JointType.e_revoluteJoint,
-      b2JointType.e_revoluteJoint,
-      b2JointType.e_gearJoint,
-    ]);
+    expect(scene.joints.map((j) => j.GetType())).toEqual([b2JointType.e_revoluteJoint, b2JointType.e_revoluteJoint, b2JointType.e_gearJoint]);
     const gear = scene.joints[2] as b2GearJoint;
     expect([gear.m_joint1, gear.m_joint2]).toEqual([scene.joints[0], scene.joints[1]]);
     expect(scene.world.GetJointCount()).toBe(3);
@@ -121,7 +122,12 @@ describe('R.U.B.E. files as found in the wild', () => {
     allowSleep: true,
     body: [
       // Zero vectors as 0 and as {x: 0, y: 0} in one file.
-      { type: 0, position: 0, linearVelocity: { x: 0, y: 0 }, fixture: [{ friction: 0.6, polygon: { vertices: { x: [-10, 10, 10, -10], y: [-1, -1, 0, 0] } } }] },
+      {
+        type: 0,
+        position: 0,
+        linearVelocity: { x: 0, y: 0 },
+        fixture: [{ friction: 0.6, polygon: { vertices: { x: [-10, 10, 10, -10], y: [-1, -1, 0, 0] } } }],
+      },
       // No awake: b2dJson's default is asleep, so it hangs in the air until something wakes it.
       { type: 2, position: { x: 0, y: 5 }, fixture: [circle] },
       // Awake, with mass data that overrides its fixtures'.

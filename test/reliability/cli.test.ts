@@ -90,7 +90,11 @@ describe('webphysics command line, in-process', () => {
     ],
     [
       'a joint breaking a rule',
-      () => scene('rope.json', { body: [{}, { type: 2, fixture: [{ density: 1, circle: { radius: 1 } }] }], joint: [{ type: 'rope', bodyA: 0, bodyB: 1, maxLength: -1 }] }),
+      () =>
+        scene('rope.json', {
+          body: [{}, { type: 2, fixture: [{ density: 1, circle: { radius: 1 } }] }],
+          joint: [{ type: 'rope', bodyA: 0, bodyB: 1, maxLength: -1 }],
+        }),
       /rope\.json: joint\[0\]\.maxLength: expected a finite number >= 0, got -1/,
     ],
   ];

@@ -246,8 +246,6 @@ describe('the solver-state extension', () => {
     const doc = b2dJsonWrite(world, { solverState: true }) as Record<string, any>;
     const contacts = doc[b2dJson_stateKey].contacts;
     contacts.push({ ...contacts[0], fixtureA: [1, 0, 0], fixtureB: [2, 0, 0] });
-    expect(() => b2dJsonRead(doc)).toThrow(
-      'webphysicsState.contacts[1]: joins a fixture that has no broad-phase proxies (its body is inactive)',
-    );
+    expect(() => b2dJsonRead(doc)).toThrow('webphysicsState.contacts[1]: joins a fixture that has no broad-phase proxies (its body is inactive)');
   });
 });

@@ -47,7 +47,18 @@ type ShapeSpec =
   | { kind: 'chain'; n: number; loop: boolean };
 
 type Command =
-  | { op: 'createBody'; type: b2BodyType; x: number; y: number; angle: number; shape: ShapeSpec; density: number; bullet: boolean; active: boolean; awake: boolean }
+  | {
+      op: 'createBody';
+      type: b2BodyType;
+      x: number;
+      y: number;
+      angle: number;
+      shape: ShapeSpec;
+      density: number;
+      bullet: boolean;
+      active: boolean;
+      awake: boolean;
+    }
   | { op: 'destroyBody'; i: number }
   | { op: 'createFixture'; i: number; shape: ShapeSpec; density: number; sensor: boolean }
   | { op: 'destroyFixture'; i: number; k: number }
@@ -80,9 +91,26 @@ const shapeSpec: fc.Arbitrary<ShapeSpec> = fc.oneof(
 );
 
 const command: fc.Arbitrary<Command> = fc.oneof(
-  { weight: 5, arbitrary: fc.record({ op: fc.constant('createBody' as const), type: bodyType, x: coord, y: coord, angle, shape: shapeSpec, density: fc.constantFrom(0, 0.5, 1, 3), bullet: fc.boolean(), active: fc.boolean(), awake: fc.boolean() }) },
+  {
+    weight: 5,
+    arbitrary: fc.record({
+      op: fc.constant('createBody' as const),
+      type: bodyType,
+      x: coord,
+      y: coord,
+      angle,
+      shape: shapeSpec,
+      density: fc.constantFrom(0, 0.5, 1, 3),
+      bullet: fc.boolean(),
+      active: fc.boolean(),
+      awake: fc.boolean(),
+    }),
+  },
   { weight: 2, arbitrary: fc.record({ op: fc.constant('destroyBody' as const), i: index }) },
-  { weight: 2, arbitrary: fc.record({ op: fc.constant('createFixture' as const), i: index, shape: shapeSpec, density: fc.constantFrom(0, 1, 2), sensor: fc.boolean() }) },
+  {
+    weight: 2,
+    arbitrary: fc.record({ op: fc.constant('createFixture' as const), i: index, shape: shapeSpec, density: fc.constantFrom(0, 1, 2), sensor: fc.boolean() }),
+  },
   { weight: 1, arbitrary: fc.record({ op: fc.constant('destroyFixture' as const), i: index, k: index }) },
   { weight: 3, arbitrary: fc.record({ op: fc.constant('createJoint' as const), kind: fc.nat({ max: 10 }), i: index, j: index, collide: fc.boolean() }) },
   { weight: 1, arbitrary: fc.record({ op: fc.constant('destroyJoint' as const), i: index }) },
@@ -92,7 +120,17 @@ const command: fc.Arbitrary<Command> = fc.oneof(
   { weight: 1, arbitrary: fc.record({ op: fc.constant('setAwake' as const), i: index, flag: fc.boolean() }) },
   { weight: 2, arbitrary: fc.record({ op: fc.constant('impulse' as const), i: index, x: coord, y: coord, w: coord }) },
   { weight: 1, arbitrary: fc.record({ op: fc.constant('velocity' as const), i: index, x: coord, y: coord, w: coord, bullet: fc.boolean() }) },
-  { weight: 1, arbitrary: fc.record({ op: fc.constant('filter' as const), i: index, k: index, group: fc.integer({ min: -2, max: 2 }), mask: fc.constantFrom(0xffff, 0x0001, 0x0002, 0), sensor: fc.boolean() }) },
+  {
+    weight: 1,
+    arbitrary: fc.record({
+      op: fc.constant('filter' as const),
+      i: index,
+      k: index,
+      group: fc.integer({ min: -2, max: 2 }),
+      mask: fc.constantFrom(0xffff, 0x0001, 0x0002, 0),
+      sensor: fc.boolean(),
+    }),
+  },
   { weight: 5, arbitrary: fc.record({ op: fc.constant('step' as const), n: fc.integer({ min: 1, max: 8 }), dt: fc.constantFrom(1 / 60, 1 / 30, 1 / 120, 0) }) },
   { weight: 1, arbitrary: fc.record({ op: fc.constant('query' as const), x: coord, y: coord, w: size, h: size }) },
   { weight: 1, arbitrary: fc.record({ op: fc.constant('rayCast' as const), x1: coord, y1: coord, x2: coord, y2: coord }) },
@@ -208,9 +246,7 @@ function jointDef(world: b2World, kind: number, a: b2Body, b: b2Body, collide: b
     }
     default: {
       // A gear over two revolute or prismatic joints, when the world has them.
-      const candidates = jointsOf(world).filter(
-        (j) => j.m_type === b2JointType.e_revoluteJoint || j.m_type === b2JointType.e_prismaticJoint,
-      );
+      const candidates = jointsOf(world).filter((j) => j.m_type === b2JointType.e_revoluteJoint || j.m_type === b2JointType.e_prismaticJoint);
       if (candidates.length < 2) return null;
       const d = new b2GearJointDef();
       d.joint1 = candidates[0];
@@ -522,19 +558,30 @@ const regressions: { name: string; commands: Command[] }[] = [
     // clears every entry, as Box2D 2.3 does.
     name: 'a proxy buffered twice, then destroyed',
     commands: [
-      {"op": "createBody", "type": 0, "x": 0, "y": 0, "angle": 0, "shape": {"kind": "chain", "n": 2, "loop": false}, "density": 0, "bullet": false, "active": false, "awake": false},
-      {"op": "setActive", "i": 0, "flag": true},
-      {"op": "createBody", "type": 0, "x": 0, "y": 0, "angle": 0, "shape": {"kind": "polygon", "n": 3, "r": 0.05}, "density": 0, "bullet": false, "active": false, "awake": false},
-      {"op": "setType", "i": 151, "type": 2},
-      {"op": "destroyBody", "i": 544},
-      {"op": "createBody", "type": 0, "x": 0, "y": 0, "angle": 0, "shape": {"kind": "edge", "dx": 0.1, "dy": 0}, "density": 0, "bullet": false, "active": false, "awake": false},
-      {"op": "createBody", "type": 0, "x": 0, "y": 0, "angle": 0, "shape": {"kind": "chain", "n": 2, "loop": true}, "density": 0, "bullet": false, "active": true, "awake": false},
-      {"op": "destroyBody", "i": 0},
-      {"op": "createBody", "type": 0, "x": 0, "y": 0, "angle": 0, "shape": {"kind": "box", "hx": 0.05, "hy": 0.05, "angle": 0}, "density": 0, "bullet": false, "active": true, "awake": false},
-      {"op": "createBody", "type": 0, "x": 0, "y": 0, "angle": 0, "shape": {"kind": "edge", "dx": 0.1, "dy": 0}, "density": 0, "bullet": false, "active": false, "awake": false},
-      {"op": "setType", "i": 26, "type": 2},
-      {"op": "step", "n": 1, "dt": 0.016666666666666666},
-      {"op": "bad", "which": 0, "i": 0},
+      { op: 'createBody', type: 0, x: 0, y: 0, angle: 0, shape: { kind: 'chain', n: 2, loop: false }, density: 0, bullet: false, active: false, awake: false },
+      { op: 'setActive', i: 0, flag: true },
+      { op: 'createBody', type: 0, x: 0, y: 0, angle: 0, shape: { kind: 'polygon', n: 3, r: 0.05 }, density: 0, bullet: false, active: false, awake: false },
+      { op: 'setType', i: 151, type: 2 },
+      { op: 'destroyBody', i: 544 },
+      { op: 'createBody', type: 0, x: 0, y: 0, angle: 0, shape: { kind: 'edge', dx: 0.1, dy: 0 }, density: 0, bullet: false, active: false, awake: false },
+      { op: 'createBody', type: 0, x: 0, y: 0, angle: 0, shape: { kind: 'chain', n: 2, loop: true }, density: 0, bullet: false, active: true, awake: false },
+      { op: 'destroyBody', i: 0 },
+      {
+        op: 'createBody',
+        type: 0,
+        x: 0,
+        y: 0,
+        angle: 0,
+        shape: { kind: 'box', hx: 0.05, hy: 0.05, angle: 0 },
+        density: 0,
+        bullet: false,
+        active: true,
+        awake: false,
+      },
+      { op: 'createBody', type: 0, x: 0, y: 0, angle: 0, shape: { kind: 'edge', dx: 0.1, dy: 0 }, density: 0, bullet: false, active: false, awake: false },
+      { op: 'setType', i: 26, type: 2 },
+      { op: 'step', n: 1, dt: 0.016666666666666666 },
+      { op: 'bad', which: 0, i: 0 },
     ] as Command[],
   },
   {
@@ -565,8 +612,30 @@ const regressions: { name: string; commands: Command[] }[] = [
     // Destroying a body that a gear joint's coupled joints hang from: the gear goes with it.
     name: 'gear joint over joints of a destroyed body',
     commands: [
-      { op: 'createBody', type: b2BodyType.b2_dynamicBody, x: 0, y: 0, angle: 0, shape: { kind: 'circle', r: 0.5 }, density: 1, bullet: false, active: true, awake: true },
-      { op: 'createBody', type: b2BodyType.b2_dynamicBody, x: 2, y: 0, angle: 0, shape: { kind: 'box', hx: 0.5, hy: 0.5, angle: 0 }, density: 1, bullet: false, active: true, awake: true },
+      {
+        op: 'createBody',
+        type: b2BodyType.b2_dynamicBody,
+        x: 0,
+        y: 0,
+        angle: 0,
+        shape: { kind: 'circle', r: 0.5 },
+        density: 1,
+        bullet: false,
+        active: true,
+        awake: true,
+      },
+      {
+        op: 'createBody',
+        type: b2BodyType.b2_dynamicBody,
+        x: 2,
+        y: 0,
+        angle: 0,
+        shape: { kind: 'box', hx: 0.5, hy: 0.5, angle: 0 },
+        density: 1,
+        bullet: false,
+        active: true,
+        awake: true,
+      },
       { op: 'createJoint', kind: 0, i: 0, j: 1, collide: false },
       { op: 'createJoint', kind: 1, i: 1, j: 2, collide: false },
       { op: 'createJoint', kind: 10, i: 0, j: 0, collide: false },
@@ -579,7 +648,18 @@ const regressions: { name: string; commands: Command[] }[] = [
     // Deactivating a body mid-contact, then changing its type and reactivating it.
     name: 'inactive body with contacts, retyped and reactivated',
     commands: [
-      { op: 'createBody', type: b2BodyType.b2_dynamicBody, x: 0, y: -4.5, angle: 0, shape: { kind: 'box', hx: 0.5, hy: 0.5, angle: 0 }, density: 1, bullet: false, active: true, awake: true },
+      {
+        op: 'createBody',
+        type: b2BodyType.b2_dynamicBody,
+        x: 0,
+        y: -4.5,
+        angle: 0,
+        shape: { kind: 'box', hx: 0.5, hy: 0.5, angle: 0 },
+        density: 1,
+        bullet: false,
+        active: true,
+        awake: true,
+      },
       { op: 'step', n: 8, dt: 1 / 60 },
       { op: 'setActive', i: 1, flag: false },
       { op: 'setType', i: 1, type: b2BodyType.b2_kinematicBody },

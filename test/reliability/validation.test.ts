@@ -202,8 +202,20 @@ describe('b2PolygonShape.Set and SetAsBox reject bad vertex lists, leaving the p
     ['a non-integer count', square, 3.5, 'count', /got 3.5/],
     ['a non-finite vertex', [v(0, 0), v(NaN, 0), v(1, 1)], undefined, 'vertices[1]', /must be a vector of finite numbers, got \(NaN, 0\)/],
     ['an infinite vertex', [v(0, 0), v(1, 0), v(1, Infinity)], undefined, 'vertices[2]', /finite numbers, got \(1, Infinity\)/],
-    ['a zero-length edge', [v(0, 0), v(0, 0), v(1, 0), v(1, 1)], undefined, 'vertices[1]', /^coincides with vertices\[0\] \(polygon edges must be longer than b2_epsilon\)$/],
-    ['clockwise vertices', [v(0, 0), v(0, 1), v(1, 1), v(1, 0)], undefined, 'vertices', /^are clockwise \(signed area -1; vertices must be counter-clockwise and convex\)$/],
+    [
+      'a zero-length edge',
+      [v(0, 0), v(0, 0), v(1, 0), v(1, 1)],
+      undefined,
+      'vertices[1]',
+      /^coincides with vertices\[0\] \(polygon edges must be longer than b2_epsilon\)$/,
+    ],
+    [
+      'clockwise vertices',
+      [v(0, 0), v(0, 1), v(1, 1), v(1, 0)],
+      undefined,
+      'vertices',
+      /^are clockwise \(signed area -1; vertices must be counter-clockwise and convex\)$/,
+    ],
     ['collinear vertices (zero area)', [v(0, 0), v(1, 0), v(2, 0)], undefined, 'vertices', /^enclose an area of 0, which must exceed b2_epsilon$/],
     ['an area below b2_epsilon', [v(0, 0), v(1e-4, 0), v(1e-4, 1e-4)], undefined, 'vertices', /which must exceed b2_epsilon/],
     [
@@ -259,20 +271,44 @@ describe('b2PolygonShape.Set and SetAsBox reject bad vertex lists, leaving the p
 describe('b2EdgeShape and b2ChainShape reject degenerate vertices', () => {
   it('rejects a zero-length edge and a non-finite end point', () => {
     const e = new b2EdgeShape().Set(v(0, 0), v(1, 0));
-    expectArgumentError(caught(() => e.Set(v(1, 1), v(1, 1))), {
-      method: 'b2EdgeShape.Set',
-      argument: 'v2',
-      rule: /^coincides with v1 \(an edge must be longer than b2_epsilon\)$/,
-    });
-    expectArgumentError(caught(() => e.Set(v(0, NaN), v(1, 1))), { method: 'b2EdgeShape.Set', argument: 'v1', rule: /finite/ });
+    expectArgumentError(
+      caught(() => e.Set(v(1, 1), v(1, 1))),
+      {
+        method: 'b2EdgeShape.Set',
+        argument: 'v2',
+        rule: /^coincides with v1 \(an edge must be longer than b2_epsilon\)$/,
+      },
+    );
+    expectArgumentError(
+      caught(() => e.Set(v(0, NaN), v(1, 1))),
+      { method: 'b2EdgeShape.Set', argument: 'v1', rule: /finite/ },
+    );
     expect([e.m_vertex1.x, e.m_vertex1.y, e.m_vertex2.x, e.m_vertex2.y]).toEqual([0, 0, 1, 0]);
   });
 
   const chainCases: [string, (c: b2ChainShape) => unknown, string, string, RegExp][] = [
-    ['a chain of one vertex', (c) => c.CreateChain([v(0, 0)]), 'b2ChainShape.CreateChain', 'count', /^must be an integer >= 2 \(a chain needs at least 2 vertices\), got 1$/],
+    [
+      'a chain of one vertex',
+      (c) => c.CreateChain([v(0, 0)]),
+      'b2ChainShape.CreateChain',
+      'count',
+      /^must be an integer >= 2 \(a chain needs at least 2 vertices\), got 1$/,
+    ],
     ['a loop of two vertices', (c) => c.CreateLoop([v(0, 0), v(1, 0)]), 'b2ChainShape.CreateLoop', 'count', /a loop needs at least 3 vertices\), got 2/],
-    ['a repeated consecutive vertex', (c) => c.CreateChain([v(0, 0), v(1, 0), v(1, 0), v(2, 0)]), 'b2ChainShape.CreateChain', 'vertices[2]', /^repeats vertices\[1\] \(consecutive chain vertices must be more than b2_epsilon apart\)$/],
-    ['a loop whose last vertex is its first', (c) => c.CreateLoop([v(0, 0), v(1, 0), v(1, 1), v(0, 0)]), 'b2ChainShape.CreateLoop', 'vertices[0]', /^closes the loop onto vertices\[3\]/],
+    [
+      'a repeated consecutive vertex',
+      (c) => c.CreateChain([v(0, 0), v(1, 0), v(1, 0), v(2, 0)]),
+      'b2ChainShape.CreateChain',
+      'vertices[2]',
+      /^repeats vertices\[1\] \(consecutive chain vertices must be more than b2_epsilon apart\)$/,
+    ],
+    [
+      'a loop whose last vertex is its first',
+      (c) => c.CreateLoop([v(0, 0), v(1, 0), v(1, 1), v(0, 0)]),
+      'b2ChainShape.CreateLoop',
+      'vertices[0]',
+      /^closes the loop onto vertices\[3\]/,
+    ],
     ['a non-finite vertex', (c) => c.CreateChain([v(0, 0), v(Infinity, 0)]), 'b2ChainShape.CreateChain', 'vertices[1]', /finite/],
     ['a count beyond the array', (c) => c.CreateChain([v(0, 0), v(1, 0)], 3), 'b2ChainShape.CreateChain', 'count', /^is 3 but vertices has only 2 entries$/],
     ['a non-finite prev vertex', (c) => c.SetPrevVertex(v(NaN, NaN)), 'b2ChainShape.SetPrevVertex', 'prevVertex', /finite/],
@@ -281,7 +317,10 @@ describe('b2EdgeShape and b2ChainShape reject degenerate vertices', () => {
   for (const [what, act, method, argument, rule] of chainCases) {
     it(`rejects ${what}`, () => {
       const c = new b2ChainShape();
-      expectArgumentError(caught(() => act(c)), { method, argument, rule });
+      expectArgumentError(
+        caught(() => act(c)),
+        { method, argument, rule },
+      );
       expect(c.m_count).toBe(0);
       expect(c.m_vertices).toEqual([]);
     });
@@ -290,11 +329,14 @@ describe('b2EdgeShape and b2ChainShape reject degenerate vertices', () => {
   it('rejects creating a chain twice', () => {
     const c = new b2ChainShape();
     c.CreateChain([v(0, 0), v(1, 0)]);
-    expectArgumentError(caught(() => c.CreateLoop([v(0, 0), v(1, 0), v(1, 1)])), {
-      method: 'b2ChainShape.CreateLoop',
-      argument: 'this chain',
-      rule: /^already has vertices/,
-    });
+    expectArgumentError(
+      caught(() => c.CreateLoop([v(0, 0), v(1, 0), v(1, 1)])),
+      {
+        method: 'b2ChainShape.CreateLoop',
+        argument: 'this chain',
+        rule: /^already has vertices/,
+      },
+    );
     expect(c.m_count).toBe(2);
   });
 });
@@ -450,7 +492,12 @@ describe('b2Body.CreateFixture checks the shape it clones and the def', () => {
 
 describe('b2World.CreateBody checks the body def', () => {
   const cases: [string, (d: b2BodyDef) => void, string, RegExp][] = [
-    ['a type out of range', (d) => (d.type = 3 as b2BodyType), 'def.type', /^must be b2_staticBody \(0\), b2_kinematicBody \(1\) or b2_dynamicBody \(2\), got 3$/],
+    [
+      'a type out of range',
+      (d) => (d.type = 3 as b2BodyType),
+      'def.type',
+      /^must be b2_staticBody \(0\), b2_kinematicBody \(1\) or b2_dynamicBody \(2\), got 3$/,
+    ],
     ['a fractional type', (d) => (d.type = 1.5 as b2BodyType), 'def.type', /got 1.5$/],
     ['a NaN position', (d) => d.position.Set(NaN, 0), 'def.position', /^must be a vector of finite numbers, got \(NaN, 0\)$/],
     ['an infinite angle', (d) => (d.angle = Infinity), 'def.angle', /^must be a finite number, got Infinity$/],
@@ -573,7 +620,13 @@ describe('b2World rejects bad step arguments, gravity, queries and ray casts', (
     ['fractional velocity iterations', (w) => w.Step(h, 7.5, 3), 'b2World.Step', 'velocityIterations', /got 7.5$/],
     ['NaN position iterations', (w) => w.Step(h, 8, NaN), 'b2World.Step', 'positionIterations', /got NaN$/],
     ['a NaN gravity', (w) => w.SetGravity(v(0, NaN)), 'b2World.SetGravity', 'gravity', /\(0, NaN\)/],
-    ['a query without a callback', (w) => w.QueryAABB(null as unknown as b2QueryCallback, new b2AABB()), 'b2World.QueryAABB', 'callback', /ReportFixture method, got null/],
+    [
+      'a query without a callback',
+      (w) => w.QueryAABB(null as unknown as b2QueryCallback, new b2AABB()),
+      'b2World.QueryAABB',
+      'callback',
+      /ReportFixture method, got null/,
+    ],
     [
       'a query box with NaN',
       (w) => {
@@ -586,8 +639,20 @@ describe('b2World rejects bad step arguments, gravity, queries and ray casts', (
       /NaN/,
     ],
     ['a ray from a NaN point', (w) => w.RayCast({ ReportFixture: () => 1 }, v(NaN, 0), v(1, 1)), 'b2World.RayCast', 'point1', /NaN/],
-    ['a ray of zero length', (w) => w.RayCast({ ReportFixture: () => 1 }, v(1, 1), v(1, 1)), 'b2World.RayCast', 'point2', /^must differ from point1 \(\|point2 - point1\|\^2 must be > 0\)$/],
-    ['a ray whose length squared underflows', (w) => w.RayCast({ ReportFixture: () => 1 }, v(0, 0), v(0, -5e-324)), 'b2World.RayCast', 'point2', /^must differ from point1/],
+    [
+      'a ray of zero length',
+      (w) => w.RayCast({ ReportFixture: () => 1 }, v(1, 1), v(1, 1)),
+      'b2World.RayCast',
+      'point2',
+      /^must differ from point1 \(\|point2 - point1\|\^2 must be > 0\)$/,
+    ],
+    [
+      'a ray whose length squared underflows',
+      (w) => w.RayCast({ ReportFixture: () => 1 }, v(0, 0), v(0, -5e-324)),
+      'b2World.RayCast',
+      'point2',
+      /^must differ from point1/,
+    ],
     ['a ray without a callback', (w) => w.RayCast({} as b2RayCastCallback, v(0, 0), v(1, 1)), 'b2World.RayCast', 'callback', /an object$/],
   ];
   for (const [what, act, method, argument, rule] of cases) {
@@ -691,13 +756,19 @@ describe('b2World.CreateJoint checks the joint def', () => {
       'def.bodyB',
       /^has been destroyed$/,
     ],
-    ['an unknown joint type', () => {
-      const d = new b2JointDef();
-      return d;
-    }, (d, s) => {
-      d.bodyA = s.ground;
-      d.bodyB = s.box;
-    }, 'def.type', /^must be a joint type \(use a b2XxxJointDef\), got e_unknownJoint$/],
+    [
+      'an unknown joint type',
+      () => {
+        const d = new b2JointDef();
+        return d;
+      },
+      (d, s) => {
+        d.bodyA = s.ground;
+        d.bodyB = s.box;
+      },
+      'def.type',
+      /^must be a joint type \(use a b2XxxJointDef\), got e_unknownJoint$/,
+    ],
     ['a revolute NaN lower limit', revolute, (d) => (d.lowerAngle = NaN), 'def.lowerAngle', /NaN/],
     ['a revolute NaN reference angle', revolute, (d) => (d.referenceAngle = NaN), 'def.referenceAngle', /NaN/],
     ['a revolute negative motor torque', revolute, (d) => (d.maxMotorTorque = -5), 'def.maxMotorTorque', />= 0, got -5/],
@@ -717,9 +788,21 @@ describe('b2World.CreateJoint checks the joint def', () => {
     ['a mouse joint with zero frequency', mouse, (d) => (d.frequencyHz = 0), 'def.frequencyHz', /> 0, got 0/],
     ['a mouse joint with a NaN target', mouse, (d) => d.target.Set(NaN, 0), 'def.target', /NaN/],
     ['a mouse joint with negative damping', mouse, (d) => (d.dampingRatio = -0.5), 'def.dampingRatio', /-0.5/],
-    ['a mouse joint on a static body', mouse, (d, s) => ((d.bodyA = s.ball), (d.bodyB = s.ground)), 'def.bodyB', /^must be a dynamic body \(the mouse joint drags body B by its mass\)$/],
+    [
+      'a mouse joint on a static body',
+      mouse,
+      (d, s) => ((d.bodyA = s.ball), (d.bodyB = s.ground)),
+      'def.bodyB',
+      /^must be a dynamic body \(the mouse joint drags body B by its mass\)$/,
+    ],
     ['a gear without joint1', gear, (d) => (d.joint1 = null), 'def.joint1', /^must be a b2Joint, got null$/],
-    ['a gear coupling a distance joint', gear, (d, s) => (d.joint2 = s.distance), 'def.joint2', /^must be a revolute or prismatic joint, got a e_distanceJoint$/],
+    [
+      'a gear coupling a distance joint',
+      gear,
+      (d, s) => (d.joint2 = s.distance),
+      'def.joint2',
+      /^must be a revolute or prismatic joint, got a e_distanceJoint$/,
+    ],
     ['a gear coupling a joint with itself', gear, (d) => (d.joint2 = d.joint1), 'def.joint2', /^is def.joint1/],
     [
       'a gear coupling a destroyed joint',
@@ -840,7 +923,7 @@ describe('destroyed bodies, fixtures and joints are rejected', () => {
     expect(checkWorldInvariants(s.world)).toEqual([]);
   });
 
-  it('DestroyBody of a body whose joint a gear on other bodies couples throws; the gear\'s own body takes it along', () => {
+  it("DestroyBody of a body whose joint a gear on other bodies couples throws; the gear's own body takes it along", () => {
     const s = makeScene();
     // The gear couples revolute (ground - b1) and another revolute (ground - b9): destroying the ground would leave it.
     expectRejected(s.world, () => s.world.DestroyBody(s.ground), {
@@ -947,11 +1030,14 @@ describe('calls the lock forbids throw with one wording', () => {
   const calls: [string, (s: Scene) => unknown][] = [
     ['b2World.CreateBody', (s) => s.world.CreateBody(new b2BodyDef())],
     ['b2World.DestroyBody', (s) => s.world.DestroyBody(s.ball)],
-    ['b2World.CreateJoint', (s) => {
-      const d = new b2WeldJointDef();
-      d.Initialize(s.box, s.ball, v(1, 1));
-      return s.world.CreateJoint(d);
-    }],
+    [
+      'b2World.CreateJoint',
+      (s) => {
+        const d = new b2WeldJointDef();
+        d.Initialize(s.box, s.ball, v(1, 1));
+        return s.world.CreateJoint(d);
+      },
+    ],
     ['b2World.DestroyJoint', (s) => s.world.DestroyJoint(s.weld)],
     ['b2World.Step', (s) => s.world.Step(h, 8, 3)],
     ['b2Body.CreateFixture', (s) => s.box.CreateFixture(box(0.1, 0.1), 1)],
@@ -1006,7 +1092,12 @@ describe('b2dJsonRead reports the new rules with JSON paths', () => {
       'body[0].fixture[0].polygon.vertices',
       'rejected by b2PolygonShape.Set: vertices are clockwise (signed area -1; vertices must be counter-clockwise and convex)',
     ],
-    ['a zero-length edge', body({ edge: { vertex1: { x: 1, y: 1 }, vertex2: { x: 1, y: 1 } } }), 'body[0].fixture[0].edge.vertex2', 'coincides with vertex1 (an edge must be longer than b2_epsilon)'],
+    [
+      'a zero-length edge',
+      body({ edge: { vertex1: { x: 1, y: 1 }, vertex2: { x: 1, y: 1 } } }),
+      'body[0].fixture[0].edge.vertex2',
+      'coincides with vertex1 (an edge must be longer than b2_epsilon)',
+    ],
     [
       'a two-vertex polygon of zero length',
       body({ polygon: { vertices: { x: [1, 1], y: [2, 2] } } }),
@@ -1019,11 +1110,31 @@ describe('b2dJsonRead reports the new rules with JSON paths', () => {
       'body[0].fixture[0].chain.vertices',
       'rejected by b2ChainShape.CreateChain: vertices[2] repeats vertices[1] (consecutive chain vertices must be more than b2_epsilon apart)',
     ],
-    ['a zero prismatic axis', twoBodies({ type: 'prismatic', bodyA: 0, bodyB: 1, localAxisA: 0 }), 'joint[0].localAxisA', 'expected a non-zero axis, got (0, 0)'],
-    ['a rope of negative maxLength', twoBodies({ type: 'rope', bodyA: 0, bodyB: 1, maxLength: -1 }), 'joint[0].maxLength', 'expected a finite number >= 0, got -1'],
-    ['a mouse joint without frequency', twoBodies({ type: 'mouse', bodyA: 0, bodyB: 1 }), 'joint[0].frequency', 'expected a finite number > 0, got 0 (the field is missing and defaults to it)'],
+    [
+      'a zero prismatic axis',
+      twoBodies({ type: 'prismatic', bodyA: 0, bodyB: 1, localAxisA: 0 }),
+      'joint[0].localAxisA',
+      'expected a non-zero axis, got (0, 0)',
+    ],
+    [
+      'a rope of negative maxLength',
+      twoBodies({ type: 'rope', bodyA: 0, bodyB: 1, maxLength: -1 }),
+      'joint[0].maxLength',
+      'expected a finite number >= 0, got -1',
+    ],
+    [
+      'a mouse joint without frequency',
+      twoBodies({ type: 'mouse', bodyA: 0, bodyB: 1 }),
+      'joint[0].frequency',
+      'expected a finite number > 0, got 0 (the field is missing and defaults to it)',
+    ],
     ['a negative distance length', twoBodies({ type: 'distance', bodyA: 0, bodyB: 1, length: -2 }), 'joint[0].length', 'expected a finite number >= 0, got -2'],
-    ['a negative motor torque', twoBodies({ type: 'wheel', bodyA: 0, bodyB: 1, localAxisA: { x: 0, y: 1 }, maxMotorTorque: -1 }), 'joint[0].maxMotorTorque', 'expected a finite number >= 0, got -1'],
+    [
+      'a negative motor torque',
+      twoBodies({ type: 'wheel', bodyA: 0, bodyB: 1, localAxisA: { x: 0, y: 1 }, maxMotorTorque: -1 }),
+      'joint[0].maxMotorTorque',
+      'expected a finite number >= 0, got -1',
+    ],
   ];
   for (const [what, doc, path, rule] of cases) {
     it(`rejects ${what}`, () => {

@@ -44,9 +44,10 @@ export function packPackage(): PackedPackage {
   execFileSync(process.execPath, [path.join(repoRoot, 'scripts/build.mjs'), dist], { cwd: repoRoot });
   execFileSync(process.execPath, [path.join(repoRoot, 'scripts/build-types.mjs'), dist], { cwd: repoRoot });
   // --ignore-scripts: prepack would build again, from a folder that has no sources.
-  const [packed] = JSON.parse(
-    execFileSync('npm', ['pack', '--json', '--ignore-scripts', '--pack-destination', dir], { cwd: stage, encoding: 'utf8' }),
-  ) as { filename: string; files: { path: string }[] }[];
+  const [packed] = JSON.parse(execFileSync('npm', ['pack', '--json', '--ignore-scripts', '--pack-destination', dir], { cwd: stage, encoding: 'utf8' })) as {
+    filename: string;
+    files: { path: string }[];
+  }[];
   return {
     tarball: path.join(dir, packed.filename),
     files: packed.files.map((f) => f.path),

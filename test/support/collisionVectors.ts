@@ -37,13 +37,7 @@ export interface PolygonJson {
 }
 
 /** A bare shape encoding, or one wrapped by its kind as the distance and TOI cases write it. */
-export type ShapeJson =
-  | CircleJson
-  | EdgeJson
-  | PolygonJson
-  | { circle: CircleJson }
-  | { edge: EdgeJson }
-  | { polygon: PolygonJson };
+export type ShapeJson = CircleJson | EdgeJson | PolygonJson | { circle: CircleJson } | { edge: EdgeJson } | { polygon: PolygonJson };
 
 export interface TransformJson {
   p: Vec2Json;
@@ -241,9 +235,7 @@ export function compareManifold(actual: b2Manifold, expected: ManifoldJson): str
   if (expected.localNormal === undefined || expected.localPoint === undefined) {
     return 'reference manifold has points but no localNormal/localPoint';
   }
-  const frame =
-    compareVec2('localNormal', actual.localNormal, expected.localNormal) ??
-    compareVec2('localPoint', actual.localPoint, expected.localPoint);
+  const frame = compareVec2('localNormal', actual.localNormal, expected.localNormal) ?? compareVec2('localPoint', actual.localPoint, expected.localPoint);
   if (frame !== null) return frame;
   for (let i = 0; i < expected.pointCount; ++i) {
     const a = actual.points[i];
@@ -264,7 +256,6 @@ export function compareManifold(actual: b2Manifold, expected: ManifoldJson): str
   }
   return null;
 }
-
 
 /**
  * Reference cases whose recorded angles do not give the rotation the reference used.
@@ -336,10 +327,7 @@ export interface FamilyResult {
  * makeTransform, and returns them with a `check` that computes the outputs from those transforms
  * (read at call time) and returns the first differing field, or null.
  */
-export function checkVectorFamily<C>(
-  cases: readonly C[],
-  run: (testCase: C) => { transforms: b2Transform[]; check: () => string | null },
-): FamilyResult {
+export function checkVectorFamily<C>(cases: readonly C[], run: (testCase: C) => { transforms: b2Transform[]; check: () => string | null }): FamilyResult {
   const failing: number[] = [];
   const unexplained: number[] = [];
   let firstFailure: string | null = null;

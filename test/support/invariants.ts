@@ -372,7 +372,16 @@ export function checkWorldInvariants(world: b2World): string[] {
 export function poolSizes(world: b2World): Record<string, number> {
   const bp = world.m_contactManager.m_broadPhase;
   const w = world as unknown as {
-    m_island: { m_bodyCapacity: number; m_contactCapacity: number; m_jointCapacity: number; m_bodies: unknown[]; m_contacts: unknown[]; m_joints: unknown[]; m_positions: Float64Array; m_velocities: Float64Array };
+    m_island: {
+      m_bodyCapacity: number;
+      m_contactCapacity: number;
+      m_jointCapacity: number;
+      m_bodies: unknown[];
+      m_contacts: unknown[];
+      m_joints: unknown[];
+      m_positions: Float64Array;
+      m_velocities: Float64Array;
+    };
     m_stack: unknown[];
     m_queryWrappers: unknown[];
     m_rayCastWrappers: unknown[];

@@ -617,23 +617,57 @@ class Replay {
     const fixture = (): b2Fixture => this.ref(this.fixtures, a, 'fixture');
     const w = this.world;
     switch (a.op as string) {
-      case 'setTransform': body().SetTransform(vecOf(a, 'position'), num(a, 'angle')); break;
-      case 'setLinearVelocity': body().SetLinearVelocity(vecOf(a, 'v')); break;
-      case 'setAngularVelocity': body().SetAngularVelocity(num(a, 'w')); break;
-      case 'applyForce': body().ApplyForce(vecOf(a, 'force'), vecOf(a, 'point')); break;
-      case 'applyForceToCenter': body().ApplyForceToCenter(vecOf(a, 'force')); break;
-      case 'applyTorque': body().ApplyTorque(num(a, 'torque')); break;
-      case 'applyLinearImpulse': body().ApplyLinearImpulse(vecOf(a, 'impulse'), vecOf(a, 'point')); break;
-      case 'applyAngularImpulse': body().ApplyAngularImpulse(num(a, 'impulse')); break;
-      case 'setType': body().SetType(num(a, 'type') as b2BodyType); break;
-      case 'setActive': body().SetActive(bool(a, 'flag')); break;
-      case 'setAwake': body().SetAwake(bool(a, 'flag')); break;
-      case 'setBullet': body().SetBullet(bool(a, 'flag')); break;
-      case 'setFixedRotation': body().SetFixedRotation(bool(a, 'flag')); break;
-      case 'setSleepingAllowed': body().SetSleepingAllowed(bool(a, 'flag')); break;
-      case 'setGravityScale': body().SetGravityScale(num(a, 'scale')); break;
-      case 'setLinearDamping': body().SetLinearDamping(num(a, 'damping')); break;
-      case 'setAngularDamping': body().SetAngularDamping(num(a, 'damping')); break;
+      case 'setTransform':
+        body().SetTransform(vecOf(a, 'position'), num(a, 'angle'));
+        break;
+      case 'setLinearVelocity':
+        body().SetLinearVelocity(vecOf(a, 'v'));
+        break;
+      case 'setAngularVelocity':
+        body().SetAngularVelocity(num(a, 'w'));
+        break;
+      case 'applyForce':
+        body().ApplyForce(vecOf(a, 'force'), vecOf(a, 'point'));
+        break;
+      case 'applyForceToCenter':
+        body().ApplyForceToCenter(vecOf(a, 'force'));
+        break;
+      case 'applyTorque':
+        body().ApplyTorque(num(a, 'torque'));
+        break;
+      case 'applyLinearImpulse':
+        body().ApplyLinearImpulse(vecOf(a, 'impulse'), vecOf(a, 'point'));
+        break;
+      case 'applyAngularImpulse':
+        body().ApplyAngularImpulse(num(a, 'impulse'));
+        break;
+      case 'setType':
+        body().SetType(num(a, 'type') as b2BodyType);
+        break;
+      case 'setActive':
+        body().SetActive(bool(a, 'flag'));
+        break;
+      case 'setAwake':
+        body().SetAwake(bool(a, 'flag'));
+        break;
+      case 'setBullet':
+        body().SetBullet(bool(a, 'flag'));
+        break;
+      case 'setFixedRotation':
+        body().SetFixedRotation(bool(a, 'flag'));
+        break;
+      case 'setSleepingAllowed':
+        body().SetSleepingAllowed(bool(a, 'flag'));
+        break;
+      case 'setGravityScale':
+        body().SetGravityScale(num(a, 'scale'));
+        break;
+      case 'setLinearDamping':
+        body().SetLinearDamping(num(a, 'damping'));
+        break;
+      case 'setAngularDamping':
+        body().SetAngularDamping(num(a, 'damping'));
+        break;
       case 'setMassData': {
         const md = new b2MassData();
         md.mass = num(a, 'mass');
@@ -642,10 +676,18 @@ class Replay {
         body().SetMassData(md);
         break;
       }
-      case 'resetMassData': body().ResetMassData(); break;
-      case 'destroyBody': this.destroyBody(body()); break;
-      case 'createBody': this.createBody(a.def); break;
-      case 'createFixture': this.createFixture(body(), a.def); break;
+      case 'resetMassData':
+        body().ResetMassData();
+        break;
+      case 'destroyBody':
+        this.destroyBody(body());
+        break;
+      case 'createBody':
+        this.createBody(a.def);
+        break;
+      case 'createFixture':
+        this.createFixture(body(), a.def);
+        break;
       case 'destroyFixture': {
         const f = fixture();
         this.fixtures[this.fixtureId(f)] = null;
@@ -660,27 +702,57 @@ class Replay {
         fixture().SetFilterData(filter);
         break;
       }
-      case 'refilter': fixture().Refilter(); break;
-      case 'setSensor': fixture().SetSensor(bool(a, 'flag')); break;
-      case 'setDensity': fixture().SetDensity(num(a, 'density')); break;
-      case 'setFriction': fixture().SetFriction(num(a, 'friction')); break;
-      case 'setRestitution': fixture().SetRestitution(num(a, 'restitution')); break;
-      case 'createJoint': this.createJoint(a.def, false); break;
-      case 'createJointInit': this.createJoint(a.def, true); break;
+      case 'refilter':
+        fixture().Refilter();
+        break;
+      case 'setSensor':
+        fixture().SetSensor(bool(a, 'flag'));
+        break;
+      case 'setDensity':
+        fixture().SetDensity(num(a, 'density'));
+        break;
+      case 'setFriction':
+        fixture().SetFriction(num(a, 'friction'));
+        break;
+      case 'setRestitution':
+        fixture().SetRestitution(num(a, 'restitution'));
+        break;
+      case 'createJoint':
+        this.createJoint(a.def, false);
+        break;
+      case 'createJointInit':
+        this.createJoint(a.def, true);
+        break;
       case 'destroyJoint': {
         const j = this.ref(this.joints, a, 'joint');
         this.forgetJoint(j);
         w.DestroyJoint(j);
         break;
       }
-      case 'jointCall': this.jointCall(this.ref(this.joints, a, 'joint'), a); break;
-      case 'setGravity': w.SetGravity(vecOf(a, 'gravity')); break;
-      case 'setWarmStarting': w.SetWarmStarting(bool(a, 'flag')); break;
-      case 'setContinuousPhysics': w.SetContinuousPhysics(bool(a, 'flag')); break;
-      case 'setSubStepping': w.SetSubStepping(bool(a, 'flag')); break;
-      case 'setAllowSleeping': w.SetAllowSleeping(bool(a, 'flag')); break;
-      case 'setAutoClearForces': w.SetAutoClearForces(bool(a, 'flag')); break;
-      case 'clearForces': w.ClearForces(); break;
+      case 'jointCall':
+        this.jointCall(this.ref(this.joints, a, 'joint'), a);
+        break;
+      case 'setGravity':
+        w.SetGravity(vecOf(a, 'gravity'));
+        break;
+      case 'setWarmStarting':
+        w.SetWarmStarting(bool(a, 'flag'));
+        break;
+      case 'setContinuousPhysics':
+        w.SetContinuousPhysics(bool(a, 'flag'));
+        break;
+      case 'setSubStepping':
+        w.SetSubStepping(bool(a, 'flag'));
+        break;
+      case 'setAllowSleeping':
+        w.SetAllowSleeping(bool(a, 'flag'));
+        break;
+      case 'setAutoClearForces':
+        w.SetAutoClearForces(bool(a, 'flag'));
+        break;
+      case 'clearForces':
+        w.ClearForces();
+        break;
       case 'rayCast': {
         const mode = a.mode ?? 'closest';
         w.RayCast(new ReplayRayCast(this, mode === 'closest' ? 0 : mode === 'all' ? 1 : 2), vecOf(a, 'p1'), vecOf(a, 'p2'));
@@ -695,8 +767,12 @@ class Replay {
         this.q(-2);
         break;
       }
-      case 'probe': this.probe(); break;
-      case 'step': w.Step(num(a, 'dt'), num(a, 'vel'), num(a, 'pos')); break;
+      case 'probe':
+        this.probe();
+        break;
+      case 'step':
+        w.Step(num(a, 'dt'), num(a, 'vel'), num(a, 'pos'));
+        break;
       default:
         throw new Error(`script: unknown op ${String(a.op)}`);
     }

@@ -57,10 +57,7 @@ export function readTrajectory(name: string): GoldenTrajectory {
 }
 
 /** Contact count, touching contacts and awake bodies, as in the trajectory samples. */
-export function worldCounts(
-  world: b2World,
-  bodies: readonly b2Body[],
-): { contacts: number; touching: number; awake: number } {
+export function worldCounts(world: b2World, bodies: readonly b2Body[]): { contacts: number; touching: number; awake: number } {
   let touching = 0;
   for (let c = world.GetContactList(); c !== null; c = c.GetNext()) {
     if (c.IsTouching()) ++touching;

@@ -47,12 +47,7 @@ export class b2CircleShape extends b2Shape {
    * x = s + a * r
    * norm(x) = radius
    */
-  RayCast(
-    output: b2RayCastOutput,
-    input: Readonly<b2RayCastInput>,
-    transform: Readonly<b2Transform>,
-    childIndex: number,
-  ): boolean {
+  RayCast(output: b2RayCastOutput, input: Readonly<b2RayCastInput>, transform: Readonly<b2Transform>, childIndex: number): boolean {
     const q = transform.q;
     const positionX = transform.p.x + (q.c * this.m_p.x - q.s * this.m_p.y);
     const positionY = transform.p.y + (q.s * this.m_p.x + q.c * this.m_p.y);

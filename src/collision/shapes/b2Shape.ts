@@ -78,12 +78,7 @@ export abstract class b2Shape {
    * @param transform the transform to be applied to the shape.
    * @param childIndex the child shape index
    */
-  abstract RayCast(
-    output: b2RayCastOutput,
-    input: Readonly<b2RayCastInput>,
-    transform: Readonly<b2Transform>,
-    childIndex: number,
-  ): boolean;
+  abstract RayCast(output: b2RayCastOutput, input: Readonly<b2RayCastInput>, transform: Readonly<b2Transform>, childIndex: number): boolean;
 
   /**
    * Given a transform, compute the associated axis aligned bounding box for a child shape.

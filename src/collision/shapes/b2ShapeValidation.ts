@@ -69,20 +69,12 @@ export function b2CheckPolygonVertices(
     const ex = vertices[i2].x - vertices[i].x;
     const ey = vertices[i2].y - vertices[i].y;
     if (!(ex * ex + ey * ey > b2_epsilon * b2_epsilon)) {
-      throw new b2ArgumentError(
-        method,
-        `${argument}[${i2}]`,
-        `coincides with ${argument}[${i}] (polygon edges must be longer than b2_epsilon)`,
-      );
+      throw new b2ArgumentError(method, `${argument}[${i2}]`, `coincides with ${argument}[${i}] (polygon edges must be longer than b2_epsilon)`);
     }
   }
   const area = signedArea(vertices, count);
   if (area < 0.0) {
-    throw new b2ArgumentError(
-      method,
-      argument,
-      `are clockwise (signed area ${area}; vertices must be counter-clockwise and convex)`,
-    );
+    throw new b2ArgumentError(method, argument, `are clockwise (signed area ${area}; vertices must be counter-clockwise and convex)`);
   }
   if (!(area > minArea)) {
     const bound = minArea === 0.0 ? '0' : 'b2_epsilon';
@@ -108,14 +100,7 @@ export function b2CheckPolygonVertices(
 }
 
 /** Check a chain's vertex list: enough vertices, finite, no vertex repeating the one before. */
-export function b2CheckChainVertices(
-  method: string,
-  argument: string,
-  countArgument: string,
-  vertices: readonly Vec[],
-  count: number,
-  loop: boolean,
-): void {
+export function b2CheckChainVertices(method: string, argument: string, countArgument: string, vertices: readonly Vec[], count: number, loop: boolean): void {
   if (!Array.isArray(vertices)) {
     throw new b2ArgumentError(method, argument, `must be an array of vectors, got ${b2DescribeNumber(vertices)}`);
   }
@@ -137,11 +122,7 @@ export function b2CheckChainVertices(
     const dy = vertices[i2].y - vertices[i].y;
     if (!(dx * dx + dy * dy > b2_epsilon * b2_epsilon)) {
       const kind = loop && i2 === 0 ? 'closes the loop onto' : 'repeats';
-      throw new b2ArgumentError(
-        method,
-        `${argument}[${i2}]`,
-        `${kind} ${argument}[${i}] (consecutive chain vertices must be more than b2_epsilon apart)`,
-      );
+      throw new b2ArgumentError(method, `${argument}[${i2}]`, `${kind} ${argument}[${i}] (consecutive chain vertices must be more than b2_epsilon apart)`);
     }
   }
 }
@@ -184,14 +165,7 @@ export function b2CheckShape(method: string, argument: string, shape: b2Shape, d
       const polygon = shape as b2PolygonShape;
       b2CheckNonNegative(method, `${argument}.m_radius`, polygon.m_radius);
       const minArea = density > 0.0 ? b2_epsilon : 0.0;
-      b2CheckPolygonVertices(
-        method,
-        `${argument}.m_vertices`,
-        `${argument}.m_vertexCount`,
-        polygon.m_vertices,
-        polygon.m_vertexCount,
-        minArea,
-      );
+      b2CheckPolygonVertices(method, `${argument}.m_vertices`, `${argument}.m_vertexCount`, polygon.m_vertices, polygon.m_vertexCount, minArea);
       for (let i = 0; i < polygon.m_vertexCount; ++i) {
         b2CheckVec2(method, `${argument}.m_normals[${i}]`, polygon.m_normals[i]);
       }
@@ -207,10 +181,6 @@ export function b2CheckShape(method: string, argument: string, shape: b2Shape, d
       return;
     }
     default:
-      throw new b2ArgumentError(
-        method,
-        `${argument}.m_type`,
-        `must be b2Shape.e_circle, e_edge, e_polygon or e_chain, got ${b2DescribeNumber(shape.m_type)}`,
-      );
+      throw new b2ArgumentError(method, `${argument}.m_type`, `must be b2Shape.e_circle, e_edge, e_polygon or e_chain, got ${b2DescribeNumber(shape.m_type)}`);
   }
 }

@@ -379,13 +379,7 @@ export class b2Contact {
    * always the polygon, edge or chain side. With an allocator (the world's), a contact it stores
    * for the same shape types is reinitialised instead of a new one constructed.
    */
-  static Create(
-    fixtureA: b2Fixture,
-    indexA: number,
-    fixtureB: b2Fixture,
-    indexB: number,
-    allocator: b2ContactAllocator | null = null,
-  ): b2Contact | null {
+  static Create(fixtureA: b2Fixture, indexA: number, fixtureB: b2Fixture, indexB: number, allocator: b2ContactAllocator | null = null): b2Contact | null {
     // The C++ fills the registry lazily here; this port fills it from b2ContactManager's
     // constructor (see the file header).
     b2Assert(b2Contact.s_initialized, 'b2InitializeContactRegisters() must run before b2Contact.Create');

@@ -39,10 +39,7 @@ export class b2VelocityConstraintPoint {
 }
 
 export class b2ContactVelocityConstraint {
-  readonly points: b2VelocityConstraintPoint[] = b2MakeArray(
-    b2_maxManifoldPoints,
-    () => new b2VelocityConstraintPoint(),
-  );
+  readonly points: b2VelocityConstraintPoint[] = b2MakeArray(b2_maxManifoldPoints, () => new b2VelocityConstraintPoint());
   readonly normal = new b2Vec2();
   readonly normalMass = new b2Mat22();
   readonly K = new b2Mat22();
@@ -114,8 +111,7 @@ export class b2PositionSolverManifold {
         const planePoint = b2MulXV(xfA, pc.localPoint, s_planePoint);
 
         const clipPoint = b2MulXV(xfB, pc.localPoints[index], s_clipPoint);
-        this.separation =
-          (clipPoint.x - planePoint.x) * normal.x + (clipPoint.y - planePoint.y) * normal.y - pc.radiusA - pc.radiusB;
+        this.separation = (clipPoint.x - planePoint.x) * normal.x + (clipPoint.y - planePoint.y) * normal.y - pc.radiusA - pc.radiusB;
         this.point.Assign(clipPoint);
         break;
       }
@@ -125,8 +121,7 @@ export class b2PositionSolverManifold {
         const planePoint = b2MulXV(xfB, pc.localPoint, s_planePoint);
 
         const clipPoint = b2MulXV(xfA, pc.localPoints[index], s_clipPoint);
-        this.separation =
-          (clipPoint.x - planePoint.x) * normal.x + (clipPoint.y - planePoint.y) * normal.y - pc.radiusA - pc.radiusB;
+        this.separation = (clipPoint.x - planePoint.x) * normal.x + (clipPoint.y - planePoint.y) * normal.y - pc.radiusA - pc.radiusB;
         this.point.Assign(clipPoint);
 
         // Ensure normal points from A to B

@@ -300,10 +300,7 @@ export class b2GearJoint extends b2Joint {
       this.m_JvBD.Set(this.m_ratio * u.x, this.m_ratio * u.y);
       this.m_JwD = this.m_ratio * (rD.x * u.y - rD.y * u.x);
       this.m_JwB = this.m_ratio * (rB.x * u.y - rB.y * u.x);
-      this.m_mass +=
-        this.m_ratio * this.m_ratio * (this.m_mD + this.m_mB) +
-        this.m_iD * this.m_JwD * this.m_JwD +
-        this.m_iB * this.m_JwB * this.m_JwB;
+      this.m_mass += this.m_ratio * this.m_ratio * (this.m_mD + this.m_mB) + this.m_iD * this.m_JwD * this.m_JwD + this.m_iB * this.m_JwB * this.m_JwB;
     }
 
     // Compute effective mass.

@@ -51,9 +51,6 @@ export class b2JointFactory {
    * the garbage collector does both here, so only the type check of the C++ switch remains.
    */
   static Destroy(joint: b2Joint): void {
-    b2Assert(
-      joint.m_type > b2JointType.e_unknownJoint && joint.m_type <= b2JointType.e_ropeJoint,
-      `unknown joint type ${joint.m_type}`,
-    );
+    b2Assert(joint.m_type > b2JointType.e_unknownJoint && joint.m_type <= b2JointType.e_ropeJoint, `unknown joint type ${joint.m_type}`);
   }
 }

@@ -223,10 +223,7 @@ export class b2MouseJoint extends b2Joint {
     // Cdot = v + cross(w, r)
     const Cdotx = vBx - wB * rB.y;
     const Cdoty = vBy + wB * rB.x;
-    const rhs = s_rhs.Set(
-      -(Cdotx + this.m_C.x + this.m_gamma * this.m_impulse.x),
-      -(Cdoty + this.m_C.y + this.m_gamma * this.m_impulse.y),
-    );
+    const rhs = s_rhs.Set(-(Cdotx + this.m_C.x + this.m_gamma * this.m_impulse.x), -(Cdoty + this.m_C.y + this.m_gamma * this.m_impulse.y));
     const impulse = b2MulMV(this.m_mass, rhs, s_impulse);
 
     const oldImpulseX = this.m_impulse.x;

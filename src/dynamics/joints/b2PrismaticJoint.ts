@@ -69,20 +69,7 @@
  * df = f2 - f1
  */
 
-import {
-  b2Abs,
-  b2Clamp,
-  b2CrossSV,
-  b2Mat22,
-  b2Mat33,
-  b2Max,
-  b2Min,
-  b2MulRV,
-  b2Rot,
-  b2SubVV,
-  b2Vec2,
-  b2Vec3,
-} from '../../common/b2Math';
+import { b2Abs, b2Clamp, b2CrossSV, b2Mat22, b2Mat33, b2Max, b2Min, b2MulRV, b2Rot, b2SubVV, b2Vec2, b2Vec3 } from '../../common/b2Math';
 import { b2_linearSlop, b2_angularSlop, b2_maxLinearCorrection, b2Log } from '../../common/b2Settings';
 import type { b2Body } from '../b2Body';
 import type { b2SolverData } from '../b2TimeStep';

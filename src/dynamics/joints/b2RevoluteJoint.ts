@@ -19,12 +19,7 @@
  */
 
 import { b2Abs, b2Clamp, b2Rot, b2Vec2, b2Vec3 } from '../../common/b2Math';
-import {
-  b2_angularSlop,
-  b2_linearSlop,
-  b2_maxAngularCorrection,
-  b2Log,
-} from '../../common/b2Settings';
+import { b2_angularSlop, b2_linearSlop, b2_maxAngularCorrection, b2Log } from '../../common/b2Settings';
 import type { b2Body } from '../b2Body';
 import type { b2SolverData } from '../b2TimeStep';
 import { b2Joint, b2JointDef, b2JointType, b2LimitState, b2CheckJointAlive } from './b2Joint';
@@ -315,9 +310,7 @@ export class b2RevoluteJoint extends b2Joint {
     t[rec + RJ.indexA] = this.m_indexA;
     t[rec + RJ.indexB] = this.m_indexB;
     t[rec + RJ.flags] =
-      (this.m_enableMotor ? RJFlag.enableMotor : 0) |
-      (this.m_enableLimit ? RJFlag.enableLimit : 0) |
-      (this.m_limitState << RJFlag.limitStateShift);
+      (this.m_enableMotor ? RJFlag.enableMotor : 0) | (this.m_enableLimit ? RJFlag.enableLimit : 0) | (this.m_limitState << RJFlag.limitStateShift);
     t[rec + RJ.rAx] = rAx;
     t[rec + RJ.rAy] = rAy;
     t[rec + RJ.rBx] = rBx;

@@ -410,8 +410,7 @@ export class b2WheelJoint extends b2Joint {
 
     // 2.2.1 builds the effective mass from the lever arms cached by InitVelocityConstraints
     // (m_sAy, m_sBy), not from the fresh sAy/sBy used for the impulse below.
-    const k =
-      this.m_invMassA + this.m_invMassB + this.m_invIA * this.m_sAy * this.m_sAy + this.m_invIB * this.m_sBy * this.m_sBy;
+    const k = this.m_invMassA + this.m_invMassB + this.m_invIA * this.m_sAy * this.m_sAy + this.m_invIB * this.m_sBy * this.m_sBy;
 
     let impulse: number;
     if (k !== 0.0) {

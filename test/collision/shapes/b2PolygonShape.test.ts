@@ -28,9 +28,7 @@ function checkCase(c: PolygonMassAndRayCastCase, xf: b2Transform): string | null
 
   const aabb = new b2AABB();
   polygon.ComputeAABB(aabb, xf, 0);
-  const box =
-    compareVec2('aabb.lowerBound', aabb.lowerBound, c.aabb.lowerBound) ??
-    compareVec2('aabb.upperBound', aabb.upperBound, c.aabb.upperBound);
+  const box = compareVec2('aabb.lowerBound', aabb.lowerBound, c.aabb.lowerBound) ?? compareVec2('aabb.upperBound', aabb.upperBound, c.aabb.upperBound);
   if (box !== null) return box;
 
   const input = new b2RayCastInput();

@@ -137,7 +137,7 @@ describe('b2Contact registry', () => {
     });
   }
 
-  it('makes every contact a b2Contact holding its type\'s Evaluate, one class for all (one hidden class in V8), and instanceof answers for its type only', () => {
+  it("makes every contact a b2Contact holding its type's Evaluate, one class for all (one hidden class in V8), and instanceof answers for its type only", () => {
     const types = [
       b2CircleContact,
       b2PolygonAndCircleContact,
@@ -329,12 +329,7 @@ describe('b2Contact.Update', () => {
     expect(contact.IsTouching()).toBe(false);
     contact.Update(listener);
 
-    expect(listener.events).toEqual([
-      'BeginContact',
-      'PreSolve(old points 0, new points 1)',
-      'PreSolve(old points 1, new points 1)',
-      'EndContact',
-    ]);
+    expect(listener.events).toEqual(['BeginContact', 'PreSolve(old points 0, new points 1)', 'PreSolve(old points 1, new points 1)', 'EndContact']);
   });
 
   it('re-enables a contact that was disabled', () => {

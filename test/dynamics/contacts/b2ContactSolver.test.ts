@@ -90,12 +90,30 @@ function makeIsland(options: IslandOptions) {
   const solver = new b2ContactSolver(def);
   // The records read as the C++ structs: positions[i].c.y, velocities[i].w...
   const positions = [0, 1].map((i) => ({
-    c: { get x() { return positionData[3 * i]; }, get y() { return positionData[3 * i + 1]; } },
-    get a() { return positionData[3 * i + 2]; },
+    c: {
+      get x() {
+        return positionData[3 * i];
+      },
+      get y() {
+        return positionData[3 * i + 1];
+      },
+    },
+    get a() {
+      return positionData[3 * i + 2];
+    },
   }));
   const velocities = [0, 1].map((i) => ({
-    v: { get x() { return velocityData[3 * i]; }, get y() { return velocityData[3 * i + 1]; } },
-    get w() { return velocityData[3 * i + 2]; },
+    v: {
+      get x() {
+        return velocityData[3 * i];
+      },
+      get y() {
+        return velocityData[3 * i + 1];
+      },
+    },
+    get w() {
+      return velocityData[3 * i + 2];
+    },
   }));
   return { solver, manifold, positions, velocities, positionData, velocityData };
 }

@@ -60,33 +60,19 @@ describe('b2JointType and b2LimitState', () => {
 describe('joint definitions', () => {
   it('carry the C++ default values', () => {
     const base = new b2JointDef();
-    expect([base.type, base.userData, base.bodyA, base.bodyB, base.collideConnected]).toEqual([
-      e_unknownJoint,
-      null,
-      null,
-      null,
-      false,
-    ]);
+    expect([base.type, base.userData, base.bodyA, base.bodyB, base.collideConnected]).toEqual([e_unknownJoint, null, null, null, false]);
 
     const pulley = new b2PulleyJointDef();
     expect(pulley.type).toBe(e_pulleyJoint);
     expect(pulley.collideConnected).toBe(true);
-    expect([pulley.groundAnchorA.x, pulley.groundAnchorA.y, pulley.groundAnchorB.x, pulley.groundAnchorB.y]).toEqual([
-      -1, 1, 1, 1,
-    ]);
+    expect([pulley.groundAnchorA.x, pulley.groundAnchorA.y, pulley.groundAnchorB.x, pulley.groundAnchorB.y]).toEqual([-1, 1, 1, 1]);
     expect([pulley.localAnchorA.x, pulley.localAnchorB.x, pulley.ratio]).toEqual([-1, 1, 1]);
 
     const mouse = new b2MouseJointDef();
     expect([mouse.type, mouse.maxForce, mouse.frequencyHz, mouse.dampingRatio]).toEqual([e_mouseJoint, 0, 5, 0.7]);
 
     const wheel = new b2WheelJointDef();
-    expect([wheel.type, wheel.frequencyHz, wheel.dampingRatio, wheel.localAxisA.x, wheel.localAxisA.y]).toEqual([
-      e_wheelJoint,
-      2,
-      0.7,
-      1,
-      0,
-    ]);
+    expect([wheel.type, wheel.frequencyHz, wheel.dampingRatio, wheel.localAxisA.x, wheel.localAxisA.y]).toEqual([e_wheelJoint, 2, 0.7, 1, 0]);
 
     const rope = new b2RopeJointDef();
     expect([rope.type, rope.localAnchorA.x, rope.localAnchorB.x, rope.maxLength]).toEqual([e_ropeJoint, -1, 1, 0]);

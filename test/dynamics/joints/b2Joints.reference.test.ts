@@ -33,9 +33,9 @@ interface ReferenceScene {
   dump: string;
 }
 
-const reference = JSON.parse(
-  readFileSync(path.join(path.dirname(fileURLToPath(import.meta.url)), 'b2Joints.reference.json'), 'utf8'),
-) as { scenes: Record<string, ReferenceScene> };
+const reference = JSON.parse(readFileSync(path.join(path.dirname(fileURLToPath(import.meta.url)), 'b2Joints.reference.json'), 'utf8')) as {
+  scenes: Record<string, ReferenceScene>;
+};
 
 /** A scene under construction: the world and its bodies in creation order. */
 class Scene {
@@ -253,15 +253,7 @@ function softScene(s: Scene): void {
   const d = s.box(-3.0, 5.0, 0.0, 0.3, 0.3, 1.0);
   const e = s.box(-6.0, 5.0, 0.0, 0.3, 0.3, 2.0);
   const pulley = new b2PulleyJointDef();
-  pulley.Initialize(
-    d,
-    e,
-    new b2Vec2(-3.0, 9.0),
-    new b2Vec2(-6.0, 9.0),
-    new b2Vec2(-3.0, 5.3),
-    new b2Vec2(-6.0, 5.3),
-    1.5,
-  );
+  pulley.Initialize(d, e, new b2Vec2(-3.0, 9.0), new b2Vec2(-6.0, 9.0), new b2Vec2(-3.0, 5.3), new b2Vec2(-6.0, 5.3), 1.5);
   s.world.CreateJoint(pulley);
 
   const f = s.box(10.0, 0.0, 0.0, 0.5, 0.5, 1.0);
