@@ -59,6 +59,7 @@
 
 import { mkdirSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
+import { constants, PerformanceObserver } from 'node:perf_hooks';
 import { parseArgs } from 'node:util';
 import type { b2Shape } from '../src/collision/shapes/b2Shape';
 import { b2Vec2 } from '../src/common/b2Math';
@@ -73,8 +74,37 @@ import { AutoBackend } from '../src-gpu/backend/auto';
 import type { AutoCalibration } from '../src-gpu/backend/calibration';
 import type { GpuSolverOptions } from '../src-gpu/solver/solver';
 import { b2EdgeShape } from '../src/collision/shapes/b2EdgeShape';
-import { GcTally, box, circle, crossover, deviceName, fmt, logLogChart, median, rng, settleHeap, sizeText } from './gpu-support';
+import { box, circle, crossover, deviceName, fmt, logLogChart, median, rng, settleHeap, sizeText } from './gpu-support';
 import type { Crossover } from './gpu-support';
+
+/**
+ * Node's garbage collections ('gc' performance entries) between start() and stop(): how many, of
+ * which major (mark-compact), and their total ms.
+ */
+class GcTally {
+  count = 0;
+  major = 0;
+  ms = 0;
+  private readonly observer = new PerformanceObserver((list) => this.add(list.getEntries()));
+
+  private add(entries: readonly PerformanceEntry[]): void {
+    for (const e of entries) {
+      this.count++;
+      if (((e as PerformanceEntry & { detail?: { kind?: number } }).detail?.kind ?? 0) === constants.NODE_PERFORMANCE_GC_MAJOR) this.major++;
+      this.ms += e.duration;
+    }
+  }
+
+  start(): void {
+    this.observer.observe({ entryTypes: ['gc'] });
+  }
+
+  stop(): { count: number; major: number; ms: number } {
+    this.add(this.observer.takeRecords());
+    this.observer.disconnect();
+    return { count: this.count, major: this.major, ms: this.ms };
+  }
+}
 
 const DT = 1 / 60;
 const VELOCITY_ITERATIONS = 8;

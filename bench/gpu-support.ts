@@ -3,7 +3,6 @@
  * number formatting for the tables, the adapter's name, the shapes they build, the log-log chart,
  * and a synthetic world of bodies for GpuWorld.
  */
-import { constants } from 'node:perf_hooks';
 import type { b2ChainShape } from '../src/collision/shapes/b2ChainShape';
 import { b2CircleShape } from '../src/collision/shapes/b2CircleShape';
 import { b2PolygonShape } from '../src/collision/shapes/b2PolygonShape';
@@ -254,33 +253,4 @@ export function syntheticWorld(bodies: SyntheticBody[]): b2World {
     m_contactManager: { m_contactFilter: null, m_contactList: null },
     SetChangeListener: () => {},
   } as unknown as b2World;
-}
-
-/**
- * Node's garbage collections ('gc' performance entries) between start() and stop(): how many, of
- * which major (mark-compact), and their total ms.
- */
-export class GcTally {
-  count = 0;
-  major = 0;
-  ms = 0;
-  private readonly observer = new PerformanceObserver((list) => this.add(list.getEntries()));
-
-  private add(entries: readonly PerformanceEntry[]): void {
-    for (const e of entries) {
-      this.count++;
-      if (((e as PerformanceEntry & { detail?: { kind?: number } }).detail?.kind ?? 0) === constants.NODE_PERFORMANCE_GC_MAJOR) this.major++;
-      this.ms += e.duration;
-    }
-  }
-
-  start(): void {
-    this.observer.observe({ entryTypes: ['gc'] });
-  }
-
-  stop(): { count: number; major: number; ms: number } {
-    this.add(this.observer.takeRecords());
-    this.observer.disconnect();
-    return { count: this.count, major: this.major, ms: this.ms };
-  }
 }

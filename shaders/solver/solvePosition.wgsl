@@ -19,7 +19,9 @@
 //      starts each iteration at 0) and SV_JOINT_ERROR. colour.wgsl's `offsets` restores the
 //      sizes each step.
 //      `fused` (one workgroup, for a small world): every iteration of `main` and `check` in one
-//      dispatch, the colours up to SV_COLOURS_USED, with barriers; it stops at the early exit.
+//      dispatch, the colours up to SV_COLOURS_USED, with barriers; it stops at the early exit (and
+//      leaves the position passes' sizes, which only the per-colour passes read: so it binds no
+//      more than the 8 storage buffers every browser gives a stage).
 // Invariants: one writer per dynamic body per pass (the colouring); no read-back. 2.2.1 solves
 //      all of an island's contacts, then all its joints, per iteration; here each colour's
 //      contacts, then its joints (the same within a colour, whose items share no dynamic body;
@@ -204,19 +206,22 @@ fn check_iteration() -> bool {
   atomicStore(&solverState[SV_JOINT_ERROR], 0u);
   if (minSeparation >= sortable_key(-3.0 * LINEAR_SLOP) && jointsOkay) {
     atomicStore(&solverState[SV_POSITION_DONE], 1u);
-    for (var c = 0u; c <= COLOUR_CAP; c = c + 1u) {
-      solverIndirect[SV_ARGS_POSITION + 3u * c] = 0u;
-      solverIndirect[SV_ARGS_POSITION + 3u * c + 1u] = 1u;
-      solverIndirect[SV_ARGS_POSITION + 3u * c + 2u] = 1u;
-    }
     return true;
   }
   return false;
 }
 
+// The exit between the per-colour passes: once done, the position passes' sizes are zeroed so
+// that the remaining iterations dispatch no workgroups.
 @compute @workgroup_size(1)
 fn check() {
-  check_iteration();
+  if (atomicLoad(&solverState[SV_POSITION_DONE]) == 0u && check_iteration()) {
+    for (var c = 0u; c <= COLOUR_CAP; c = c + 1u) {
+      solverIndirect[SV_ARGS_POSITION + 3u * c] = 0u;
+      solverIndirect[SV_ARGS_POSITION + 3u * c + 1u] = 1u;
+      solverIndirect[SV_ARGS_POSITION + 3u * c + 2u] = 1u;
+    }
+  }
 }
 
 var<workgroup> coloursUsed: u32;

@@ -7,10 +7,11 @@
  * - Node: the optional peer dependency `webgpu` (Dawn). When Dawn finds no hardware adapter it
  *   falls back to SwiftShader (src-gpu/device/node.ts says how it is found). No adapter at all is a
  *   GpuUnavailableError whose message says what to install.
- * - Limits: the device is requested with the adapter's own maxStorageBufferBindingSize,
- *   maxBufferSize and maxStorageBuffersPerShaderStage (every stage fits the default 8 storage
- *   buffers; the larger sizes let a million proxies and their pairs fit in one binding), and with
- *   'timestamp-query' when the adapter has it.
+ * - Limits: the device is requested with the adapter's own maxStorageBufferBindingSize and
+ *   maxBufferSize (a million proxies and their pairs then fit in one binding), and with
+ *   'timestamp-query' when the adapter has it. maxStorageBuffersPerShaderStage stays at the
+ *   default 8, which every browser's adapter gives: every stage fits it, and a kernel that does
+ *   not fails here too, not only in a browser.
  * - Loss: `GpuContext.lost` resolves and `onLost` is called once when the device is lost
  *   (device.destroy(), a driver reset, the browser reclaiming it). Afterwards every GPU call of
  *   the backend rejects with GpuDeviceLostError. The b2World itself is untouched, because the
@@ -316,7 +317,6 @@ export async function requestGpu(options: GpuContextOptions = {}): Promise<GpuCo
   const requiredLimits: Record<string, number> = {
     maxStorageBufferBindingSize: limits.maxStorageBufferBindingSize,
     maxBufferSize: limits.maxBufferSize,
-    maxStorageBuffersPerShaderStage: limits.maxStorageBuffersPerShaderStage,
     maxComputeWorkgroupStorageSize: limits.maxComputeWorkgroupStorageSize,
   };
   const requiredFeatures: GPUFeatureName[] = [];

@@ -41,7 +41,6 @@ export class SolvePositionStage {
       3: io.contactBodies,
       4: io.constraints,
       5: bodySweep,
-      6: io.solverIndirect,
       9: io.params,
       10: io.jointBodies,
       11: io.jointParams,
