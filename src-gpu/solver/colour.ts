@@ -114,35 +114,24 @@ export class ColourStage {
     rec.dispatchIndirect(this.compare, compare, io.solverIndirect, SV_ARGS.ITEMS * 4);
     rec.dispatch(this.decide, this.decide.bind({ 3: io.solverState, 4: io.solverIndirect }), 1);
     const args = SV_ARGS.ROUNDS * 4;
-    if (fused) {
-      const group = this.rounds.bind({
-        3: io.solverState,
-        5: io.contactBodies,
-        6: this.colours.buffer,
-        7: this.bodyMark.buffer,
-        8: this.keys.buffer,
-        10: io.jointBodies,
-        11: this.signatures.buffer,
-      });
-      rec.dispatch(this.rounds, group, 1);
-    }
+    // What `pick` and `rounds` bind (`pick` adds its round's uniform at 0).
+    const picks = {
+      3: io.solverState,
+      5: io.contactBodies,
+      6: this.colours.buffer,
+      7: this.bodyMark.buffer,
+      8: this.keys.buffer,
+      10: io.jointBodies,
+      11: this.signatures.buffer,
+    };
+    if (fused) rec.dispatch(this.rounds, this.rounds.bind(picks), 1);
     for (let round = 0; round <= COLOUR_CAP && !fused; ++round) {
       const u = io.rounds[round].buffer;
       if (round < COLOUR_CAP) {
         const group = this.mark.bind({ 0: u, 3: io.solverState, 5: io.contactBodies, 6: this.colours.buffer, 7: this.bodyMark.buffer, 10: io.jointBodies });
         rec.dispatchIndirect(this.mark, group, io.solverIndirect, args);
       }
-      const group = this.pick.bind({
-        0: u,
-        3: io.solverState,
-        5: io.contactBodies,
-        6: this.colours.buffer,
-        7: this.bodyMark.buffer,
-        8: this.keys.buffer,
-        10: io.jointBodies,
-        11: this.signatures.buffer,
-      });
-      rec.dispatchIndirect(this.pick, group, io.solverIndirect, args);
+      rec.dispatchIndirect(this.pick, this.pick.bind({ 0: u, ...picks }), io.solverIndirect, args);
     }
     const sorted = this.sort.encode(rec, this.keys.buffer, this.keysTmp.buffer, this.sortPasses, io.solverState, SV.COLOUR_SORT_COUNT, {
       indirect: io.solverIndirect,

@@ -16,7 +16,7 @@
 
 import type { GpuContext } from '../device/device';
 import { Kernel } from '../device/kernel';
-import type { Recorder } from '../device/kernel';
+import type { BindingEntry, Recorder } from '../device/kernel';
 import { COLOUR_CAP, SV_ARGS } from '../device/layout';
 import type { ColourPassInputs } from './warmStart';
 
@@ -35,35 +35,28 @@ export class SolvePositionStage {
 
   /** Every iteration (SolverParams.positionIterations) and its early exit in one dispatch of one workgroup (a small world). */
   encodeFused(rec: Recorder, io: ColourPassInputs, bodySweep: GPUBuffer): void {
-    const group = this.fused.bind({
+    rec.dispatch(this.fused, this.fused.bind({ 9: io.params, ...this.entries(io, bodySweep) }), 1);
+  }
+
+  /** The buffers both entry points bind (`main` adds its colour's uniform, `fused` the iteration count). */
+  private entries(io: ColourPassInputs, bodySweep: GPUBuffer): Record<number, BindingEntry> {
+    return {
       1: io.solverState,
       2: io.colourKeys,
       3: io.contactBodies,
       4: io.constraints,
       5: bodySweep,
-      9: io.params,
       10: io.jointBodies,
       11: io.jointParams,
       12: io.jointConstraints,
-    });
-    rec.dispatch(this.fused, group, 1);
+    };
   }
 
   encode(rec: Recorder, io: ColourPassInputs, bodySweep: GPUBuffer, iterations: number): void {
     const check = this.check.bind({ 1: io.solverState, 6: io.solverIndirect });
     // The colours' bind groups once, for every iteration.
     for (let c = 0; c <= COLOUR_CAP; ++c) {
-      this.groups[c] = this.kernel.bind({
-        0: io.colours[c].buffer,
-        1: io.solverState,
-        2: io.colourKeys,
-        3: io.contactBodies,
-        4: io.constraints,
-        5: bodySweep,
-        10: io.jointBodies,
-        11: io.jointParams,
-        12: io.jointConstraints,
-      });
+      this.groups[c] = this.kernel.bind({ 0: io.colours[c].buffer, ...this.entries(io, bodySweep) });
     }
     for (let it = 0; it < iterations; ++it) {
       for (let c = 0; c <= COLOUR_CAP; ++c) {

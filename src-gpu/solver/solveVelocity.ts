@@ -14,7 +14,7 @@
 
 import type { GpuContext } from '../device/device';
 import { Kernel } from '../device/kernel';
-import type { Recorder } from '../device/kernel';
+import type { BindingEntry, Recorder } from '../device/kernel';
 import { COLOUR_CAP, SV_ARGS } from '../device/layout';
 import type { ColourPassInputs } from './warmStart';
 
@@ -30,9 +30,9 @@ export class SolveVelocityStage {
     this.fused = new Kernel(ctx, 'solveVelocity', 'fused');
   }
 
-  /** Every iteration (SolverParams.velocityIterations) in one dispatch of one workgroup (a small world). */
-  encodeFused(rec: Recorder, io: ColourPassInputs, bodyVel: GPUBuffer): void {
-    const group = this.fused.bind({
+  /** The buffers both entry points bind (`main` adds its colour's uniform at 0). */
+  private entries(io: ColourPassInputs, bodyVel: GPUBuffer): Record<number, BindingEntry> {
+    return {
       1: io.solverState,
       2: io.colourKeys,
       3: io.contactBodies,
@@ -42,25 +42,18 @@ export class SolveVelocityStage {
       10: io.jointBodies,
       11: io.jointParams,
       12: io.jointConstraints,
-    });
-    rec.dispatch(this.fused, group, 1);
+    };
+  }
+
+  /** Every iteration (SolverParams.velocityIterations) in one dispatch of one workgroup (a small world). */
+  encodeFused(rec: Recorder, io: ColourPassInputs, bodyVel: GPUBuffer): void {
+    rec.dispatch(this.fused, this.fused.bind(this.entries(io, bodyVel)), 1);
   }
 
   encode(rec: Recorder, io: ColourPassInputs, bodyVel: GPUBuffer, iterations: number): void {
     // The colours' bind groups once, for every iteration.
     for (let c = 0; c <= COLOUR_CAP; ++c) {
-      this.groups[c] = this.kernel.bind({
-        0: io.colours[c].buffer,
-        1: io.solverState,
-        2: io.colourKeys,
-        3: io.contactBodies,
-        4: io.constraints,
-        5: bodyVel,
-        9: io.params,
-        10: io.jointBodies,
-        11: io.jointParams,
-        12: io.jointConstraints,
-      });
+      this.groups[c] = this.kernel.bind({ 0: io.colours[c].buffer, ...this.entries(io, bodyVel) });
     }
     for (let it = 0; it < iterations; ++it) {
       for (let c = 0; c <= COLOUR_CAP; ++c) {

@@ -12,7 +12,7 @@
 
 import type { GpuContext } from '../device/device';
 import { Kernel } from '../device/kernel';
-import type { Recorder, Uniform } from '../device/kernel';
+import type { BindingEntry, Recorder, Uniform } from '../device/kernel';
 import { COLOUR_CAP, SV_ARGS } from '../device/layout';
 
 export interface ColourPassInputs {
@@ -41,32 +41,19 @@ export class WarmStartStage {
     this.fused = new Kernel(ctx, 'warmStart', 'fused');
   }
 
+  /** The buffers both entry points bind (`main` adds its colour's uniform at 0). */
+  private entries(io: ColourPassInputs, bodyVel: GPUBuffer): Record<number, BindingEntry> {
+    return { 1: io.solverState, 2: io.colourKeys, 3: io.contactBodies, 4: io.constraints, 5: bodyVel, 10: io.jointBodies, 12: io.jointConstraints };
+  }
+
   /** Every colour in one dispatch of one workgroup (a small world). */
   encodeFused(rec: Recorder, io: ColourPassInputs, bodyVel: GPUBuffer): void {
-    const group = this.fused.bind({
-      1: io.solverState,
-      2: io.colourKeys,
-      3: io.contactBodies,
-      4: io.constraints,
-      5: bodyVel,
-      10: io.jointBodies,
-      12: io.jointConstraints,
-    });
-    rec.dispatch(this.fused, group, 1);
+    rec.dispatch(this.fused, this.fused.bind(this.entries(io, bodyVel)), 1);
   }
 
   encode(rec: Recorder, io: ColourPassInputs, bodyVel: GPUBuffer): void {
     for (let c = 0; c <= COLOUR_CAP; ++c) {
-      const group = this.kernel.bind({
-        0: io.colours[c].buffer,
-        1: io.solverState,
-        2: io.colourKeys,
-        3: io.contactBodies,
-        4: io.constraints,
-        5: bodyVel,
-        10: io.jointBodies,
-        12: io.jointConstraints,
-      });
+      const group = this.kernel.bind({ 0: io.colours[c].buffer, ...this.entries(io, bodyVel) });
       rec.dispatchIndirect(this.kernel, group, io.solverIndirect, (SV_ARGS.COLOURS + 3 * c) * 4);
     }
   }
