@@ -78,17 +78,21 @@ import { box, circle, crossover, deviceName, fmt, logLogChart, median, rng, sett
 import type { Crossover } from './gpu-support';
 
 /**
- * Node's garbage collections ('gc' performance entries) between start() and stop(): how many, of
- * which major (mark-compact), and their total ms.
+ * Node's garbage collections ('gc' performance entries) that started between start() and stop():
+ * how many, of which major (mark-compact), and their total ms. Node delivers the entries a while
+ * after the collection, so stop() waits for them.
  */
 class GcTally {
   count = 0;
   major = 0;
   ms = 0;
+  private from = 0;
+  private until = Infinity;
   private readonly observer = new PerformanceObserver((list) => this.add(list.getEntries()));
 
   private add(entries: readonly PerformanceEntry[]): void {
     for (const e of entries) {
+      if (e.startTime < this.from || e.startTime > this.until) continue;
       this.count++;
       if (((e as PerformanceEntry & { detail?: { kind?: number } }).detail?.kind ?? 0) === constants.NODE_PERFORMANCE_GC_MAJOR) this.major++;
       this.ms += e.duration;
@@ -96,15 +100,21 @@ class GcTally {
   }
 
   start(): void {
+    this.from = performance.now();
     this.observer.observe({ entryTypes: ['gc'] });
   }
 
-  stop(): { count: number; major: number; ms: number } {
+  async stop(): Promise<{ count: number; major: number; ms: number }> {
+    this.until = performance.now();
+    await new Promise((resolve) => setTimeout(resolve, GC_ENTRY_WAIT_MS));
     this.add(this.observer.takeRecords());
     this.observer.disconnect();
     return { count: this.count, major: this.major, ms: this.ms };
   }
 }
+
+/** How long stop() waits for the entries of the collections it counts. */
+const GC_ENTRY_WAIT_MS = 300;
 
 const DT = 1 / 60;
 const VELOCITY_ITERATIONS = 8;
@@ -348,7 +358,7 @@ async function runWorldApi(ctx: GpuContext, world: b2World, steps: number): Prom
   const a0 = performance.now();
   await world.SetBackend(backend);
   const attachMs = performance.now() - a0;
-  const attachGc = attachTally.stop();
+  const attachGc = await attachTally.stop();
   try {
     const out = new Float32Array(4 * backend.stepper!.mirror.bodySlotCount);
     const step = () => world.Step(DT, VELOCITY_ITERATIONS, POSITION_ITERATIONS);
@@ -393,7 +403,7 @@ async function runWorldApi(ctx: GpuContext, world: b2World, steps: number): Prom
       bulk.push(performance.now() - t1);
       bulkCopy.push(backend.readStats!.unpackMs);
     }
-    const gcSeen = gc.stop();
+    const gcSeen = await gc.stop();
     const pullAll: number[] = [];
     for (let i = 0; i < Math.max(1, Math.round(steps / 2)); ++i) {
       step();
