@@ -37,14 +37,10 @@ export function packWorldContacts(mirror: GpuWorld): { count: number; keys: Uint
   const capacity = Math.max(1, world.m_contactManager.m_contactCount);
   const keyOf = new Uint32Array(4 * capacity);
   const recordOf = new Uint32Array(MANIFOLD_WORDS * capacity);
+  // The same words as floats: what a manifold holds as float32.
+  const recordF32 = new Float32Array(recordOf.buffer);
   const first = new Int32Array(capacity);
   const second = new Int32Array(capacity);
-  const f32 = new Float32Array(1);
-  const u32 = new Uint32Array(f32.buffer);
-  const bits = (x: number) => {
-    f32[0] = x;
-    return u32[0];
-  };
   let n = 0;
   let slots = 1;
   for (let c: b2Contact | null = world.m_contactManager.m_contactList; c; c = c.m_next) {
@@ -75,17 +71,17 @@ export function packWorldContacts(mirror: GpuWorld): { count: number; keys: Uint
     recordOf[h + 2] = count > 1 ? m.points[1].id.key : 0;
     recordOf[h + 3] = NO_CONTACT;
     if (count > 0) {
-      recordOf[h + 4] = bits(m.localNormal.x);
-      recordOf[h + 5] = bits(m.localNormal.y);
-      recordOf[h + 6] = bits(m.localPoint.x);
-      recordOf[h + 7] = bits(m.localPoint.y);
+      recordF32[h + 4] = m.localNormal.x;
+      recordF32[h + 5] = m.localNormal.y;
+      recordF32[h + 6] = m.localPoint.x;
+      recordF32[h + 7] = m.localPoint.y;
     }
     for (let p = 0; p < count; ++p) {
       const point = m.points[p];
-      recordOf[h + 8 + 2 * p] = bits(point.localPoint.x);
-      recordOf[h + 9 + 2 * p] = bits(point.localPoint.y);
-      recordOf[h + 12 + 2 * p] = bits(point.normalImpulse);
-      recordOf[h + 13 + 2 * p] = bits(point.tangentImpulse);
+      recordF32[h + 8 + 2 * p] = point.localPoint.x;
+      recordF32[h + 9 + 2 * p] = point.localPoint.y;
+      recordF32[h + 12 + 2 * p] = point.normalImpulse;
+      recordF32[h + 13 + 2 * p] = point.tangentImpulse;
     }
     ++n;
   }

@@ -55,8 +55,9 @@ export class SolvePositionStage {
   encode(rec: Recorder, io: ColourPassInputs, bodySweep: GPUBuffer, iterations: number): void {
     const check = this.check.bind({ 1: io.solverState, 6: io.solverIndirect });
     // The colours' bind groups once, for every iteration.
+    const shared = this.entries(io, bodySweep);
     for (let c = 0; c <= COLOUR_CAP; ++c) {
-      this.groups[c] = this.kernel.bind({ 0: io.colours[c].buffer, ...this.entries(io, bodySweep) });
+      this.groups[c] = this.kernel.bind({ 0: io.colours[c].buffer, ...shared });
     }
     for (let it = 0; it < iterations; ++it) {
       for (let c = 0; c <= COLOUR_CAP; ++c) {

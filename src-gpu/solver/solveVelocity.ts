@@ -52,8 +52,9 @@ export class SolveVelocityStage {
 
   encode(rec: Recorder, io: ColourPassInputs, bodyVel: GPUBuffer, iterations: number): void {
     // The colours' bind groups once, for every iteration.
+    const shared = this.entries(io, bodyVel);
     for (let c = 0; c <= COLOUR_CAP; ++c) {
-      this.groups[c] = this.kernel.bind({ 0: io.colours[c].buffer, ...this.entries(io, bodyVel) });
+      this.groups[c] = this.kernel.bind({ 0: io.colours[c].buffer, ...shared });
     }
     for (let it = 0; it < iterations; ++it) {
       for (let c = 0; c <= COLOUR_CAP; ++c) {

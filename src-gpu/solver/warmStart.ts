@@ -52,8 +52,9 @@ export class WarmStartStage {
   }
 
   encode(rec: Recorder, io: ColourPassInputs, bodyVel: GPUBuffer): void {
+    const shared = this.entries(io, bodyVel);
     for (let c = 0; c <= COLOUR_CAP; ++c) {
-      const group = this.kernel.bind({ 0: io.colours[c].buffer, ...this.entries(io, bodyVel) });
+      const group = this.kernel.bind({ 0: io.colours[c].buffer, ...shared });
       rec.dispatchIndirect(this.kernel, group, io.solverIndirect, (SV_ARGS.COLOURS + 3 * c) * 4);
     }
   }
