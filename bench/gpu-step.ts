@@ -213,6 +213,21 @@ function buildWorld(scene: string, n: number): b2World {
   throw new Error(`unknown scene ${scene} (${ALL_SCENES.join(', ')})`);
 }
 
+/**
+ * The scene built after a full collection (its build time into `row`), and collected again. Each
+ * phase builds its own world, so that main()'s frame never holds one: a suspended async function
+ * keeps its locals, and the last phase's million bodies doubled what every collection of the
+ * next one marked.
+ */
+function freshWorld(scene: string, n: number, row?: Row): b2World {
+  settleHeap();
+  const b0 = performance.now();
+  const world = buildWorld(scene, n);
+  if (row !== undefined) row.buildMs = performance.now() - b0;
+  settleHeap();
+  return world;
+}
+
 /** --fused: the solver's fused passes forced on or off; by body count when undefined. */
 const solverOptions: GpuSolverOptions = {};
 
@@ -255,7 +270,8 @@ interface GpuRow {
   truncatedSteps: number;
 }
 
-async function runGpu(ctx: GpuContext, world: b2World, steps: number): Promise<GpuRow> {
+async function runGpu(ctx: GpuContext, scene: string, n: number, steps: number, row: Row): Promise<GpuRow> {
+  const world = freshWorld(scene, n, row);
   const t0 = performance.now();
   const stepper = new GpuStepper(ctx, world, { solver: solverOptions });
   try {
@@ -351,7 +367,8 @@ interface WorldApiRow {
   pullAllMs: number;
 }
 
-async function runWorldApi(ctx: GpuContext, world: b2World, steps: number): Promise<WorldApiRow> {
+async function runWorldApi(ctx: GpuContext, scene: string, n: number, steps: number): Promise<WorldApiRow> {
+  const world = freshWorld(scene, n);
   const backend = await WebGPUBackend.create({ context: ctx, stepper: { solver: solverOptions } });
   const attachTally = new GcTally();
   attachTally.start();
@@ -435,7 +452,8 @@ interface JsRow {
   contacts: number;
 }
 
-function runJs(world: b2World, steps: number, budgetSeconds: number): JsRow {
+function runJs(scene: string, n: number, steps: number, budgetSeconds: number): JsRow {
+  const world = freshWorld(scene, n);
   for (let i = 0; i < WARMUP; ++i) world.Step(DT, VELOCITY_ITERATIONS, POSITION_ITERATIONS);
   const times: number[] = [];
   const start = performance.now();
@@ -639,29 +657,18 @@ async function main(): Promise<number> {
     for (const scene of scenes) {
       const row: Row = { scene, bodies: n, buildMs: 0, gpu: null, gpuError: null, api: null, apiError: null, js: null, jsError: null };
       try {
-        settleHeap();
-        const b0 = performance.now();
-        const world = buildWorld(scene, n);
-        row.buildMs = performance.now() - b0;
-        settleHeap();
-        row.gpu = await runGpu(ctx, world, steps);
+        row.gpu = await runGpu(ctx, scene, n, steps, row);
       } catch (err) {
         row.gpuError = message(err);
       }
       try {
-        settleHeap();
-        const world = buildWorld(scene, n);
-        settleHeap();
-        row.api = await runWorldApi(ctx, world, steps);
+        row.api = await runWorldApi(ctx, scene, n, steps);
       } catch (err) {
         row.apiError = message(err);
       }
       if (n <= jsMax) {
         try {
-          settleHeap();
-          const world = buildWorld(scene, n);
-          settleHeap();
-          row.js = runJs(world, steps, jsBudget);
+          row.js = runJs(scene, n, steps, jsBudget);
         } catch (err) {
           row.jsError = message(err);
         }

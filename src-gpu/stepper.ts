@@ -12,9 +12,9 @@
  *      chunk of bodies at a time as they are read: MappedState), writing the joints' impulses and
  *      limit states into the b2Joint objects; pullBody() and pullAll() write the bodies' into their
  *      b2Body objects (readBodies(): both at once).
- * Authority: from the first step the GPU's copy of the body motion is the one that counts
- * (GpuWorld.gpuOwnsMotion): the world's bodies keep their old positions and velocities until
- * they are pulled. Motion set through the API (SetTransform, SetLinearVelocity, impulses) replaces the
+ * Authority: once the constructor has uploaded the world, the GPU's copy of the body motion is
+ * the one that counts (GpuWorld.gpuOwnsMotion; so the first step need not walk the whole world
+ * again): the world's bodies keep their old positions and velocities until they are pulled. Motion set through the API (SetTransform, SetLinearVelocity, impulses) replaces the
  * GPU's for that body at the next step (GpuWorld's change log, b2ChangeListener), computed from the
  * state the body had in JavaScript: read back first. Everything else still flows from the world at
  * each step: bodies and fixtures created or destroyed, masses, forces (cleared after each step when
@@ -162,6 +162,7 @@ export class GpuStepper {
     this.transformStaging = new StagingBuffer(ctx, 'stepper transform read-back', 64 * TRANSFORM_READ_BYTES);
     this.transformRead = new GpuTransformRead(ctx);
     this.mirror.sync();
+    this.mirror.gpuOwnsMotion = true;
     this.narrowPhase.seedFromWorld(this.mirror);
     this.invDt0 = world.m_inv_dt0;
   }
@@ -174,7 +175,6 @@ export class GpuStepper {
     const world = this.world;
     this.stateFresh = false;
     this.mirror.sync();
-    this.mirror.gpuOwnsMotion = true;
     // The forces are on the GPU now; b2World::Step clears them after the step.
     if ((world.m_flags & e_clearForces) !== 0) this.mirror.clearForces();
     const solve = dt > 0;

@@ -66,6 +66,39 @@ export class GpuArray {
   }
 }
 
+/**
+ * Memory for the mirror's host tables (shadows, slot maps), which live as long as their world.
+ * V8 counts the bytes of every ArrayBuffer as memory held outside its heap and, when those grow
+ * by 64 MB, marks the whole heap to find buffers to free: attaching a world of 10^6 bodies
+ * (hundreds of MB of tables) cost a mark of its millions of objects, seconds that found nothing
+ * to free. A SharedArrayBuffer's bytes are not counted that way, so the tables take one where the
+ * platform has it (Node; a page that is cross-origin isolated) and an ArrayBuffer elsewhere.
+ */
+export function hostTableStore(bytes: number): ArrayBufferLike {
+  return typeof SharedArrayBuffer === 'function' ? new SharedArrayBuffer(bytes) : new ArrayBuffer(bytes);
+}
+
+/**
+ * Uploads go through this when the shadow is shared memory: Dawn's writeBuffer in Node takes no
+ * view of it.
+ */
+const UPLOAD_STAGE_BYTES = 1 << 22;
+let uploadStage: Uint8Array | null = null;
+
+function writeShadow(queue: GPUQueue, buffer: GPUBuffer, offset: number, words: Uint32Array, byteOffset: number, bytes: number): void {
+  if (!(words.buffer instanceof ArrayBuffer)) {
+    uploadStage ??= new Uint8Array(UPLOAD_STAGE_BYTES);
+    const source = new Uint8Array(words.buffer, byteOffset, bytes);
+    for (let at = 0; at < bytes; at += UPLOAD_STAGE_BYTES) {
+      const part = Math.min(UPLOAD_STAGE_BYTES, bytes - at);
+      uploadStage.set(source.subarray(at, at + part));
+      queue.writeBuffer(buffer, offset + at, uploadStage.buffer, 0, part);
+    }
+    return;
+  }
+  queue.writeBuffer(buffer, offset, words.buffer, byteOffset, bytes);
+}
+
 /** Dirty runs closer than this many elements are uploaded as one write. */
 const MERGE_GAP = 16;
 
@@ -126,10 +159,7 @@ export class MirrorTable {
   }
 
   /**
-   * reserve(n[i]) for each of `tables`, their new shadows carved from one ArrayBuffer: V8 weighs
-   * every large allocation against the memory it holds outside its heap, and one allocation for a
-   * world's tables starts one collection where one per table started several (each a full mark of
-   * the world's objects, seconds at a million bodies).
+   * reserve(n[i]) for each of `tables`, their new shadows carved from one hostTableStore.
    */
   static reserveAll(tables: readonly MirrorTable[], n: readonly number[]): void {
     const grown: MirrorTable[] = [];
@@ -141,7 +171,7 @@ export class MirrorTable {
       bytes += 4 * table.gpu.capacity * table.words + Math.ceil(table.gpu.capacity / 4) * 4;
     });
     if (grown.length === 0) return;
-    const arena = new ArrayBuffer(bytes);
+    const arena = hostTableStore(bytes);
     let at = 0;
     for (const table of grown) {
       const capacity = table.gpu.capacity;
@@ -254,7 +284,7 @@ export class MirrorTable {
     const dirty = this.dirty;
     let elements = 0;
     const write = (from: number, to: number) => {
-      queue.writeBuffer(this.gpu.buffer, from * bytesPerElement, this.u32.buffer, this.u32.byteOffset + from * bytesPerElement, (to - from) * bytesPerElement);
+      writeShadow(queue, this.gpu.buffer, from * bytesPerElement, this.u32, this.u32.byteOffset + from * bytesPerElement, (to - from) * bytesPerElement);
       if (stats) {
         stats.bytes += (to - from) * bytesPerElement;
         stats.writes++;

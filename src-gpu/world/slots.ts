@@ -12,13 +12,17 @@
 
 import type { b2Body } from '../../src/dynamics/b2Body';
 import type { b2Fixture } from '../../src/dynamics/b2Fixture';
+import { hostTableStore } from '../device/buffers';
 
-/** `array`, or a copy of it with its length doubled until `index` fits (new elements `fill`). */
+/**
+ * `array`, or a copy of it with its length doubled until `index` fits (new elements `fill`), in
+ * a hostTableStore.
+ */
 export function withRoom<T extends Int32Array | Uint32Array | Float64Array>(array: T, index: number, fill = 0): T {
   if (index < array.length) return array;
   let size = array.length;
   while (size <= index) size *= 2;
-  const grown = new (array.constructor as new (length: number) => T)(size);
+  const grown = new (array.constructor as new (buffer: ArrayBufferLike) => T)(hostTableStore(size * array.BYTES_PER_ELEMENT));
   if (fill !== 0) grown.fill(fill, array.length);
   grown.set(array);
   return grown;
