@@ -5,7 +5,8 @@
  * In:  a synced GpuWorld (the mirror); the broad phase, the narrow phase and the solver, which own
  *      their buffers and kernels and encode their stages' dispatches when record() asks.
  * Out: one step's pairs, contacts and (with the solver) motion on the GPU; the step's counts
- *      (NarrowPhaseResult) from one read-back of 192 bytes plus timestamps.
+ *      (NarrowPhaseResult) from one read-back of 196 bytes plus timestamps: the broad phase's and
+ *      the narrow phase's state words and the solver's SV.COLOURS_USED (GpuSolver.passColours).
  * Invariants: the stages run in GpuStage order and read only what earlier stages of the same
  *      submission (or earlier steps) wrote; nothing is read back inside a step. Same inputs, same
  *      outputs, bit for bit, on one device.
@@ -93,9 +94,15 @@ export interface GpuPipelineStepOptions {
   solve?: boolean;
 }
 
-/** Byte layout of the read-back: broad-phase state, narrow-phase state, timestamps. */
+/** Byte layout of the read-back: broad-phase state, narrow-phase state, the solver's colours used, timestamps. */
 const NP_STATE_OFFSET = 64;
+const SOLVER_STATE_OFFSET = NP_STATE_OFFSET + 4 * NP_STATE_WORDS;
 const TIMER_OFFSET = 256;
+
+/** SV.COLOURS_USED of a step's read-back, or -1 when the step recorded no solver stages. */
+function coloursUsed(bytes: ArrayBuffer, last: GpuStage): number {
+  return last > GpuStage.Compact ? new Uint32Array(bytes, SOLVER_STATE_OFFSET, 1)[0] : -1;
+}
 
 interface InFlight {
   settled: Promise<NarrowPhaseResult>;
@@ -174,6 +181,7 @@ export class GpuPipeline {
           {
             const io = np.outputs(this.broadState!);
             io.lastSolverCount = this.lastResult === null ? -1 : this.lastResult.solverCount;
+            io.lastColoursUsed = this.lastResult === null ? -1 : this.lastResult.coloursUsed;
             solver!.bindStep(mirror, io);
           }
           pass(STAGE_PASS[stage], solver!.encodeIslands);
@@ -238,10 +246,16 @@ export class GpuPipeline {
     this.timer.reset();
     const { pass, dispatches } = passRecorder(encoder, this.ctx.maxWorkgroupsPerDimension, this.timer);
     this.record(pass, mirror, GpuStage.BroadPhase, last);
-    bp.encodeStateCopy(encoder, rb, 0);
-    np.encodeStateCopy(encoder, rb, NP_STATE_OFFSET);
+    this.encodeStateCopies(encoder, last, rb);
     this.timer.resolveTo(encoder, rb, TIMER_OFFSET);
     return { encoder, dispatches };
+  }
+
+  /** Copies the state words a step's result reads into `rb` (the solver's when it recorded the solver). */
+  private encodeStateCopies(encoder: GPUCommandEncoder, last: GpuStage, rb: GPUBuffer): void {
+    this.broadPhase.encodeStateCopy(encoder, rb, 0);
+    this.narrowPhase.encodeStateCopy(encoder, rb, NP_STATE_OFFSET);
+    if (last > GpuStage.Compact) this.solver!.encodeStateCopy(encoder, rb, SOLVER_STATE_OFFSET);
   }
 
   private async runWaiting(mirror: GpuWorld, last: GpuStage): Promise<NarrowPhaseResult> {
@@ -255,6 +269,7 @@ export class GpuPipeline {
     let gpuTime: Record<string, number> | null = null;
     let state: Uint32Array;
     let counts: Uint32Array;
+    let colours: number;
     const hostMs = { encode: 0, submit: 0, wait: 0 };
     for (;;) {
       const t0 = performance.now();
@@ -271,6 +286,7 @@ export class GpuPipeline {
       dispatches = step.dispatches();
       state = new Uint32Array(bytes, 0, STATE_WORDS);
       counts = new Uint32Array(bytes, NP_STATE_OFFSET, NP_STATE_WORDS);
+      colours = coloursUsed(bytes, last);
       gpuTime = this.timer.parse(bytes, TIMER_OFFSET);
       if ((state[STATE.OVERFLOW] & OVERFLOW_ENTRIES) === 0) break;
       // More sweep entries than room for them: grow, redo everything.
@@ -293,17 +309,17 @@ export class GpuPipeline {
       const { pass } = passRecorder(encoder, this.ctx.maxWorkgroupsPerDimension, null, ' (regrow)');
       if (pairOverflow) pass('sweep+pairs', (rec) => (this.pairs = bp.encodeRegrow(rec, bp.lastUpdateInputs)));
       this.record(pass, mirror, GpuStage.Contacts, last);
-      bp.encodeStateCopy(encoder, rb.buffer, 0);
-      np.encodeStateCopy(encoder, rb.buffer, NP_STATE_OFFSET);
+      this.encodeStateCopies(encoder, last, rb.buffer);
       queue.submit([encoder.finish()]);
-      const bytes = await rb.read(this.ctx, NP_STATE_OFFSET + 4 * NP_STATE_WORDS);
+      const bytes = await rb.read(this.ctx, SOLVER_STATE_OFFSET + 4);
       state = new Uint32Array(bytes, 0, STATE_WORDS);
       counts = new Uint32Array(bytes, NP_STATE_OFFSET, NP_STATE_WORDS);
+      colours = coloursUsed(bytes, last);
     }
     await this.ctx.checkErrors();
     const broad = bp.finishUpdate(state, bpRegrows, dispatches, gpuTime);
     np.endUpdate();
-    const result = this.result(broad, counts, np.contactRegrows - before, dispatches, gpuTime, hostMs, false);
+    const result = this.result(broad, counts, colours, np.contactRegrows - before, dispatches, gpuTime, hostMs, false);
     this.lastResult = result;
     return result;
   }
@@ -355,7 +371,7 @@ export class GpuPipeline {
       await this.ctx.checkErrors();
       np.endUpdate();
       const broad: BroadPhaseResult = { pairCount: n, axis: 0, strips: 0, entries: 0, workItems: 0, regrows: 0, pairCapacity: n, dispatches: 0, gpuTime: null };
-      const result = this.result(broad, counts, 0, dispatches, gpuTime, { encode: 0, submit: 0, wait: 0 }, false);
+      const result = this.result(broad, counts, -1, 0, dispatches, gpuTime, { encode: 0, submit: 0, wait: 0 }, false);
       this.lastResult = result;
       return result;
     } finally {
@@ -366,6 +382,7 @@ export class GpuPipeline {
   private result(
     broad: BroadPhaseResult,
     counts: Uint32Array,
+    coloursUsed: number,
     regrows: number,
     dispatches: number,
     gpuTime: Record<string, number> | null,
@@ -379,6 +396,7 @@ export class GpuPipeline {
       contactCount: counts[NP.CONTACTS],
       previousCount: counts[NP.PREV],
       solverCount: counts[NP.SOLVER],
+      coloursUsed,
       eventCount: counts[NP.EVENTS],
       binCounts,
       contactCapacity: this.narrowPhase.contactCapacity,
@@ -432,6 +450,7 @@ export class GpuPipeline {
       const r = this.result(
         bp.resultOf(state, 0, dispatches, null),
         counts,
+        coloursUsed(bytes, last),
         0,
         dispatches,
         null,
@@ -440,6 +459,8 @@ export class GpuPipeline {
       );
       r.contactCapacity = capacity;
       r.overflowed = r.overflowed || (state[STATE.OVERFLOW] & (OVERFLOW_PAIRS | OVERFLOW_ENTRIES)) !== 0;
+      // The solver skipped the step: its colours say nothing of the next steps'.
+      if (r.overflowed) r.coloursUsed = -1;
       entry.state = state;
       entry.result = r;
       return r;
@@ -452,6 +473,7 @@ export class GpuPipeline {
       : this.result(
           { pairCount: 0, axis: 0, strips: 0, entries: 0, workItems: 0, regrows: 0, pairCapacity: bp.pairCapacity, dispatches, gpuTime: null },
           new Uint32Array(NP_STATE_WORDS),
+          -1,
           0,
           dispatches,
           null,

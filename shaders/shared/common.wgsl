@@ -232,7 +232,7 @@ const SV_COLOUR_CHANGED: u32 = 34u;    // 1 when an item's dynamic bodies differ
 const SV_COLOURED_ITEMS: u32 = 35u;    // SV_ITEMS of the last colouring
 const SV_COLOURED_JOINTS: u32 = 36u;   // SV_JOINTS of the last colouring
 const SV_COLOUR_SORT_COUNT: u32 = 37u; // items the colour sort sorts: SV_ITEMS when colouring again, else 0
-const SV_COLOURS_USED: u32 = 38u;      // colours below COLOUR_CAP up to the last non-empty one (the fused passes stop there)
+const SV_COLOURS_USED: u32 = 38u;      // colours below COLOUR_CAP up to the last non-empty one (the fused and tail passes stop there; read back)
 
 // Colours of the graph colouring; colour COLOUR_CAP is the overflow set (solved in order by one invocation).
 const COLOUR_CAP: u32 = 24u;
@@ -241,8 +241,8 @@ const UNCOLOURED: u32 = 0xffffffffu;
 // Indirect-dispatch triples of the solver (u32 word offsets in its indirect buffer).
 const SV_ARGS_CONTACTS: u32 = 0u;      // one invocation per solver contact
 const SV_ARGS_TILES: u32 = 3u;         // the colour sort, one workgroup per 1024 items
-const SV_ARGS_COLOURS: u32 = 6u;       // + 3 * colour: the velocity passes over one colour (COLOUR_CAP + 1 triples)
-const SV_ARGS_POSITION: u32 = 81u;     // + 3 * colour: the position passes (zeroed by the early exit)
+const SV_ARGS_COLOURS: u32 = 6u;       // + 3 * colour: the warm-start and velocity passes over one colour; + 3 * COLOUR_CAP: the tail pass
+const SV_ARGS_POSITION: u32 = 81u;     // + 3 * colour: the position passes, then the tail's (all zeroed by the early exit)
 const SV_ARGS_ITEMS: u32 = 156u;       // one invocation per item (the comparison with the last colouring)
 const SV_ARGS_ROUNDS: u32 = 159u;      // one invocation per item when colouring again, else none (the rounds)
 

@@ -35,12 +35,13 @@ struct SolverParams {
   pad1: u32,
 }
 
-// The pass over one colour: `colour`, and `serial` for the overflow set (one invocation, in order).
+// A colour: the one a per-colour pass (`main`) solves, the first one a tail pass (`tail`) walks,
+// or a round of the colouring (colour.wgsl).
 struct ColourParams {
   colour: u32,
-  serial: u32,
   pad0: u32,
   pad1: u32,
+  pad2: u32,
 }
 
 // b2Settings.h, as float32.

@@ -27,8 +27,9 @@
 //      `rounds` (one workgroup): every round of `mark` and `pick` with barriers, for a small world.
 //      `offsets` (one workgroup, every step: the early exit zeroes the position passes' sizes):
 //      SV_COLOUR_START (first entry of each colour in the sorted keys), the indirect size of each
-//      colour's warm-start, velocity and position passes (one invocation for the overflow set,
-//      which is solved in order), SV_COLOURS_USED (the colours up to the last non-empty one).
+//      colour's warm-start, velocity and position passes, and one workgroup for the tail passes
+//      (the colours the host records no pass of their own for, then the overflow set, which is
+//      solved in order), SV_COLOURS_USED (the colours up to the last non-empty one).
 // Invariants: bodyMark holds two words per body (round parity); round r posts to parity r & 1
 //      and clears parity (r - 1) & 1 for the items that posted there in round r - 1, so both
 //      are zero again after the last round, and colours depend on nothing but the items' dynamic
@@ -286,7 +287,8 @@ fn offsets(@builtin(local_invocation_index) lid: u32) {
   let end = colour_start(lid + 1u, count);
   var size = dispatch_size(end - start, WORKGROUP_SIZE);
   if (lid == COLOUR_CAP) {
-    size = vec3<u32>(select(0u, 1u, end > start), 1u, 1u);
+    // The tail pass: whether it has work depends on where the host's per-colour passes stop.
+    size = vec3<u32>(1u, 1u, 1u);
   } else if (end > start) {
     atomicMax(&solverState[SV_COLOURS_USED], lid + 1u);
   }

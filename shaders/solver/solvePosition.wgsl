@@ -1,27 +1,31 @@
-// solvePosition.wgsl: GpuStage.Position, one position iteration over one colour: its contacts'
-// b2ContactSolver::SolvePositionConstraints (b2PositionSolverManifold, Baumgarte with
-// b2_linearSlop and b2_maxLinearCorrection), then its joints' b2*Joint::SolvePositionConstraints
-// (solveJointsCommon.wgsl); and 2.2.1's early exit as GPU work (`check`).
+// solvePosition.wgsl: GpuStage.Position, one position iteration over one colour (or a run of them
+// in one workgroup): its contacts' b2ContactSolver::SolvePositionConstraints
+// (b2PositionSolverManifold, Baumgarte with b2_linearSlop and b2_maxLinearCorrection), then its
+// joints' b2*Joint::SolvePositionConstraints (solveJointsCommon.wgsl); and 2.2.1's early exit as
+// GPU work (`check`).
 //
-// In:  colour (the pass's colour, serial for the overflow set), solverState (SV_COLOUR_START,
-//      SV_JOINTS, SV_MIN_SEPARATION), colourKeys (items: joint slots below SV_JOINTS, then solver
-//      contacts), contactBodies, constraints (masses, radii, local geometry and centres, B's cell
-//      relative to A's), jointBodies, jointParams, jointConstraints, bodySweep (c, a after
-//      integratePositions.wgsl).
-// Out: `main`: bodySweep c, a of the dynamic bodies of the colour's items; the minimum
-//      separation of the iteration (atomicMin of sortable keys: order-independent);
-//      SV_JOINT_ERROR when a joint is not within b2_linearSlop / b2_angularSlop.
-//      `check` (one invocation, after each iteration's colours): unless SV_POSITION_DONE, counts
+// In:  colour (`main`: the pass's colour; `tail`: its first colour), solverState
+//      (SV_COLOUR_START, SV_JOINTS, SV_COLOURS_USED, SV_MIN_SEPARATION), colourKeys (items: joint
+//      slots below SV_JOINTS, then solver contacts), contactBodies, constraints (masses, radii,
+//      local geometry and centres, B's cell relative to A's), jointBodies, jointParams,
+//      jointConstraints, bodySweep (c, a after integratePositions.wgsl).
+// Out: `main`: bodySweep c, a of the dynamic bodies of the colour's items (one colour below
+//      COLOUR_CAP); the minimum separation of the iteration (atomicMin of sortable keys:
+//      order-independent); SV_JOINT_ERROR when a joint is not within b2_linearSlop /
+//      b2_angularSlop. `tail` (one workgroup, after the iteration's passes of `main`): the same
+//      for the colours from its first up to SV_COLOURS_USED, with barriers between them, then the
+//      overflow set.
+//      `check` (one invocation, after each iteration's passes): unless SV_POSITION_DONE, counts
 //      the iteration in SV_POSITION_ITERATIONS; when the minimum separation is >= -3
 //      b2_linearSlop (2.2.1's contactsOkay) and no joint set SV_JOINT_ERROR (jointsOkay), sets
-//      SV_POSITION_DONE and zeroes the indirect sizes of every colour's position pass, so the
-//      remaining iterations dispatch no workgroups; resets the minimum to 0 (b2ContactSolver
-//      starts each iteration at 0) and SV_JOINT_ERROR. colour.wgsl's `offsets` restores the
-//      sizes each step.
-//      `fused` (one workgroup, for a small world): every iteration of `main` and `check` in one
-//      dispatch, the colours up to SV_COLOURS_USED, with barriers; it stops at the early exit (and
-//      leaves the position passes' sizes, which only the per-colour passes read: so it binds no
-//      more than the 8 storage buffers every browser gives a stage).
+//      SV_POSITION_DONE and zeroes the indirect sizes of every position pass (the tail's
+//      included), so the remaining iterations dispatch no workgroups; resets the minimum to 0
+//      (b2ContactSolver starts each iteration at 0) and SV_JOINT_ERROR. colour.wgsl's `offsets`
+//      restores the sizes each step.
+//      `fused` (one workgroup, for a small world): every iteration of the tail's walk from colour
+//      0 and `check` in one dispatch; it stops at the early exit (and leaves the position passes'
+//      sizes, which only the per-colour and tail passes read: so it binds no more than the 8
+//      storage buffers every browser gives a stage).
 // Invariants: one writer per dynamic body per pass (the colouring); no read-back. 2.2.1 solves
 //      all of an island's contacts, then all its joints, per iteration; here each colour's
 //      contacts, then its joints (the same within a colour, whose items share no dynamic body;
@@ -177,21 +181,46 @@ fn solve_serial(start: u32, end: u32, joints: u32) {
   report(minSeparation, jointsOkay);
 }
 
+// One entry per invocation: the grid covers the colour.
 @compute @workgroup_size(256)
 fn main(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: vec3<u32>,
         @builtin(local_invocation_index) lid: u32) {
   let start = atomicLoad(&solverState[SV_COLOUR_START + colour.colour]);
   let end = atomicLoad(&solverState[SV_COLOUR_START + colour.colour + 1u]);
-  let joints = atomicLoad(&solverState[SV_JOINTS]);
   let t = group_index(wid, nwg) * WORKGROUP_SIZE + lid;
-  if (colour.serial != 0u) {
-    if (t == 0u) {
-      solve_serial(start, end, joints);
-    }
-    return;
+  solve_entries(start + t, min(end, start + t + 1u), 1u, atomicLoad(&solverState[SV_JOINTS]));
+}
+
+var<workgroup> coloursUsed: u32;
+
+// SV_COLOURS_USED, uniform across the workgroup (the walk's loop holds barriers).
+fn colours_used(lid: u32) -> u32 {
+  if (lid == 0u) {
+    coloursUsed = atomicLoad(&solverState[SV_COLOURS_USED]);
   }
-  // One entry per invocation: the grid covers the colour.
-  solve_entries(start + t, min(end, start + t + 1u), 1u, joints);
+  return workgroupUniformLoad(&coloursUsed);
+}
+
+// One position iteration of colours first .. colours - 1 by one workgroup, in order, a storage
+// barrier after each (the next colour reads the positions it wrote), then the overflow set in one
+// invocation: the items and order of the passes of `main`, so the same bits.
+fn solve_from(first: u32, colours: u32, lid: u32) {
+  let joints = atomicLoad(&solverState[SV_JOINTS]);
+  for (var c = first; c < colours; c = c + 1u) {
+    let start = atomicLoad(&solverState[SV_COLOUR_START + c]);
+    solve_entries(start + lid, atomicLoad(&solverState[SV_COLOUR_START + c + 1u]), WORKGROUP_SIZE, joints);
+    storageBarrier();
+  }
+  if (lid == 0u) {
+    solve_serial(atomicLoad(&solverState[SV_COLOUR_START + COLOUR_CAP]), atomicLoad(&solverState[SV_COLOUR_START + COLOUR_CAP + 1u]), joints);
+  }
+}
+
+// One iteration of the colours from `colour` on (those the host records no pass of `main` for)
+// and the overflow set; `check` follows it.
+@compute @workgroup_size(256)
+fn tail(@builtin(local_invocation_index) lid: u32) {
+  solve_from(colour.colour, colours_used(lid), lid);
 }
 
 // 2.2.1's early exit after an iteration; true when the iterations are done.
@@ -211,8 +240,9 @@ fn check_iteration() -> bool {
   return false;
 }
 
-// The exit between the per-colour passes: once done, the position passes' sizes are zeroed so
-// that the remaining iterations dispatch no workgroups.
+// The exit after an iteration's passes (per colour, then the tail): once done, every position
+// pass's size (the tail's at COLOUR_CAP included) is zeroed, so that the remaining iterations
+// dispatch no workgroups.
 @compute @workgroup_size(1)
 fn check() {
   if (atomicLoad(&solverState[SV_POSITION_DONE]) == 0u && check_iteration()) {
@@ -224,29 +254,15 @@ fn check() {
   }
 }
 
-var<workgroup> coloursUsed: u32;
 var<workgroup> done: u32;
 
-// A small world's position iterations in one dispatch of one workgroup: per iteration the colours
-// in order, a storage barrier after each (the next colour reads the positions it wrote), the
-// overflow set in one invocation, then `check`'s early exit: the items and order of the passes of
-// `main` and `check`, so the same bits and the same iteration count.
+// A small world's position iterations in one dispatch of one workgroup: per iteration the walk of
+// `tail` from colour 0, then `check`'s early exit, so the same bits and the same iteration count.
 @compute @workgroup_size(256)
 fn fused(@builtin(local_invocation_index) lid: u32) {
-  if (lid == 0u) {
-    coloursUsed = atomicLoad(&solverState[SV_COLOURS_USED]);
-  }
-  let colours = workgroupUniformLoad(&coloursUsed);
-  let joints = atomicLoad(&solverState[SV_JOINTS]);
+  let colours = colours_used(lid);
   for (var it = 0u; it < params.positionIterations; it = it + 1u) {
-    for (var c = 0u; c < colours; c = c + 1u) {
-      let start = atomicLoad(&solverState[SV_COLOUR_START + c]);
-      solve_entries(start + lid, atomicLoad(&solverState[SV_COLOUR_START + c + 1u]), WORKGROUP_SIZE, joints);
-      storageBarrier();
-    }
-    if (lid == 0u) {
-      solve_serial(atomicLoad(&solverState[SV_COLOUR_START + COLOUR_CAP]), atomicLoad(&solverState[SV_COLOUR_START + COLOUR_CAP + 1u]), joints);
-    }
+    solve_from(0u, colours, lid);
     storageBarrier();
     if (lid == 0u) {
       done = select(0u, 1u, check_iteration());

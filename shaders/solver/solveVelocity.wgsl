@@ -1,20 +1,23 @@
-// solveVelocity.wgsl: GpuStage.Velocity, one velocity iteration over one colour: its joints'
-// b2*Joint::SolveVelocityConstraints (solveJointsCommon.wgsl), and its contacts'
-// b2ContactSolver::SolveVelocityConstraints: friction first (clamped by friction x the normal
-// impulse), then the normal impulses: one point directly, two points with the block solver
-// (its four cases: both points active, only the first, only the second, none).
+// solveVelocity.wgsl: GpuStage.Velocity, one velocity iteration over one colour (or a run of them
+// in one workgroup): its joints' b2*Joint::SolveVelocityConstraints (solveJointsCommon.wgsl), and
+// its contacts' b2ContactSolver::SolveVelocityConstraints: friction first (clamped by friction x
+// the normal impulse), then the normal impulses: one point directly, two points with the block
+// solver (its four cases: both points active, only the first, only the second, none).
 //
-// In:  colour (the pass's colour, serial for the overflow set), solverState (SV_COLOUR_START,
-//      SV_JOINTS), colourKeys (items: joint slots below SV_JOINTS, then solver contacts),
-//      contactBodies, constraints (prepareContacts.wgsl), jointBodies, jointParams (motor speeds,
-//      limits, forces as set this step), jointConstraints (solveJoints.wgsl), bodyVel.
+// In:  colour (`main`: the pass's colour; `tail`: its first colour), solverState
+//      (SV_COLOUR_START, SV_JOINTS, SV_COLOURS_USED), colourKeys (items: joint slots below
+//      SV_JOINTS, then solver contacts), contactBodies, constraints (prepareContacts.wgsl),
+//      jointBodies, jointParams (motor speeds, limits, forces as set this step), jointConstraints
+//      (solveJoints.wgsl), bodyVel.
 // Out: bodyVel of the dynamic bodies of the colour's items; constraints rows 4 (accumulated
 //      normal and tangent impulses); jointConstraints rows 2 (accumulated joint impulses).
 // Invariants: the items of a colour share no dynamic body (one writer per body per pass); the
 //      overflow set runs in one invocation, its joints, then its contacts, in item order, as
 //      b2Island::Solve orders joints before contacts; float32 in the engine's order.
-//      `fused` (one workgroup, for a small world) runs every iteration's passes in one dispatch,
-//      the colours up to SV_COLOURS_USED, with barriers between them.
+//      `main` solves one colour below COLOUR_CAP. `tail` (one workgroup, after the iteration's
+//      passes of `main`) walks the colours from its first up to SV_COLOURS_USED with barriers
+//      between them, then the overflow set; `fused` (for a small world) runs that walk from
+//      colour 0 for every iteration in one dispatch.
 
 @group(0) @binding(0) var<uniform> colour: ColourParams;
 @group(0) @binding(1) var<storage, read> solverState: array<u32>;
@@ -187,47 +190,55 @@ fn main(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: vec
         @builtin(local_invocation_index) lid: u32) {
   let start = solverState[SV_COLOUR_START + colour.colour];
   let end = solverState[SV_COLOUR_START + colour.colour + 1u];
-  let joints = solverState[SV_JOINTS];
   let t = group_index(wid, nwg) * WORKGROUP_SIZE + lid;
-  if (colour.serial != 0u) {
-    if (t == 0u) {
-      for (var e = start; e < end; e = e + 1u) {
-        solve_item(colourKeys[e].y, joints);
-      }
-    }
-    return;
-  }
   if (start + t < end) {
-    solve_item(colourKeys[start + t].y, joints);
+    solve_item(colourKeys[start + t].y, solverState[SV_JOINTS]);
   }
 }
 
 var<workgroup> coloursUsed: u32;
 
-// A small world's velocity iterations in one dispatch of one workgroup: per iteration the colours
-// in order, a storage barrier after each (the next colour reads the velocities it wrote), then the
-// overflow set in one invocation: the items and order of the passes of `main`, so the same bits.
-@compute @workgroup_size(256)
-fn fused(@builtin(local_invocation_index) lid: u32) {
+// SV_COLOURS_USED, uniform across the workgroup (the walk's loop holds barriers).
+fn colours_used(lid: u32) -> u32 {
   if (lid == 0u) {
     coloursUsed = solverState[SV_COLOURS_USED];
   }
-  let colours = workgroupUniformLoad(&coloursUsed);
+  return workgroupUniformLoad(&coloursUsed);
+}
+
+// One velocity iteration of colours first .. colours - 1 by one workgroup, in order, a storage
+// barrier after each (the next colour reads the velocities it wrote), then the overflow set in one
+// invocation: the items and order of the passes of `main`, so the same bits.
+fn solve_from(first: u32, colours: u32, lid: u32) {
   let joints = solverState[SV_JOINTS];
-  for (var it = 0u; it < params.velocityIterations; it = it + 1u) {
-    for (var c = 0u; c < colours; c = c + 1u) {
-      let end = solverState[SV_COLOUR_START + c + 1u];
-      for (var e = solverState[SV_COLOUR_START + c] + lid; e < end; e = e + WORKGROUP_SIZE) {
-        solve_item(colourKeys[e].y, joints);
-      }
-      storageBarrier();
-    }
-    if (lid == 0u) {
-      let end = solverState[SV_COLOUR_START + COLOUR_CAP + 1u];
-      for (var e = solverState[SV_COLOUR_START + COLOUR_CAP]; e < end; e = e + 1u) {
-        solve_item(colourKeys[e].y, joints);
-      }
+  for (var c = first; c < colours; c = c + 1u) {
+    let end = solverState[SV_COLOUR_START + c + 1u];
+    for (var e = solverState[SV_COLOUR_START + c] + lid; e < end; e = e + WORKGROUP_SIZE) {
+      solve_item(colourKeys[e].y, joints);
     }
     storageBarrier();
   }
+  if (lid == 0u) {
+    let end = solverState[SV_COLOUR_START + COLOUR_CAP + 1u];
+    for (var e = solverState[SV_COLOUR_START + COLOUR_CAP]; e < end; e = e + 1u) {
+      solve_item(colourKeys[e].y, joints);
+    }
+  }
+}
+
+// A small world's velocity iterations in one dispatch of one workgroup.
+@compute @workgroup_size(256)
+fn fused(@builtin(local_invocation_index) lid: u32) {
+  let colours = colours_used(lid);
+  for (var it = 0u; it < params.velocityIterations; it = it + 1u) {
+    solve_from(0u, colours, lid);
+    storageBarrier();
+  }
+}
+
+// One iteration of the colours from `colour` on (those the host records no pass of `main` for)
+// and the overflow set.
+@compute @workgroup_size(256)
+fn tail(@builtin(local_invocation_index) lid: u32) {
+  solve_from(colour.colour, colours_used(lid), lid);
 }

@@ -1,19 +1,22 @@
-// warmStart.wgsl: warm start (in GpuStage.Velocity) over one colour: b2ContactSolver::WarmStart for
-// its contacts (impulses already scaled by dtRatio, prepareContacts.wgsl) and the warm start of
-// b2*Joint::InitVelocityConstraints for its joints (solveJointsCommon.wgsl; a mouse joint's 0.98
-// angular damping included, so this pass runs with warm starting off too when there are joints).
+// warmStart.wgsl: warm start (in GpuStage.Velocity) over one colour, or a run of them in one
+// workgroup: b2ContactSolver::WarmStart for its contacts (impulses already scaled by dtRatio,
+// prepareContacts.wgsl) and the warm start of b2*Joint::InitVelocityConstraints for its joints
+// (solveJointsCommon.wgsl; a mouse joint's 0.98 angular damping included, so this pass runs with
+// warm starting off too when there are joints).
 //
-// In:  colour (the pass's colour, serial for the overflow set), solverState (SV_COLOUR_START,
-//      SV_JOINTS), colourKeys (sorted (colour, item): items below SV_JOINTS are joint slots, the
-//      rest solver contacts k + SV_JOINTS), contactBodies, constraints (normal, rA, rB, impulses,
-//      masses), jointBodies, jointConstraints, bodyVel.
+// In:  colour (`main`: the pass's colour; `tail`: its first colour), solverState (SV_COLOUR_START,
+//      SV_JOINTS, SV_COLOURS_USED), colourKeys (sorted (colour, item): items below SV_JOINTS are
+//      joint slots, the rest solver contacts k + SV_JOINTS), contactBodies, constraints (normal,
+//      rA, rB, impulses, masses), jointBodies, jointConstraints, bodyVel.
 // Out: bodyVel of the dynamic bodies of the colour's items.
 // Invariants: the items of a colour share no dynamic body, so each body has one writer per pass;
 //      the overflow set runs in one invocation, its joints first, then its contacts, in item
 //      order. 2.2.1 warm-starts all contacts, then the joints: the same sums but for the mouse
 //      joint's damping, which here sees the contacts' warm start of earlier colours only.
-//      `fused` (one workgroup, for a small world) runs every colour's pass in one dispatch, the
-//      colours up to SV_COLOURS_USED, with barriers between them.
+//      `main` solves one colour below COLOUR_CAP. `tail` (one workgroup, after the host's passes
+//      of `main`) walks the colours from its first up to SV_COLOURS_USED with barriers between
+//      them, then the overflow set; `fused` (for a small world) is the same walk from colour 0:
+//      every colour's pass in one dispatch.
 
 @group(0) @binding(0) var<uniform> colour: ColourParams;
 @group(0) @binding(1) var<storage, read> solverState: array<u32>;
@@ -85,34 +88,24 @@ fn main(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: vec
         @builtin(local_invocation_index) lid: u32) {
   let start = solverState[SV_COLOUR_START + colour.colour];
   let end = solverState[SV_COLOUR_START + colour.colour + 1u];
-  let joints = solverState[SV_JOINTS];
   let t = group_index(wid, nwg) * WORKGROUP_SIZE + lid;
-  if (colour.serial != 0u) {
-    if (t == 0u) {
-      for (var e = start; e < end; e = e + 1u) {
-        warm_start_item(colourKeys[e].y, joints);
-      }
-    }
-    return;
-  }
   if (start + t < end) {
-    warm_start_item(colourKeys[start + t].y, joints);
+    warm_start_item(colourKeys[start + t].y, solverState[SV_JOINTS]);
   }
 }
 
 var<workgroup> coloursUsed: u32;
 
-// A small world's warm start in one dispatch of one workgroup: the colours in order, a storage
-// barrier after each (the next colour reads the velocities it wrote), then the overflow set in
-// one invocation: the items and order of the passes of `main`, so the same bits.
-@compute @workgroup_size(256)
-fn fused(@builtin(local_invocation_index) lid: u32) {
+// The warm start of colours first .. SV_COLOURS_USED - 1 by one workgroup, in order, a storage
+// barrier after each (the next colour reads the velocities it wrote), then the overflow set in one
+// invocation: the items and order of the passes of `main`, so the same bits.
+fn warm_start_from(first: u32, lid: u32) {
   if (lid == 0u) {
     coloursUsed = solverState[SV_COLOURS_USED];
   }
   let colours = workgroupUniformLoad(&coloursUsed);
   let joints = solverState[SV_JOINTS];
-  for (var c = 0u; c < colours; c = c + 1u) {
+  for (var c = first; c < colours; c = c + 1u) {
     let end = solverState[SV_COLOUR_START + c + 1u];
     for (var e = solverState[SV_COLOUR_START + c] + lid; e < end; e = e + WORKGROUP_SIZE) {
       warm_start_item(colourKeys[e].y, joints);
@@ -125,4 +118,16 @@ fn fused(@builtin(local_invocation_index) lid: u32) {
       warm_start_item(colourKeys[e].y, joints);
     }
   }
+}
+
+// A small world's warm start in one dispatch of one workgroup.
+@compute @workgroup_size(256)
+fn fused(@builtin(local_invocation_index) lid: u32) {
+  warm_start_from(0u, lid);
+}
+
+// The colours from `colour` on (those the host records no pass of `main` for) and the overflow set.
+@compute @workgroup_size(256)
+fn tail(@builtin(local_invocation_index) lid: u32) {
+  warm_start_from(colour.colour, lid);
 }

@@ -317,7 +317,17 @@ export const FUSED_SOLVER_ITEMS = 6144;
 export const COLOUR_CAP = 24;
 export const UNCOLOURED = 0xffffffff;
 
-/** Word offsets of the solver's indirect triples (shaders/shared/common.wgsl SV_ARGS_*). */
+/**
+ * Colours past the last one the latest read-back step used that still get a dispatch of their
+ * own in each solver pass (the rest go to the tail pass, one workgroup): a scene whose colouring
+ * grows by a colour or two keeps its parallel passes, and an empty colour's dispatch is cheap.
+ */
+export const PASS_COLOUR_MARGIN = 2;
+
+/**
+ * Word offsets of the solver's indirect triples (shaders/shared/common.wgsl SV_ARGS_*). COLOURS
+ * and POSITION hold one triple per colour, then at COLOUR_CAP the tail pass's (one workgroup).
+ */
 export const SV_ARGS = {
   CONTACTS: 0,
   TILES: 3,

@@ -68,6 +68,11 @@ export interface NarrowPhaseResult {
   previousCount: number;
   /** Touching non-sensor contacts (the solver list's length). */
   solverCount: number;
+  /**
+   * Colours the step's solver used (SV.COLOURS_USED: below COLOUR_CAP, up to the last non-empty
+   * one); -1 when the step did not solve or overflowed.
+   */
+  coloursUsed: number;
   /** Begin/end events. */
   eventCount: number;
   /** Contacts per bin (layout.ts BIN order). */
@@ -212,6 +217,7 @@ export class GpuNarrowPhase {
       manifolds: placeholder,
       contactCapacity: 0,
       lastSolverCount: -1,
+      lastColoursUsed: -1,
     };
   }
 

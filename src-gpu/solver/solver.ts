@@ -11,13 +11,14 @@
  *   colour              Jones-Plassmann colouring of joints and contacts together, colour
  *                       lists (+ overflow set); the last one reused while every item has
  *                       the same dynamic bodies                                          colour.ts
- *   warm start          per colour: its joints' and contacts' impulses x dtRatio          warmStart.ts
- *   velocity            iterations: per colour, its joints, then its contacts (friction,
- *                       then normal: block solver)                                       solveVelocity.ts
+ *   warm start          per colour below passColours, then the tail pass: its joints' and
+ *                       contacts' impulses x dtRatio                                     warmStart.ts
+ *   velocity            iterations: per colour below passColours, then the tail pass, its
+ *                       joints, then its contacts (friction, then normal: block solver)  solveVelocity.ts
  *   store impulses      into the manifolds' word 3 for the next step                     storeImpulses.ts
  *   integrate positions with b2_maxTranslation / b2_maxRotation                          integratePositions.ts
- *   position            iterations: per colour, its contacts, then its joints; early exit
- *                       as zeroed indirect sizes                                         solvePosition.ts
+ *   position            iterations: per colour below passColours, then the tail pass, its
+ *                       contacts, then its joints; early exit as zeroed indirect sizes   solvePosition.ts
  *   synchronize         bodyXf from the sweep, cells                                     integratePositions.ts
  *   sleep               sleep timers, islands at rest put to sleep                       islands.ts
  *   time of impact      continuous physics on: b2TimeOfImpact of the contacts 2.2.1 tests
@@ -32,10 +33,16 @@
  * contacts in a colour's passes are solved in parallel: a colour's items share no dynamic body.
  * Results are the same bits on every run on one device (no float atomics; the colouring depends
  * only on the joints and contacts; the overflow set is solved in item order).
+ * Passes per colour: the warm start and each velocity and position iteration dispatch one pass
+ * per colour for the first passColours colours (those the latest step read back used, +
+ * PASS_COLOUR_MARGIN; all COLOUR_CAP before one is back), then one tail pass: one workgroup walks
+ * the colours left with barriers between them, then the overflow set. The same items in the same
+ * order, so the same bits whatever passColours is (colours past it only run slower, until a
+ * read-back raises it): passColours + 1 dispatches per pass (COLOUR_CAP + 1 when all have one).
  * A small world (FUSED_SOLVER_ITEMS) runs the colouring rounds, the warm start and the velocity
- * and position iterations each in one dispatch of one workgroup that walks the colours with
- * barriers: the same items in the same order as the per-colour passes, so the same bits, in four
- * dispatches instead of about 350. 2.2.1 solves an
+ * and position iterations each in one dispatch of one workgroup that walks all the colours as the
+ * tail passes walk theirs: the same items in the same order, so the same bits, in four dispatches
+ * instead of 2 COLOUR_CAP + 1 rounds and the passes per colour. 2.2.1 solves an
  * island's joints, then its contacts, each velocity iteration (contacts, then joints, each
  * position iteration); the GPU analogue is per colour, so across colours the Gauss-Seidel order
  * differs from the engine's.
@@ -66,7 +73,17 @@ import { IslandsStage } from './islands';
 import { TimeOfImpactStage } from './timeOfImpact';
 import type { TimeOfImpactInputs } from './timeOfImpact';
 import type { IslandInputs } from './islands';
-import { COLOUR_CAP, CONSTRAINT_VEC4, FUSED_SOLVER_ITEMS, ISLAND_WORDS, SV, SV_INDIRECT_WORDS, SV_STATE_WORDS, USAGE } from '../device/layout';
+import {
+  COLOUR_CAP,
+  CONSTRAINT_VEC4,
+  FUSED_SOLVER_ITEMS,
+  ISLAND_WORDS,
+  PASS_COLOUR_MARGIN,
+  SV,
+  SV_INDIRECT_WORDS,
+  SV_STATE_WORDS,
+  USAGE,
+} from '../device/layout';
 import type { GpuWorld } from '../world/world';
 
 /** The label of the read-backs for tests and tools (readBuffer). */
@@ -95,6 +112,8 @@ export interface SolverInputs {
   contactCapacity: number;
   /** Solver contacts of the latest step whose counts are back; -1 before the first. */
   lastSolverCount: number;
+  /** SV.COLOURS_USED of the latest step whose counts are back; -1 before the first, or when it did not solve. */
+  lastColoursUsed: number;
 }
 
 export interface GpuSolverOptions {
@@ -105,6 +124,13 @@ export interface GpuSolverOptions {
    * the joint slots) are at most FUSED_SOLVER_ITEMS.
    */
   fused?: boolean;
+  /**
+   * Colours with a pass of their own in the warm start and each velocity and position iteration
+   * when not fused (0 to COLOUR_CAP); the tail pass solves the rest, so any value gives the same
+   * bits. Default: the colours the latest step read back used + PASS_COLOUR_MARGIN, COLOUR_CAP
+   * before one is back.
+   */
+  passColours?: number;
 }
 
 export interface SolverState {
@@ -118,6 +144,8 @@ export interface SolverState {
   colourStart: number[];
   /** The items were coloured this step (false: the last colouring was reused, colour.ts). */
   recoloured: boolean;
+  /** Colours below COLOUR_CAP up to the last non-empty one (SV.COLOURS_USED). */
+  coloursUsed: number;
 }
 
 /**
@@ -133,8 +161,10 @@ export class GpuSolver {
   readonly indirect: GPUBuffer;
   private readonly params: Uniform;
   private readonly fusedOption: boolean | undefined;
+  private readonly passColoursOption: number | undefined;
   private lastSolverCount = -1;
-  /** ColourParams per colour / round: colour c, serial for the overflow set. */
+  private lastColoursUsed = -1;
+  /** ColourParams per colour / round: colour c. */
   private readonly colourParams: Uniform[] = [];
   private readonly contactBodiesArray: GpuArray;
   private readonly constraintArray: GpuArray;
@@ -161,13 +191,15 @@ export class GpuSolver {
   constructor(ctx: GpuContext, options: GpuSolverOptions = {}) {
     this.ctx = ctx;
     this.fusedOption = options.fused;
+    if (options.passColours !== undefined && !(Number.isInteger(options.passColours) && options.passColours >= 0 && options.passColours <= COLOUR_CAP))
+      throw new RangeError(`GpuSolverOptions.passColours: an integer from 0 to ${COLOUR_CAP}, got ${options.passColours}`);
+    this.passColoursOption = options.passColours;
     this.state = ctx.createBuffer('solver state', 4 * SV_STATE_WORDS, USAGE.STORAGE | USAGE.COPY_SRC | USAGE.COPY_DST);
     this.indirect = ctx.createBuffer('solver indirect', 4 * SV_INDIRECT_WORDS, USAGE.STORAGE | USAGE.INDIRECT | USAGE.COPY_DST);
     this.params = new Uniform(ctx, 'solver params', 12);
     for (let c = 0; c <= COLOUR_CAP; ++c) {
       const u = new Uniform(ctx, `solver colour ${c}`, 4);
       u.u32[0] = c;
-      u.u32[1] = c === COLOUR_CAP ? 1 : 0;
       u.upload();
       this.colourParams.push(u);
     }
@@ -295,6 +327,7 @@ export class GpuSolver {
     s.solverList = io.solverList;
     s.contactCapacity = io.contactCapacity;
     this.lastSolverCount = io.lastSolverCount;
+    this.lastColoursUsed = io.lastColoursUsed;
     this.toiIo.npState = io.npState;
     this.toiIo.contactRefs = io.contactRefs;
   }
@@ -333,6 +366,16 @@ export class GpuSolver {
     return contacts + mirror.jointSlotCount <= FUSED_SOLVER_ITEMS;
   }
 
+  /**
+   * Colours the step being recorded gives a pass of their own when not fused
+   * (GpuSolverOptions.passColours); the tail pass walks the others. Any value gives the same bits,
+   * so it may follow a count read back a few steps late.
+   */
+  get passColours(): number {
+    if (this.passColoursOption !== undefined) return this.passColoursOption;
+    return this.lastColoursUsed < 0 ? COLOUR_CAP : Math.min(COLOUR_CAP, this.lastColoursUsed + PASS_COLOUR_MARGIN);
+  }
+
   /** GpuStage.Colour. */
   readonly encodeColour = (rec: Recorder): void => this.colouring.encode(rec, this.colourIo, this.fused);
 
@@ -343,10 +386,10 @@ export class GpuSolver {
     const fused = this.fused;
     if (this.step.warmStarting || mirror.jointSlotCount > 0) {
       if (fused) this.warmStart.encodeFused(rec, this.passIo, mirror.bodyVel.buffer);
-      else this.warmStart.encode(rec, this.passIo, mirror.bodyVel.buffer);
+      else this.warmStart.encode(rec, this.passIo, mirror.bodyVel.buffer, this.passColours);
     }
     if (fused) this.solveVelocity.encodeFused(rec, this.passIo, mirror.bodyVel.buffer);
-    else this.solveVelocity.encode(rec, this.passIo, mirror.bodyVel.buffer, this.step.velocityIterations);
+    else this.solveVelocity.encode(rec, this.passIo, mirror.bodyVel.buffer, this.step.velocityIterations, this.passColours);
     this.storeImpulses.encode(rec, this.state, this.indirect, this.contactBodiesArray.buffer, this.constraintArray.buffer, this.prepareIo.manifolds);
     this.joints.encodeStore(rec, this.params.buffer, this.state, mirror);
     this.integratePositions.encodeIntegrate(rec, this.params.buffer, this.state, mirror);
@@ -356,9 +399,14 @@ export class GpuSolver {
   readonly encodePosition = (rec: Recorder): void => {
     const mirror = this.mirror!;
     if (this.fused) this.solvePosition.encodeFused(rec, this.passIo, mirror.bodySweep.buffer);
-    else this.solvePosition.encode(rec, this.passIo, mirror.bodySweep.buffer, this.step.positionIterations);
+    else this.solvePosition.encode(rec, this.passIo, mirror.bodySweep.buffer, this.step.positionIterations, this.passColours);
     this.integratePositions.encodeSynchronize(rec, this.params.buffer, this.state, mirror);
   };
+
+  /** Copies the step's SV.COLOURS_USED word into `dst` at `offset` (the pipeline's read-back: passColours). */
+  encodeStateCopy(encoder: GPUCommandEncoder, dst: GPUBuffer, offset: number): void {
+    encoder.copyBufferToBuffer(this.state, 4 * SV.COLOURS_USED, dst, offset, 4);
+  }
 
   // ---- Read-back for tests and tools (not part of a step) ----
 
@@ -373,6 +421,7 @@ export class GpuSolver {
       positionSolved: w[SV.POSITION_DONE] !== 0,
       colourStart: Array.from(w.subarray(SV.COLOUR_START, SV.COLOUR_START + COLOUR_CAP + 2)),
       recoloured: w[SV.COLOUR_CHANGED] !== 0,
+      coloursUsed: w[SV.COLOURS_USED],
     };
   }
 

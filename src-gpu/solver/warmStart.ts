@@ -1,8 +1,9 @@
 /*
  * Warm start (in GpuStage.Velocity) (shaders/solver/warmStart.wgsl): b2ContactSolver::WarmStart and the joints'
  * warm start (b2*Joint::InitVelocityConstraints), one pass per colour over its joints and
- * contacts (the overflow set last, in one invocation); for a small world every colour in one
- * dispatch of one workgroup (encodeFused).
+ * contacts for the host's first `passColours` colours (GpuSolver.passColours), then one tail pass
+ * of one workgroup that walks the colours left, with barriers, and the overflow set (in one
+ * invocation); for a small world every colour in one dispatch of one workgroup (encodeFused).
  *
  * In:  the colour lists (colour.ts: colourKeys, SV.COLOUR_START, SV_ARGS.COLOURS), contactBodies,
  *      constraints (impulses already scaled by dtRatio), jointBodies, jointConstraints
@@ -28,20 +29,22 @@ export interface ColourPassInputs {
   jointConstraints: GPUBuffer;
   /** The mirror's jointParams (motor speeds, limits, forces as set this step). */
   jointParams: GPUBuffer;
-  /** One uniform per colour (ColourParams), COLOUR_CAP + 1 of them. */
+  /** One uniform per colour (ColourParams), COLOUR_CAP + 1 of them (the last: a tail from the overflow set). */
   colours: Uniform[];
 }
 
 export class WarmStartStage {
   private readonly kernel: Kernel;
+  private readonly tail: Kernel;
   private readonly fused: Kernel;
 
   constructor(ctx: GpuContext) {
     this.kernel = new Kernel(ctx, 'warmStart', 'main');
+    this.tail = new Kernel(ctx, 'warmStart', 'tail');
     this.fused = new Kernel(ctx, 'warmStart', 'fused');
   }
 
-  /** The buffers both entry points bind (`main` adds its colour's uniform at 0). */
+  /** The buffers every entry point binds (`main` adds its colour's uniform at 0, `tail` its first colour's). */
   private entries(io: ColourPassInputs, bodyVel: GPUBuffer): Record<number, BindingEntry> {
     return { 1: io.solverState, 2: io.colourKeys, 3: io.contactBodies, 4: io.constraints, 5: bodyVel, 10: io.jointBodies, 12: io.jointConstraints };
   }
@@ -51,11 +54,14 @@ export class WarmStartStage {
     rec.dispatch(this.fused, this.fused.bind(this.entries(io, bodyVel)), 1);
   }
 
-  encode(rec: Recorder, io: ColourPassInputs, bodyVel: GPUBuffer): void {
+  /** A pass per colour below `passColours`, then the tail pass: passColours + 1 dispatches. */
+  encode(rec: Recorder, io: ColourPassInputs, bodyVel: GPUBuffer, passColours: number): void {
     const shared = this.entries(io, bodyVel);
-    for (let c = 0; c <= COLOUR_CAP; ++c) {
+    for (let c = 0; c < passColours; ++c) {
       const group = this.kernel.bind({ 0: io.colours[c].buffer, ...shared });
       rec.dispatchIndirect(this.kernel, group, io.solverIndirect, (SV_ARGS.COLOURS + 3 * c) * 4);
     }
+    const tail = this.tail.bind({ 0: io.colours[passColours].buffer, ...shared });
+    rec.dispatchIndirect(this.tail, tail, io.solverIndirect, (SV_ARGS.COLOURS + 3 * COLOUR_CAP) * 4);
   }
 }

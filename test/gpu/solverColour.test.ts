@@ -9,7 +9,9 @@
  * colouring and the solved bodies are the same bits run to run. The colours equal a CPU
  * Jones-Plassmann over the same items every step, whether the GPU coloured them again or reused
  * the last colouring (it reuses it while every item keeps its dynamic bodies, colours again when
- * one changes or when its buffers were replaced).
+ * one changes or when its buffers were replaced). The fused passes (one workgroup) and the tail
+ * pass that solves the colours past passColours give the bits of a pass per colour, whatever
+ * passColours is, and passColours follows the colours read back (+ PASS_COLOUR_MARGIN).
  */
 
 import { expect, it } from 'vitest';
@@ -25,7 +27,8 @@ import type { b2DistanceJoint } from '../../src/dynamics/joints/b2DistanceJoint'
 import { b2GearJointDef } from '../../src/dynamics/joints/b2GearJoint';
 import { b2RevoluteJointDef } from '../../src/dynamics/joints/b2RevoluteJoint';
 import { b2World } from '../../src/dynamics/b2World';
-import { COLOUR_CAP, FUSED_SOLVER_ITEMS } from '../../src-gpu/device/layout';
+import { COLOUR_CAP, FUSED_SOLVER_ITEMS, PASS_COLOUR_MARGIN } from '../../src-gpu/device/layout';
+import type { GpuSolverOptions } from '../../src-gpu/solver/solver';
 import { GpuStepper } from '../../src-gpu/stepper';
 import { describeGpu } from './support';
 
@@ -40,20 +43,25 @@ function ground(world: b2World, halfWidth = 40): void {
   body.CreateFixture(box, 0);
 }
 
-function pyramid(rows: number): b2World {
-  const world = new b2World(new b2Vec2(0, -10));
-  world.SetAllowSleeping(false);
-  ground(world);
+/** A pyramid of unit boxes on the ground, centred on x. */
+function addPyramid(world: b2World, rows: number, x = 0): void {
   const shape = new b2PolygonShape();
   shape.SetAsBox(0.5, 0.5);
   for (let row = 0; row < rows; ++row) {
     for (let i = 0; i < rows - row; ++i) {
       const def = new b2BodyDef();
       def.type = b2_dynamicBody;
-      def.position.Set(-rows / 2 + i + 0.5 * row + 0.5, 0.5 + row);
+      def.position.Set(x - rows / 2 + i + 0.5 * row + 0.5, 0.5 + row);
       world.CreateBody(def).CreateFixture(shape, 1);
     }
   }
+}
+
+function pyramid(rows: number): b2World {
+  const world = new b2World(new b2Vec2(0, -10));
+  world.SetAllowSleeping(false);
+  ground(world);
+  addPyramid(world, rows);
   return world;
 }
 
@@ -298,9 +306,19 @@ function referenceColours(c: Colouring): number[] {
   return colours.map((colour) => (colour < 0 ? COLOUR_CAP : colour));
 }
 
-async function colouringAfter(ctx: Parameters<Parameters<typeof describeGpu>[1]>[0], build: () => b2World, steps: number, fused?: boolean) {
+type Ctx = Parameters<Parameters<typeof describeGpu>[1]>[0];
+
+/** The bodies' transforms, angles and velocities, in body list order. */
+function bodyState(world: b2World): number[] {
+  const state: number[] = [];
+  for (let b = world.m_bodyList; b; b = b.m_next)
+    state.push(b.m_xf.p.x, b.m_xf.p.y, b.m_sweep.a, b.m_linearVelocity.x, b.m_linearVelocity.y, b.m_angularVelocity);
+  return state;
+}
+
+async function colouringAfter(ctx: Ctx, build: () => b2World, steps: number, solver: GpuSolverOptions = {}) {
   const world = build();
-  const stepper = new GpuStepper(ctx, world, { solver: { fused } });
+  const stepper = new GpuStepper(ctx, world, { solver });
   let dispatches = 0;
   const positionIterations: number[] = [];
   for (let i = 0; i < steps; ++i) {
@@ -309,9 +327,7 @@ async function colouringAfter(ctx: Parameters<Parameters<typeof describeGpu>[1]>
   }
   const c = await stepper.solver.readColouring();
   await stepper.readBodies();
-  const state: number[] = [];
-  for (let b = world.m_bodyList; b; b = b.m_next)
-    state.push(b.m_xf.p.x, b.m_xf.p.y, b.m_sweep.a, b.m_linearVelocity.x, b.m_linearVelocity.y, b.m_angularVelocity);
+  const state = bodyState(world);
   stepper.destroy();
   return {
     colouring: { joints: c.joints, colours: c.colours, bodies: c.bodies, jointBodies: c.jointBodies, keys: c.keys, colourStart: c.state.colourStart },
@@ -450,7 +466,7 @@ describeGpu('GPU solver: graph colouring', (ctx) => {
   }, 600_000);
 
   // The rounds (2 COLOUR_CAP + 1), warm start (COLOUR_CAP + 1), velocity (8 (COLOUR_CAP + 1)) and
-  // position (3 (COLOUR_CAP + 2)) passes become four dispatches.
+  // position (3 (COLOUR_CAP + 2)) passes with a pass for every colour become four dispatches.
   const FUSED_SAVES = 2 * COLOUR_CAP + 1 + 9 * (COLOUR_CAP + 1) + 3 * (COLOUR_CAP + 2) - 4;
 
   it('solves a small world in one dispatch per solver pass (fused) to the bits of the per-colour passes: contacts, joints, the overflow set, the early exit', async () => {
@@ -461,8 +477,8 @@ describeGpu('GPU solver: graph colouring', (ctx) => {
       ['40 joints on a hub (overflow set)', () => hub(40)],
     ];
     for (const [label, build] of scenes) {
-      const passes = await colouringAfter(ctx, build, 12, false);
-      const fused = await colouringAfter(ctx, build, 12, true);
+      const passes = await colouringAfter(ctx, build, 12, { fused: false, passColours: COLOUR_CAP });
+      const fused = await colouringAfter(ctx, build, 12, { fused: true });
       expect(Array.from(fused.colouring.colours), label).toEqual(Array.from(passes.colouring.colours));
       expect(Array.from(fused.colouring.keys), label).toEqual(Array.from(passes.colouring.keys));
       expect(fused.state, label).toEqual(passes.state);
@@ -472,7 +488,7 @@ describeGpu('GPU solver: graph colouring', (ctx) => {
     // Unless told otherwise, up to FUSED_SOLVER_ITEMS contacts and joints take the fused passes:
     // before any count is back, 3 contacts a body are assumed.
     const byDefault = await colouringAfter(ctx, () => pyramid(10), 1);
-    const fused = await colouringAfter(ctx, () => pyramid(10), 1, true);
+    const fused = await colouringAfter(ctx, () => pyramid(10), 1, { fused: true });
     expect(byDefault.dispatches).toBe(fused.dispatches);
     const apart = (): b2World => {
       const world = new b2World(new b2Vec2(0, -10));
@@ -496,5 +512,102 @@ describeGpu('GPU solver: graph colouring', (ctx) => {
     const [first, second] = await twoSteps();
     expect(first, 'per-colour passes first').toBe((await twoSteps(false))[0]);
     expect(second, 'fused once no contact is known to touch').toBe((await twoSteps(true))[1]);
+  }, 600_000);
+  // Dispatches a colour's pass of its own costs a step: the warm start and each velocity and
+  // position iteration (8 and 3 here) record one per colour below passColours, then the tail.
+  const PASSES_PER_COLOUR = 1 + 8 + 3;
+
+  it('solves the colours past passColours in one tail pass to the bits of a pass per colour: contacts, joints, the overflow set, the early exit', async () => {
+    const scenes: [string, () => b2World][] = [
+      ['pyramid', () => pyramid(10)],
+      ['joints and contacts', jointsAndContacts],
+      ['40 circles on a plate (overflow set)', () => crowdedPlate(40)],
+      ['40 joints on a hub (overflow set)', () => hub(40)],
+    ];
+    for (const [label, build] of scenes) {
+      const all = await colouringAfter(ctx, build, 12, { fused: false, passColours: COLOUR_CAP });
+      for (const passColours of [0, 2]) {
+        const few = await colouringAfter(ctx, build, 12, { fused: false, passColours });
+        const what = `${label}, passColours ${passColours}`;
+        expect(Array.from(few.colouring.colours), what).toEqual(Array.from(all.colouring.colours));
+        expect(few.state, what).toEqual(all.state);
+        expect(few.positionIterations, what).toEqual(all.positionIterations);
+        expect(all.dispatches - few.dispatches, what).toBe((COLOUR_CAP - passColours) * PASSES_PER_COLOUR);
+      }
+    }
+  }, 600_000);
+
+  it('records a pass for each colour the latest read-back step used, + PASS_COLOUR_MARGIN, every colour before one is back', async () => {
+    const run = async (passColours?: number) => {
+      const stepper = new GpuStepper(ctx, pyramid(10), { solver: { fused: false, passColours } });
+      const steps: { dispatches: number; passColours: number; coloursUsed: number; readBack: number }[] = [];
+      for (let i = 0; i < 6; ++i) {
+        const r = await stepper.step(DT, 8, 3);
+        steps.push({
+          dispatches: r.dispatches,
+          passColours: stepper.solver.passColours,
+          coloursUsed: (await stepper.solver.readState()).coloursUsed,
+          readBack: r.coloursUsed,
+        });
+      }
+      await stepper.readBodies();
+      const state = bodyState(stepper.world);
+      // Steps in flight ({ wait: false }): the colours come back with each step's counts.
+      for (let i = 0; i < 3; ++i) await stepper.step(DT, 8, 3, { wait: false });
+      const settled = await stepper.pipeline.settle();
+      const inFlight = { readBack: settled!.coloursUsed, coloursUsed: (await stepper.solver.readState()).coloursUsed };
+      stepper.destroy();
+      return { steps, state, inFlight };
+    };
+    const learned = await run();
+    const all = await run(COLOUR_CAP);
+    expect(learned.state).toEqual(all.state);
+    expect(learned.inFlight.readBack).toBe(learned.inFlight.coloursUsed);
+    learned.steps.forEach((step, i) => {
+      expect(step.readBack, `step ${i}: read back`).toBe(step.coloursUsed);
+      const expected = i === 0 ? COLOUR_CAP : Math.min(COLOUR_CAP, learned.steps[i - 1].coloursUsed + PASS_COLOUR_MARGIN);
+      expect(step.passColours, `step ${i}: passColours`).toBe(expected);
+      expect(all.steps[i].dispatches - step.dispatches, `step ${i}: dispatches`).toBe((COLOUR_CAP - expected) * PASSES_PER_COLOUR);
+    });
+    const perStep = (steps: { dispatches: number }[]) => steps.map((step) => step.dispatches).join(', ');
+    console.log(
+      `pyramid of 10 rows, ${learned.steps[0].coloursUsed} colours: dispatches per step ${perStep(learned.steps)} (${perStep(all.steps)} with a pass for every colour)`,
+    );
+    // The pyramid uses fewer colours than the cap: the count drops after the first read-back.
+    expect(learned.steps[1].dispatches).toBeLessThan(learned.steps[0].dispatches);
+  }, 600_000);
+
+  it('solves a step that needs more colours than it has passes for (a pyramid added after a few colours were learned) to the bits of a pass per colour', async () => {
+    const run = async (passColours?: number) => {
+      const world = new b2World(new b2Vec2(0, -10));
+      world.SetAllowSleeping(false);
+      ground(world);
+      const box = new b2PolygonShape();
+      box.SetAsBox(0.5, 0.5);
+      for (let i = 0; i < 5; ++i) {
+        const def = new b2BodyDef();
+        def.type = b2_dynamicBody;
+        def.position.Set(-20 + 3 * i, 0.5);
+        world.CreateBody(def).CreateFixture(box, 1);
+      }
+      const stepper = new GpuStepper(ctx, world, { solver: { fused: false, passColours } });
+      const beyond: number[] = [];
+      for (let i = 0; i < 10; ++i) {
+        if (i === 4) addPyramid(world, 10, 10);
+        await stepper.step(DT, 8, 3);
+        beyond.push((await stepper.solver.readState()).coloursUsed - stepper.solver.passColours);
+      }
+      await stepper.readBodies();
+      const state = bodyState(world);
+      stepper.destroy();
+      return { state, beyond };
+    };
+    const learned = await run();
+    const all = await run(COLOUR_CAP);
+    console.log(`boxes, then a pyramid: colours used past the passes, per step: ${learned.beyond.join(', ')}`);
+    // The boxes on the ground need one colour: the step that adds the pyramid has three passes,
+    // and the tail solves the colours past them.
+    expect(learned.beyond[4]).toBeGreaterThan(0);
+    expect(learned.state).toEqual(all.state);
   }, 600_000);
 });
