@@ -21,12 +21,17 @@
  *             1 m above the ground, falling with random initial velocities (down to -4 m/s, +-1 m/s
  *             sideways);
  *   balls     rain's layout with circles only, on an edge for ground: a scene without polygons or
- *             joints (--scenes balls; not in the default set).
+ *             joints (--scenes balls; not in the default set);
+ *   settled   pyramids with sleeping on, stepped SETTLE_STEPS times before anything is timed (on
+ *             each backend), so that the timed steps are those of a world at rest, its islands
+ *             asleep: what a world costs when nothing moves (--scenes settled; not in the default
+ *             set). The GPU table gives the bodies still awake after the timed steps.
  * --fused on|off: the solver's fused passes for every size, or for none (GpuSolverOptions.fused);
  * default: by the solver's items (FUSED_SOLVER_ITEMS). --auto: AutoBackend's calibration measured on this
  * adapter (its crossover and the fitted costs).
  * Both engines: 1/60 s, 8 velocity / 3 position iterations, sleeping and continuous physics off
- * (resting pyramids would fall asleep and cost nothing: this measures the full step's work).
+ * (resting pyramids would fall asleep and cost nothing: this measures the full step's work), but
+ * for the settled scene's sleeping.
  * GPU: a device with Dawn's validation off (requestGpu skipValidation; --validation keeps it on, as
  * browsers run it) and timestamp queries when
  * the adapter has them. Each world gets a GpuStepper; after GPU_WARMUP awaited steps (on the H100
@@ -127,7 +132,9 @@ const DEVICE_WARMUP_S = 2;
 /** Steps not awaited before the stream is timed: four fill the read-back ring, three more settle. */
 const STREAM_WARMUP = 7;
 const SCENES = ['pyramids', 'rain'];
-const ALL_SCENES = [...SCENES, 'balls'];
+const ALL_SCENES = [...SCENES, 'balls', 'settled'];
+/** Untimed steps of the settled scene: its pyramids fall asleep after about 240 steps on either engine. */
+const SETTLE_STEPS = 300;
 const PYRAMID_ROWS = 20;
 const PYRAMID_PITCH = PYRAMID_ROWS + 2;
 const RAIN_SPACING = 1.5;
@@ -210,6 +217,11 @@ function buildWorld(scene: string, n: number): b2World {
   if (scene === 'pyramids') return pyramids(n);
   if (scene === 'rain') return rain(n);
   if (scene === 'balls') return rain(n, true);
+  if (scene === 'settled') {
+    const world = pyramids(n);
+    world.SetAllowSleeping(true);
+    return world;
+  }
   throw new Error(`unknown scene ${scene} (${ALL_SCENES.join(', ')})`);
 }
 
@@ -226,6 +238,18 @@ function freshWorld(scene: string, n: number, row?: Row): b2World {
   if (row !== undefined) row.buildMs = performance.now() - b0;
   settleHeap();
   return world;
+}
+
+/** The dynamic bodies whose flag in `awake` (by body slot) is set. */
+function awakeDynamic(stepper: GpuStepper, awake: Uint8Array): number {
+  let count = 0;
+  for (let slot = 0; slot < awake.length; ++slot) if (awake[slot] !== 0 && stepper.mirror.bodyAt(slot)?.GetType() === b2_dynamicBody) count++;
+  return count;
+}
+
+/** Untimed steps before a scene is timed: `steps`, or SETTLE_STEPS for the settled scene. */
+function warmup(scene: string, steps: number): number {
+  return scene === 'settled' ? Math.max(steps, SETTLE_STEPS) : steps;
 }
 
 /** --fused: the solver's fused passes forced on or off; by body count when undefined. */
@@ -266,6 +290,8 @@ interface GpuRow {
   dispatches: number;
   contacts: number;
   touching: number;
+  /** Dynamic bodies awake after the timed steps. */
+  awake: number;
   /** Steps not awaited whose buffers overflowed (their lists truncated). */
   truncatedSteps: number;
 }
@@ -276,7 +302,7 @@ async function runGpu(ctx: GpuContext, scene: string, n: number, steps: number, 
   const stepper = new GpuStepper(ctx, world, { solver: solverOptions });
   try {
     const setupMs = performance.now() - t0;
-    for (let i = 0; i < GPU_WARMUP; ++i) await stepper.step(DT, VELOCITY_ITERATIONS, POSITION_ITERATIONS);
+    for (let i = 0; i < warmup(scene, GPU_WARMUP); ++i) await stepper.step(DT, VELOCITY_ITERATIONS, POSITION_ITERATIONS);
     const wall: number[] = [];
     const device: number[] = [];
     const parts = { broad: [] as number[], narrow: [] as number[], solve: [] as number[] };
@@ -317,7 +343,11 @@ async function runGpu(ctx: GpuContext, scene: string, n: number, steps: number, 
     }
     await stepper.pipeline.settle();
     const deferredMs = (performance.now() - d0) / steps;
+    const slots = stepper.mirror.bodySlotCount;
+    const awakeFlags = new Uint8Array(slots);
+    await stepper.readTransforms(new Float32Array(4 * slots), awakeFlags);
     return {
+      awake: awakeDynamic(stepper, awakeFlags),
       setupMs,
       wallMs: median(wall),
       deferredMs,
@@ -379,7 +409,7 @@ async function runWorldApi(ctx: GpuContext, scene: string, n: number, steps: num
   try {
     const out = new Float32Array(4 * backend.stepper!.mirror.bodySlotCount);
     const step = () => world.Step(DT, VELOCITY_ITERATIONS, POSITION_ITERATIONS);
-    for (let i = 0; i < GPU_WARMUP; ++i) {
+    for (let i = 0; i < warmup(scene, GPU_WARMUP); ++i) {
       step();
       await world.Synchronize();
     }
@@ -454,7 +484,7 @@ interface JsRow {
 
 function runJs(scene: string, n: number, steps: number, budgetSeconds: number): JsRow {
   const world = freshWorld(scene, n);
-  for (let i = 0; i < WARMUP; ++i) world.Step(DT, VELOCITY_ITERATIONS, POSITION_ITERATIONS);
+  for (let i = 0; i < warmup(scene, WARMUP); ++i) world.Step(DT, VELOCITY_ITERATIONS, POSITION_ITERATIONS);
   const times: number[] = [];
   const start = performance.now();
   while (times.length < steps && (times.length === 0 || performance.now() - start < budgetSeconds * 1000)) {
@@ -484,17 +514,17 @@ function markdown(rows: Row[], crossovers: Crossover[], meta: Record<string, unk
     '',
     `Device: ${meta.device}; timestamps: ${meta.timestamps}; Dawn validation ${meta.skipValidation ? 'off' : 'on'}. Node ${meta.node}. ${meta.date}. ${meta.heapSettled ? 'Full garbage collection before each world is built and before it is timed.' : "Run without --expose-gc: a phase may pay for collecting the previous one's world."}`,
     `1/60 s, ${VELOCITY_ITERATIONS} velocity / ${POSITION_ITERATIONS} position iterations, sleeping and continuous physics off`,
-    `in both (resting pyramids would fall asleep and cost nothing: this measures the full step's work). ${GPU_WARMUP} warm-up steps on the GPU, ${WARMUP} in JS, then medians of ${meta.steps} steps`,
+    `in both (resting pyramids would fall asleep and cost nothing: this measures the full step's work; the settled scene sleeps and has ${SETTLE_STEPS} warm-up steps). ${GPU_WARMUP} warm-up steps on the GPU, ${WARMUP} in JS, then medians of ${meta.steps} steps`,
     `(JS: at most ${meta.steps} steps or ${meta.jsBudget} s). Milliseconds per step. Solver passes: ${meta.fused === undefined ? 'fused up to FUSED_SOLVER_ITEMS contacts and joints' : meta.fused ? 'fused at every size (--fused on)' : 'per colour at every size (--fused off)'}.`,
     '',
-    '| scene | bodies | contacts (touching) | dispatches | GPU wall | GPU not awaited | GPU device | device: broad / narrow / solve | JS | JS/GPU wall | JS/GPU not awaited |',
-    '| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |',
+    '| scene | bodies | awake | contacts (touching) | dispatches | GPU wall | GPU not awaited | GPU device | device: broad / narrow / solve | JS | JS/GPU wall | JS/GPU not awaited |',
+    '| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |',
   ];
   for (const r of rows) {
     const g = r.gpu;
     const gpuCells = g
-      ? `${g.contacts} (${g.touching}) | ${g.dispatches} | ${fmt(g.wallMs)} | ${fmt(g.deferredMs)} | ${fmt(g.deviceMs)} | ${fmt(g.partsMs.broad)} / ${fmt(g.partsMs.narrow)} / ${fmt(g.partsMs.solve)}`
-      : `failed: ${r.gpuError ?? '–'} | | | | | `;
+      ? `${g.awake} | ${g.contacts} (${g.touching}) | ${g.dispatches} | ${fmt(g.wallMs)} | ${fmt(g.deferredMs)} | ${fmt(g.deviceMs)} | ${fmt(g.partsMs.broad)} / ${fmt(g.partsMs.narrow)} / ${fmt(g.partsMs.solve)}`
+      : `failed: ${r.gpuError ?? '–'} | | | | | | `;
     const js = r.js ? `${fmt(r.js.ms)}${r.js.steps < (meta.steps as number) ? ` (${r.js.steps} steps)` : ''}` : r.jsError ? `failed: ${r.jsError}` : '–';
     const ratio = (gpuMs: number | undefined) => (r.js && gpuMs ? fmt(r.js.ms / gpuMs) : '–');
     lines.push(`| ${r.scene} | ${r.bodies} | ${gpuCells} | ${js} | ${ratio(g?.wallMs)} | ${ratio(g?.deferredMs)} |`);
@@ -550,7 +580,7 @@ function markdown(rows: Row[], crossovers: Crossover[], meta: Record<string, unk
   }
   lines.push(
     '',
-    "bodies: dynamic bodies, plus one static ground. contacts: the GPU's contacts (broad-phase pairs) and, in",
+    "bodies: dynamic bodies, plus one static ground; awake: of them, those awake after the timed steps (all, unless sleeping is on: the settled scene). contacts: the GPU's contacts (broad-phase pairs) and, in",
     'parentheses, the touching ones the solver takes. GPU wall: GpuStepper.step() from call to resolved promise',
     '(mirror sync, recording, submit, wait for the read-back). GPU not awaited: steps submitted with { wait: false }',
     "(up to four in flight), total wall time / steps. GPU device: timestamp span of the step's passes; broad /",
