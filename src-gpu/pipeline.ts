@@ -5,8 +5,9 @@
  * In:  a synced GpuWorld (the mirror); the broad phase, the narrow phase and the solver, which own
  *      their buffers and kernels and encode their stages' dispatches when record() asks.
  * Out: one step's pairs, contacts and (with the solver) motion on the GPU; the step's counts
- *      (NarrowPhaseResult) from one read-back of 196 bytes plus timestamps: the broad phase's and
- *      the narrow phase's state words and the solver's SV.COLOURS_USED (GpuSolver.passColours).
+ *      (NarrowPhaseResult) from one read-back of 200 bytes plus timestamps: the broad phase's and
+ *      the narrow phase's state words, the solver's SV.COLOURS_USED (GpuSolver.passColours) and
+ *      SV.PENETRATION (the accuracy target's measure, so that it costs no read-back of its own).
  * Invariants: the stages run in GpuStage order and read only what earlier stages of the same
  *      submission (or earlier steps) wrote; nothing is read back inside a step. Same inputs, same
  *      outputs, bit for bit, on one device.
@@ -65,6 +66,8 @@ export enum GpuStage {
   Sleep,
   /** Continuous physics: bodies moved back to their earliest time of impact (timeOfImpact.ts). */
   TimeOfImpact,
+  /** The deepest penetration of the touching contacts at the final transforms (penetration.ts). */
+  Penetration,
 }
 
 /** The name of each stage's pass (the broad phase names its own five; Collide may be one pass per pair type). */
@@ -82,6 +85,7 @@ export const STAGE_PASS: Readonly<Record<GpuStage, string>> = {
   [GpuStage.Position]: 'solve: position',
   [GpuStage.Sleep]: 'solve: sleep',
   [GpuStage.TimeOfImpact]: 'solve: time of impact',
+  [GpuStage.Penetration]: 'solve: penetration',
 };
 
 export interface GpuPipelineStepOptions {
@@ -94,14 +98,18 @@ export interface GpuPipelineStepOptions {
   solve?: boolean;
 }
 
-/** Byte layout of the read-back: broad-phase state, narrow-phase state, the solver's colours used, timestamps. */
+/**
+ * Byte layout of the read-back: broad-phase state, narrow-phase state, the solver's colours used
+ * and penetration (GpuSolver.encodeStateCopy), timestamps.
+ */
 const NP_STATE_OFFSET = 64;
 const SOLVER_STATE_OFFSET = NP_STATE_OFFSET + 4 * NP_STATE_WORDS;
+const SOLVER_STATE_BYTES = 8;
 const TIMER_OFFSET = 256;
 
-/** SV.COLOURS_USED of a step's read-back, or -1 when the step recorded no solver stages. */
-function coloursUsed(bytes: ArrayBuffer, last: GpuStage): number {
-  return last > GpuStage.Compact ? new Uint32Array(bytes, SOLVER_STATE_OFFSET, 1)[0] : -1;
+/** A step's read-back when the step recorded the solver's stages (its solver words count), else null. */
+function solverWords(bytes: ArrayBuffer, last: GpuStage): ArrayBuffer | null {
+  return last > GpuStage.Compact ? bytes : null;
 }
 
 interface InFlight {
@@ -209,6 +217,9 @@ export class GpuPipeline {
           if (mirror.world.m_continuousPhysics && (mirror.census.bullets > 0 || mirror.census.nonDynamic > 0))
             pass(STAGE_PASS[stage], solver!.encodeTimeOfImpact);
           break;
+        case GpuStage.Penetration:
+          pass(STAGE_PASS[stage], solver!.encodePenetration);
+          break;
       }
     }
   }
@@ -217,7 +228,7 @@ export class GpuPipeline {
   private lastStage(solve: boolean): GpuStage {
     if (!solve) return GpuStage.Compact;
     if (this.solver === null) throw new Error('GpuPipeline.step: { solve: true } needs a pipeline made with a solver');
-    return GpuStage.TimeOfImpact;
+    return GpuStage.Penetration;
   }
 
   /**
@@ -269,7 +280,7 @@ export class GpuPipeline {
     let gpuTime: Record<string, number> | null = null;
     let state: Uint32Array;
     let counts: Uint32Array;
-    let colours: number;
+    let solved: ArrayBuffer | null;
     const hostMs = { encode: 0, submit: 0, wait: 0 };
     for (;;) {
       const t0 = performance.now();
@@ -286,7 +297,7 @@ export class GpuPipeline {
       dispatches = step.dispatches();
       state = new Uint32Array(bytes, 0, STATE_WORDS);
       counts = new Uint32Array(bytes, NP_STATE_OFFSET, NP_STATE_WORDS);
-      colours = coloursUsed(bytes, last);
+      solved = solverWords(bytes, last);
       gpuTime = this.timer.parse(bytes, TIMER_OFFSET);
       if ((state[STATE.OVERFLOW] & OVERFLOW_ENTRIES) === 0) break;
       // More sweep entries than room for them: grow, redo everything.
@@ -311,15 +322,15 @@ export class GpuPipeline {
       this.record(pass, mirror, GpuStage.Contacts, last);
       this.encodeStateCopies(encoder, last, rb.buffer);
       queue.submit([encoder.finish()]);
-      const bytes = await rb.read(this.ctx, SOLVER_STATE_OFFSET + 4);
+      const bytes = await rb.read(this.ctx, SOLVER_STATE_OFFSET + SOLVER_STATE_BYTES);
       state = new Uint32Array(bytes, 0, STATE_WORDS);
       counts = new Uint32Array(bytes, NP_STATE_OFFSET, NP_STATE_WORDS);
-      colours = coloursUsed(bytes, last);
+      solved = solverWords(bytes, last);
     }
     await this.ctx.checkErrors();
     const broad = bp.finishUpdate(state, bpRegrows, dispatches, gpuTime);
     np.endUpdate();
-    const result = this.result(broad, counts, colours, np.contactRegrows - before, dispatches, gpuTime, hostMs, false);
+    const result = this.result(broad, counts, solved, np.contactRegrows - before, dispatches, gpuTime, hostMs, false);
     this.lastResult = result;
     return result;
   }
@@ -371,7 +382,7 @@ export class GpuPipeline {
       await this.ctx.checkErrors();
       np.endUpdate();
       const broad: BroadPhaseResult = { pairCount: n, axis: 0, strips: 0, entries: 0, workItems: 0, regrows: 0, pairCapacity: n, dispatches: 0, gpuTime: null };
-      const result = this.result(broad, counts, -1, 0, dispatches, gpuTime, { encode: 0, submit: 0, wait: 0 }, false);
+      const result = this.result(broad, counts, null, 0, dispatches, gpuTime, { encode: 0, submit: 0, wait: 0 }, false);
       this.lastResult = result;
       return result;
     } finally {
@@ -379,10 +390,11 @@ export class GpuPipeline {
     }
   }
 
+  /** A step's result from its counts and, when it solved, its read-back's solver words (`solved`). */
   private result(
     broad: BroadPhaseResult,
     counts: Uint32Array,
-    coloursUsed: number,
+    solved: ArrayBuffer | null,
     regrows: number,
     dispatches: number,
     gpuTime: Record<string, number> | null,
@@ -396,7 +408,8 @@ export class GpuPipeline {
       contactCount: counts[NP.CONTACTS],
       previousCount: counts[NP.PREV],
       solverCount: counts[NP.SOLVER],
-      coloursUsed,
+      coloursUsed: solved === null ? -1 : new Uint32Array(solved, SOLVER_STATE_OFFSET, 1)[0],
+      penetration: solved === null ? -1 : new Float32Array(solved, SOLVER_STATE_OFFSET + 4, 1)[0],
       eventCount: counts[NP.EVENTS],
       binCounts,
       contactCapacity: this.narrowPhase.contactCapacity,
@@ -450,7 +463,7 @@ export class GpuPipeline {
       const r = this.result(
         bp.resultOf(state, 0, dispatches, null),
         counts,
-        coloursUsed(bytes, last),
+        solverWords(bytes, last),
         0,
         dispatches,
         null,
@@ -459,8 +472,11 @@ export class GpuPipeline {
       );
       r.contactCapacity = capacity;
       r.overflowed = r.overflowed || (state[STATE.OVERFLOW] & (OVERFLOW_PAIRS | OVERFLOW_ENTRIES)) !== 0;
-      // The solver skipped the step: its colours say nothing of the next steps'.
-      if (r.overflowed) r.coloursUsed = -1;
+      // The solver skipped the step: its colours say nothing of the next steps', and it measured nothing.
+      if (r.overflowed) {
+        r.coloursUsed = -1;
+        r.penetration = -1;
+      }
       entry.state = state;
       entry.result = r;
       return r;
@@ -473,7 +489,7 @@ export class GpuPipeline {
       : this.result(
           { pairCount: 0, axis: 0, strips: 0, entries: 0, workItems: 0, regrows: 0, pairCapacity: bp.pairCapacity, dispatches, gpuTime: null },
           new Uint32Array(NP_STATE_WORDS),
-          -1,
+          null,
           0,
           dispatches,
           null,

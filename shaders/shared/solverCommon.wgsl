@@ -3,7 +3,8 @@
 //
 // In:  nothing itself: definitions only.
 // Out: the solver's parameters (uniform), the constants of b2Settings.h it uses, the layout of a
-//      solver contact (below) and the small vector helpers of b2Math.h.
+//      solver contact (below), the small vector helpers of b2Math.h and b2PositionSolverManifold
+//      (the position iterations and the penetration measure evaluate separations alike).
 // Solver contacts (index k: position in this step's solverList) live in two buffers:
 //   contactBodies  vec4<u32>  body A, body B, CB_* flags (point counts, manifold type, which bodies
 //                             are dynamic), the contact index
@@ -82,4 +83,39 @@ fn normalize2(v: vec2<f32>) -> vec2<f32> {
   }
   let inv = 1.0 / length;
   return v * inv;
+}
+
+// b2PositionSolverManifold::Initialize for point j of a manifold of type `kind` (lm: localNormal,
+// localPoint; localPoints: points[0], points[1]) between bodies at (pA, qA) and (pB, qB), both
+// relative to one origin: the normal (from A to B), the point and its separation.
+struct PositionManifold {
+  normal: vec2<f32>,
+  point: vec2<f32>,
+  separation: f32,
+}
+
+fn position_manifold(kind: u32, j: u32, pA: vec2<f32>, qA: vec2<f32>, pB: vec2<f32>, qB: vec2<f32>,
+                     lm: vec4<f32>, localPoints: vec4<f32>, radii: vec2<f32>) -> PositionManifold {
+  var m: PositionManifold;
+  if (kind == E_CIRCLES) {
+    let pointA = pA + rotate(qA, lm.zw);
+    let pointB = pB + rotate(qB, localPoints.xy);
+    m.normal = normalize2(pointB - pointA);
+    m.point = 0.5 * (pointA + pointB);
+    m.separation = dot(pointB - pointA, m.normal) - radii.x - radii.y;
+  } else if (kind == E_FACE_A) {
+    m.normal = rotate(qA, lm.xy);
+    let planePoint = pA + rotate(qA, lm.zw);
+    let clipPoint = pB + rotate(qB, select(localPoints.zw, localPoints.xy, j == 0u));
+    m.separation = dot(clipPoint - planePoint, m.normal) - radii.x - radii.y;
+    m.point = clipPoint;
+  } else {
+    let normal = rotate(qB, lm.xy);
+    let planePoint = pB + rotate(qB, lm.zw);
+    let clipPoint = pA + rotate(qA, select(localPoints.zw, localPoints.xy, j == 0u));
+    m.separation = dot(clipPoint - planePoint, normal) - radii.x - radii.y;
+    m.point = clipPoint;
+    m.normal = -normal;
+  }
+  return m;
 }

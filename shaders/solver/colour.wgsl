@@ -8,8 +8,8 @@
 //      contactBodies and jointBodies (bodies, which are dynamic), signatures (the last colouring's
 //      items).
 // Out: `begin` (one invocation): solverState SV_SKIP, SV_COUNT, SV_JOINTS, SV_ITEMS, the
-//      position-iteration words, SV_COLOUR_CHANGED = 0, the indirect sizes of per-contact and
-//      per-item passes.
+//      position-iteration words, SV_COLOUR_CHANGED = 0, SV_PENETRATION = 0 (penetration.wgsl's
+//      maximum starts from no depth), the indirect sizes of per-contact and per-item passes.
 //      `invalidate` (one invocation, recorded when the host replaced a buffer that holds the last
 //      colouring): SV_COLOUR_CHANGED = 1.
 //      `compare` (per item): SV_COLOUR_CHANGED = 1 when the item's signature (its dynamic bodies,
@@ -74,6 +74,7 @@ fn begin() {
   atomicStore(&solverState[SV_MIN_SEPARATION], sortable_key(0.0));
   atomicStore(&solverState[SV_COLOUR_CHANGED], 0u);
   atomicStore(&solverState[SV_COLOURS_USED], 0u);
+  atomicStore(&solverState[SV_PENETRATION], 0u);
   write_args(SV_ARGS_CONTACTS, dispatch_size(count, WORKGROUP_SIZE));
   write_args(SV_ARGS_ITEMS, dispatch_size(items, WORKGROUP_SIZE));
 }

@@ -68,39 +68,16 @@ fn solve(k: u32) -> f32 {
     let qB = rot(aB);
     let pA = cA - rotate(qA, centres.xy);
     let pB = cB - rotate(qB, centres.zw);
-    // b2PositionSolverManifold::Initialize.
-    var normal: vec2<f32>;
-    var point: vec2<f32>;
-    var separation: f32;
-    if (kind == E_CIRCLES) {
-      let pointA = pA + rotate(qA, lm.zw);
-      let pointB = pB + rotate(qB, localPoints.xy);
-      normal = normalize2(pointB - pointA);
-      point = 0.5 * (pointA + pointB);
-      separation = dot(pointB - pointA, normal) - radii.x - radii.y;
-    } else if (kind == E_FACE_A) {
-      normal = rotate(qA, lm.xy);
-      let planePoint = pA + rotate(qA, lm.zw);
-      let clipPoint = pB + rotate(qB, select(localPoints.zw, localPoints.xy, j == 0u));
-      separation = dot(clipPoint - planePoint, normal) - radii.x - radii.y;
-      point = clipPoint;
-    } else {
-      normal = rotate(qB, lm.xy);
-      let planePoint = pB + rotate(qB, lm.zw);
-      let clipPoint = pA + rotate(qA, select(localPoints.zw, localPoints.xy, j == 0u));
-      separation = dot(clipPoint - planePoint, normal) - radii.x - radii.y;
-      point = clipPoint;
-      normal = -normal;
-    }
-    let rA = point - cA;
-    let rB = point - cB;
-    minSeparation = min(minSeparation, separation);
-    let C = clamp(BAUMGARTE * (separation + LINEAR_SLOP), -MAX_LINEAR_CORRECTION, 0.0);
-    let rnA = cross2(rA, normal);
-    let rnB = cross2(rB, normal);
+    let m = position_manifold(kind, j, pA, qA, pB, qB, lm, localPoints, radii);
+    let rA = m.point - cA;
+    let rB = m.point - cB;
+    minSeparation = min(minSeparation, m.separation);
+    let C = clamp(BAUMGARTE * (m.separation + LINEAR_SLOP), -MAX_LINEAR_CORRECTION, 0.0);
+    let rnA = cross2(rA, m.normal);
+    let rnB = cross2(rB, m.normal);
     let K = mA + mB + iA * rnA * rnA + iB * rnB * rnB;
     let impulse = select(0.0, -C / K, K > 0.0);
-    let P = impulse * normal;
+    let P = impulse * m.normal;
     cA = cA - mA * P;
     aA = aA - iA * cross2(rA, P);
     cB = cB + mB * P;

@@ -221,6 +221,11 @@ export class AutoBackend implements b2WorldBackend {
     if (this.onGpu) this.inner!.PullAll();
   }
 
+  /** The inner backend's while the GPU steps the world; on JavaScript the world's contacts are the engine's own. */
+  GetPenetration(): number | null {
+    return this.onGpu ? this.inner!.GetPenetration() : null;
+  }
+
   private attached(method: string): { world: b2World; engine: b2WorldBackendEngine } {
     if (this.world === null || this.engine === null) {
       throw new Error(`AutoBackend.${method}: not attached to a world (world.SetBackend(backend) attaches it)`);

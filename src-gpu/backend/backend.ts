@@ -14,7 +14,9 @@
  *      m_stateEpoch and deliver the events (events.ts). The body motion stays on the host, mapped:
  *      PullBody writes a body's into its object when the body is first read, PullAll every body's
  *      and moves the engine's broad-phase proxies (queries, ray casts, the debug draw).
- *      readTransforms() reads every transform in bulk without touching the objects. Detach()
+ *      readTransforms() reads every transform in bulk without touching the objects.
+ *      GetPenetration() gives the accuracy target the deepest penetration of the synchronised step,
+ *      measured on the GPU and read back with the step's counts (no map of its own). Detach()
  *      reads everything, pulls every body, rebuilds the JavaScript engine's contacts with the
  *      GPU's manifolds and impulses, and touches its broad-phase proxies.
  * Invariants: steps run in call order, each recorded after the previous one's submission; at most
@@ -150,6 +152,9 @@ export class WebGPUBackend implements b2WorldBackend {
   private lastContactCount: number | null = null;
   private readonly counts = { contacts: 0, touching: 0 };
   private countsKnown = false;
+  /** The penetration of the latest step whose read-back is in, and of the step the last synchronisation shows (-1: none measured). */
+  private latestPenetration = -1;
+  private syncedPenetration = -1;
   private stepsSinceRead = 0;
   private failure: unknown = null;
   private detaching = false;
@@ -248,6 +253,16 @@ export class WebGPUBackend implements b2WorldBackend {
     this.stepperNow?.pullBody(body);
   }
 
+  /**
+   * The deepest penetration (m) of the touching contacts after the step the last synchronisation
+   * shows, measured on the GPU at the end of that step and read back with its counts (the
+   * accuracy target's measure: b2WorldBackend.GetPenetration); null before a synchronised step
+   * that solved (dt > 0, no overflow).
+   */
+  GetPenetration(): number | null {
+    return this.world !== null && this.syncedPenetration >= 0 ? this.syncedPenetration : null;
+  }
+
   PullAll(): void {
     const world = this.world;
     const stepper = this.stepperNow;
@@ -280,6 +295,8 @@ export class WebGPUBackend implements b2WorldBackend {
     this.lastStep = null;
     this.lastContactCount = null;
     this.countsKnown = false;
+    this.latestPenetration = -1;
+    this.syncedPenetration = -1;
     this.stepsSinceRead = 0;
     this.pulledEpoch = world.m_stateEpoch;
   }
@@ -340,6 +357,7 @@ export class WebGPUBackend implements b2WorldBackend {
           this.counts.contacts = r.contactCount;
           this.counts.touching = r.solverCount;
           this.countsKnown = true;
+          this.latestPenetration = r.penetration;
         },
         () => undefined,
       );
@@ -399,6 +417,7 @@ export class WebGPUBackend implements b2WorldBackend {
     this.stepsSinceRead = 0;
     this.readbacks++;
     await stepper.readState(GpuContactEvents.ranges(plan));
+    this.syncedPenetration = this.latestPenetration;
     // Each body fetches this state when it is first read (b2Body.PullState), queries and the debug
     // draw all of it first (PullAll): a synchronisation costs what the application reads.
     world.m_stateEpoch++;

@@ -301,6 +301,7 @@ export const SV = {
   COLOURED_JOINTS: 36,
   COLOUR_SORT_COUNT: 37,
   COLOURS_USED: 38,
+  PENETRATION: 39,
 } as const;
 export const SV_STATE_WORDS = 40;
 

@@ -42,6 +42,7 @@ import solveJoints from '../../shaders/solver/solveJoints.wgsl';
 import timeOfImpact from '../../shaders/solver/timeOfImpact.wgsl';
 import solveJointsCommon from '../../shaders/shared/solveJointsCommon.wgsl';
 import islands from '../../shaders/solver/islands.wgsl';
+import penetration from '../../shaders/solver/penetration.wgsl';
 import renderView from '../../shaders/shared/renderView.wgsl';
 import cull from '../../shaders/render/cull.wgsl';
 import render from '../../shaders/render/render.wgsl';
@@ -76,6 +77,7 @@ export const SHADERS = {
   solvePosition: `${common}\n${solverCommon}\n${solveJointsCommon}\n${solvePosition}`,
   solveJoints: `${common}\n${solverCommon}\n${solveJointsCommon}\n${solveJoints}`,
   islands: `${common}\n${solverCommon}\n${islands}`,
+  penetration: `${common}\n${solverCommon}\n${penetration}`,
   timeOfImpact: `${common}\n${manifold}\n${distance}\n${timeOfImpact}`,
   cull: `${common}\n${renderView}\n${cull}`,
   render: `${common}\n${renderView}\n${render}`,

@@ -73,6 +73,13 @@ export interface NarrowPhaseResult {
    * one); -1 when the step did not solve or overflowed.
    */
   coloursUsed: number;
+  /**
+   * The deepest penetration (m) of the touching non-sensor contacts' manifold points at the
+   * transforms after the step (SV.PENETRATION: the accuracy target's measure, computed on the GPU
+   * by the solver's penetration stage); 0 when nothing touches, -1 when the step did not solve or
+   * overflowed.
+   */
+  penetration: number;
   /** Begin/end events. */
   eventCount: number;
   /** Contacts per bin (layout.ts BIN order). */

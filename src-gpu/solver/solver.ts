@@ -24,6 +24,8 @@
  *   time of impact      continuous physics on: b2TimeOfImpact of the contacts 2.2.1 tests
  *                       (bullets; dynamic against static / kinematic), each dynamic body
  *                       moved back to its earliest one; no TOI island solve   timeOfImpact.ts
+ *   penetration         the deepest point of the touching contacts after the step, for the
+ *                       accuracy target (read back with the step's counts)       penetration.ts
  *
  * In:  the narrow phase's outputs of the step being recorded (solverList, contactRefs, manifolds,
  *      npState) and the broad phase's state (overflow), the mirror's body and fixture tables.
@@ -71,6 +73,7 @@ import { SolvePositionStage } from './solvePosition';
 import { SolveJointsStage } from './solveJoints';
 import { IslandsStage } from './islands';
 import { TimeOfImpactStage } from './timeOfImpact';
+import { PenetrationStage } from './penetration';
 import type { TimeOfImpactInputs } from './timeOfImpact';
 import type { IslandInputs } from './islands';
 import {
@@ -179,6 +182,7 @@ export class GpuSolver {
   private readonly joints: SolveJointsStage;
   readonly islands: IslandsStage;
   readonly timeOfImpact: TimeOfImpactStage;
+  private readonly penetration: PenetrationStage;
   private readonly step: SolverStep = { dt: 0, dtRatio: 0, velocityIterations: 8, positionIterations: 3, warmStarting: true, gravity: { x: 0, y: 0 } };
   // The step being recorded (bindStep): filled in place so that recording allocates nothing.
   private mirror: GpuWorld | null = null;
@@ -216,6 +220,7 @@ export class GpuSolver {
     this.joints = new SolveJointsStage(ctx);
     this.islands = new IslandsStage(ctx);
     this.timeOfImpact = new TimeOfImpactStage(ctx);
+    this.penetration = new PenetrationStage(ctx);
     const placeholder = this.state;
     this.colourIo = {
       broadState: placeholder,
@@ -344,6 +349,9 @@ export class GpuSolver {
   /** GpuStage.TimeOfImpact. */
   readonly encodeTimeOfImpact = (rec: Recorder): void => this.timeOfImpact.encode(rec, this.toiIo, this.mirror!);
 
+  /** GpuStage.Penetration. */
+  readonly encodePenetration = (rec: Recorder): void => this.penetration.encode(rec, this.prepareIo, this.mirror!);
+
   /** GpuStage.IntegrateVelocities. */
   readonly encodeIntegrateVelocities = (rec: Recorder): void => {
     this.integrateVelocities.encode(rec, this.params.buffer, this.state, this.mirror!);
@@ -403,9 +411,12 @@ export class GpuSolver {
     this.integratePositions.encodeSynchronize(rec, this.params.buffer, this.state, mirror);
   };
 
-  /** Copies the step's SV.COLOURS_USED word into `dst` at `offset` (the pipeline's read-back: passColours). */
+  /**
+   * Copies the step's SV.COLOURS_USED and SV.PENETRATION, in that order (adjacent words), into
+   * `dst` at `offset` (the pipeline's read-back: passColours, the step's penetration).
+   */
   encodeStateCopy(encoder: GPUCommandEncoder, dst: GPUBuffer, offset: number): void {
-    encoder.copyBufferToBuffer(this.state, 4 * SV.COLOURS_USED, dst, offset, 4);
+    encoder.copyBufferToBuffer(this.state, 4 * SV.COLOURS_USED, dst, offset, 8);
   }
 
   // ---- Read-back for tests and tools (not part of a step) ----

@@ -47,8 +47,11 @@
  * stops at its last rung without sub-steps (each sub-step would be a step queued on the backend,
  * beyond its queue's limit). The measures read the backend's last synchronisation (the world's
  * PullState), so they lag the steps by the read-back, and are taken only when a synchronisation
- * (or a step on this engine) brought a new state. The WebGPU backend keeps its contacts on the GPU:
- * there penetration is not measured, and its target holds the rung at or above the study's rung.
+ * (or a step on this engine) brought a new state. A backend that keeps the contacts (the world's
+ * contact list is then empty) measures penetration itself, by the same definition, for the step
+ * its last synchronisation shows (b2WorldBackend.GetPenetration: the WebGPU backend computes it on
+ * the GPU after the step, in float32, and reads it back with the step's counts). One that does not
+ * leaves penetration unmeasured, and its target holds the rung at or above the study's rung.
  */
 
 import type { b2Contact } from './contacts/b2Contact';
@@ -247,7 +250,8 @@ export interface b2Accuracy {
   readonly substeps: number;
   /**
    * The errors measured after the last measured step (null: not in the target, not measured yet,
-   * or not measurable here: penetration on the WebGPU backend).
+   * or not measurable here: penetration on a backend that keeps the contacts without
+   * b2WorldBackend.GetPenetration, or whose last synchronised step did not solve).
    */
   readonly measured: { readonly penetration: number | null; readonly jointError: number | null; readonly jitter: number | null };
   /** The largest error of each measure since the current rung was chosen (null as for `measured`). */
@@ -378,7 +382,8 @@ export class b2AccuracyController {
       const epoch = world.m_stateEpoch;
       const engineSteps = world.m_engineStepsOnBackend;
       if (epoch === this.seenEpoch && engineSteps === this.seenEngineSteps) return;
-      // The world's contacts are this engine's only after a step it took (not at the first look).
+      // The world's contacts are this engine's only after a step it took (not at the first look);
+      // otherwise penetration is the backend's own measure (measure()).
       contacts = this.seenEngineSteps >= 0 && engineSteps !== this.seenEngineSteps;
       this.seenEpoch = epoch;
       this.seenEngineSteps = engineSteps;
@@ -388,11 +393,13 @@ export class b2AccuracyController {
     this.decide(world);
   }
 
+  /** `contacts`: the world's contact list holds the step's contacts (else a backend keeps them). */
   private measure(world: b2World, contacts: boolean): void {
     // Written into the array, not returned: a returned double would be boxed, an allocation a step.
     const v = this.measured;
-    if (this.wanted[PEN] && contacts) measurePenetration(world.m_contactManager.m_contactList, v, PEN);
-    else v[PEN] = NaN;
+    if (!this.wanted[PEN]) v[PEN] = NaN;
+    else if (contacts) measurePenetration(world.m_contactManager.m_contactList, v, PEN);
+    else v[PEN] = world.GetBackend()!.GetPenetration?.() ?? NaN;
     if (this.wanted[JOINT]) measureJointError(world.m_jointList, v, JOINT);
     else v[JOINT] = NaN;
     if (this.wanted[JIT]) measureJitter(world.m_bodyList, v, JIT);
@@ -513,7 +520,12 @@ export class b2AccuracyController {
       const t = this.targets[k];
       const x = this.measured[k];
       if (x !== x) {
-        within.push(`${NAME[m]} not measured ${this.measuredAny ? 'here (the backend keeps the contacts)' : 'yet'}, target ${describeMeasure(m, t)}`);
+        const where = !this.measuredAny
+          ? 'yet'
+          : world.GetBackend()?.GetPenetration === undefined
+            ? 'here (the backend keeps the contacts)'
+            : 'in the last synchronisation (no step it shows solved)';
+        within.push(`${NAME[m]} not measured ${where}, target ${describeMeasure(m, t)}`);
       } else if (x > t) {
         const falling = here < top && this.corrected(k) ? (this.blocks < 2 ? ', watched for a fall' : ', falling: left to this rung') : '';
         over.push(`${NAME[m]} ${describeMeasure(m, x)} over the target ${describeMeasure(m, t)}${falling}`);

@@ -62,6 +62,14 @@ export interface b2WorldBackend {
   PullBody(body: b2Body): void;
   /** Every body's last synchronised state, and the engine's broad-phase proxies moved to it. */
   PullAll(): void;
+  /**
+   * Optional, for a backend that keeps the contacts (the world's contact list stays empty): the
+   * deepest penetration (m, >= 0) of the touching non-sensor contacts' manifold points at the
+   * transforms after the step the last synchronisation shows, the accuracy target's measure
+   * (b2AccuracyTarget.ts); null when that step measured none. Without it the accuracy target
+   * cannot measure penetration on the backend.
+   */
+  GetPenetration?(): number | null;
 }
 
 function listenerOverrides(listener: object | null, method: b2OverridableCallback): boolean {

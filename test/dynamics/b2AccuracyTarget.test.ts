@@ -423,6 +423,14 @@ class RemoteBackend implements b2WorldBackend {
   }
 }
 
+/** A RemoteBackend that measures penetration itself (GetPenetration), as WebGPUBackend does on the GPU. */
+class MeasuringBackend extends RemoteBackend {
+  penetration: number | null = null;
+  GetPenetration(): number | null {
+    return this.penetration;
+  }
+}
+
 describe('on a backend', () => {
   it("the chosen iterations reach the backend's Step, without sub-steps (the ladder ends at 16/6)", async () => {
     const world = studyWorld('chain');
@@ -459,6 +467,32 @@ describe('on a backend', () => {
     // Unmeasured, penetration never lets the rung fall below the study's (4/2) however calm the rest.
     for (let i = 0; i < 400; ++i) await world.StepAsync(DT, 8, 3);
     expect(world.GetAccuracy()!.velocityIterations).toBeGreaterThanOrEqual(4);
+  });
+
+  it('takes penetration from a backend that keeps the contacts and measures them (GetPenetration)', async () => {
+    const world = studyWorld('stack');
+    const backend = new MeasuringBackend();
+    await world.SetBackend(backend);
+    world.SetAccuracyTarget({ penetration: 0.01 });
+    backend.penetration = 0.004;
+    await world.StepAsync(DT, 8, 3);
+    await world.StepAsync(DT, 8, 3);
+    let a = world.GetAccuracy()!;
+    expect(a.measured.penetration).toBe(0.004);
+    expect(a.reason).toMatch(/target met: penetration 0\.004 m within 0\.01 m$/);
+    // A synchronised step that measured nothing (it did not solve) leaves the measure out.
+    backend.penetration = null;
+    await world.StepAsync(DT, 8, 3);
+    a = world.GetAccuracy()!;
+    expect(a.measured.penetration).toBeNull();
+    expect(a.reason).toMatch(/penetration not measured in the last synchronisation \(no step it shows solved\), target 0\.01 m/);
+    // A level error over the target climbs from the study's rung (4/2), as on this engine.
+    backend.penetration = 0.02;
+    for (let i = 0; i < 40; ++i) await world.StepAsync(DT, 8, 3);
+    a = world.GetAccuracy()!;
+    expect(a.worst.penetration).toBe(0.02);
+    expect(a.velocityIterations).toBeGreaterThan(4);
+    expect(a.reason).toMatch(/up from 4\/2 iterations at step \d+: penetration 0\.02 m over the target 0\.01 m/);
   });
 
   it('measures everything, contacts included, when the backend lets this engine step the world', async () => {

@@ -85,6 +85,7 @@ const STAGES = [
   'integratePositions',
   'solvePosition',
   'solveJoints',
+  'penetration',
   'cull',
   'render',
   'pointQuery',
@@ -137,6 +138,9 @@ it("declares the solver's state words, indirect offsets, colour cap and 2.2.1's 
   expect(c.get('CONSTRAINT_VEC4')).toBe(layout.CONSTRAINT_VEC4);
   expect(layout.SV.COLOUR_START + layout.COLOUR_CAP + 2).toBeLessThanOrEqual(layout.SV.COLOUR_CHANGED);
   expect(layout.SV.COLOUR_SORT_COUNT).toBeLessThan(layout.SV_STATE_WORDS);
+  // The step's read-back copies SV.COLOURS_USED and SV.PENETRATION as one range (GpuSolver.encodeStateCopy).
+  expect(layout.SV.PENETRATION).toBe(layout.SV.COLOURS_USED + 1);
+  expect(layout.SV.PENETRATION).toBeLessThan(layout.SV_STATE_WORDS);
   expect(layout.SV_ARGS.COLOURS + 3 * (layout.COLOUR_CAP + 1)).toBeLessThanOrEqual(layout.SV_ARGS.POSITION);
   expect(layout.SV_ARGS.POSITION + 3 * (layout.COLOUR_CAP + 1)).toBeLessThanOrEqual(layout.SV_ARGS.ITEMS);
   expect(layout.SV_ARGS.ROUNDS + 3).toBeLessThanOrEqual(layout.SV_INDIRECT_WORDS);
