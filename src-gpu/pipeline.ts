@@ -107,9 +107,20 @@ const SOLVER_STATE_OFFSET = NP_STATE_OFFSET + 4 * NP_STATE_WORDS;
 const SOLVER_STATE_BYTES = 8;
 const TIMER_OFFSET = 256;
 
-/** A step's read-back when the step recorded the solver's stages (its solver words count), else null. */
-function solverWords(bytes: ArrayBuffer, last: GpuStage): ArrayBuffer | null {
-  return last > GpuStage.Compact ? bytes : null;
+/** What a step's read-back says of its solver: -1 for what the step did not record. */
+interface SolverWords {
+  coloursUsed: number;
+  penetration: number;
+}
+
+const NOT_SOLVED: Readonly<SolverWords> = { coloursUsed: -1, penetration: -1 };
+
+function solverWords(bytes: ArrayBuffer, last: GpuStage): SolverWords {
+  if (last <= GpuStage.Compact) return NOT_SOLVED;
+  return {
+    coloursUsed: new Uint32Array(bytes, SOLVER_STATE_OFFSET, 1)[0],
+    penetration: last >= GpuStage.Penetration ? new Float32Array(bytes, SOLVER_STATE_OFFSET + 4, 1)[0] : -1,
+  };
 }
 
 interface InFlight {
@@ -133,6 +144,12 @@ export class GpuPipeline {
   lastResult: NarrowPhaseResult | null = null;
   /** Steps that overflowed with { wait: false } (their lists were truncated). */
   truncatedSteps = 0;
+  /**
+   * Whether solving steps record GpuStage.Penetration (NarrowPhaseResult.penetration; -1 without
+   * it): off until someone reads the measure (WebGPUBackend.GetPenetration), so that a world
+   * without a penetration target does not pay a pass over its contacts.
+   */
+  measurePenetration = false;
   private readonly timer: PassTimer;
   private readonly readback: Readback;
   private readonly ring: ReadbackRing;
@@ -228,7 +245,7 @@ export class GpuPipeline {
   private lastStage(solve: boolean): GpuStage {
     if (!solve) return GpuStage.Compact;
     if (this.solver === null) throw new Error('GpuPipeline.step: { solve: true } needs a pipeline made with a solver');
-    return GpuStage.Penetration;
+    return this.measurePenetration ? GpuStage.Penetration : GpuStage.TimeOfImpact;
   }
 
   /**
@@ -280,7 +297,7 @@ export class GpuPipeline {
     let gpuTime: Record<string, number> | null = null;
     let state: Uint32Array;
     let counts: Uint32Array;
-    let solved: ArrayBuffer | null;
+    let solved: SolverWords;
     const hostMs = { encode: 0, submit: 0, wait: 0 };
     for (;;) {
       const t0 = performance.now();
@@ -382,7 +399,7 @@ export class GpuPipeline {
       await this.ctx.checkErrors();
       np.endUpdate();
       const broad: BroadPhaseResult = { pairCount: n, axis: 0, strips: 0, entries: 0, workItems: 0, regrows: 0, pairCapacity: n, dispatches: 0, gpuTime: null };
-      const result = this.result(broad, counts, null, 0, dispatches, gpuTime, { encode: 0, submit: 0, wait: 0 }, false);
+      const result = this.result(broad, counts, NOT_SOLVED, 0, dispatches, gpuTime, { encode: 0, submit: 0, wait: 0 }, false);
       this.lastResult = result;
       return result;
     } finally {
@@ -390,11 +407,11 @@ export class GpuPipeline {
     }
   }
 
-  /** A step's result from its counts and, when it solved, its read-back's solver words (`solved`). */
+  /** A step's result from its counts and its read-back's solver words (`solved`). */
   private result(
     broad: BroadPhaseResult,
     counts: Uint32Array,
-    solved: ArrayBuffer | null,
+    solved: SolverWords,
     regrows: number,
     dispatches: number,
     gpuTime: Record<string, number> | null,
@@ -408,8 +425,8 @@ export class GpuPipeline {
       contactCount: counts[NP.CONTACTS],
       previousCount: counts[NP.PREV],
       solverCount: counts[NP.SOLVER],
-      coloursUsed: solved === null ? -1 : new Uint32Array(solved, SOLVER_STATE_OFFSET, 1)[0],
-      penetration: solved === null ? -1 : new Float32Array(solved, SOLVER_STATE_OFFSET + 4, 1)[0],
+      coloursUsed: solved.coloursUsed,
+      penetration: solved.penetration,
       eventCount: counts[NP.EVENTS],
       binCounts,
       contactCapacity: this.narrowPhase.contactCapacity,
@@ -489,7 +506,7 @@ export class GpuPipeline {
       : this.result(
           { pairCount: 0, axis: 0, strips: 0, entries: 0, workItems: 0, regrows: 0, pairCapacity: bp.pairCapacity, dispatches, gpuTime: null },
           new Uint32Array(NP_STATE_WORDS),
-          null,
+          NOT_SOLVED,
           0,
           dispatches,
           null,

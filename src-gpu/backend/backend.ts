@@ -16,7 +16,8 @@
  *      and moves the engine's broad-phase proxies (queries, ray casts, the debug draw).
  *      readTransforms() reads every transform in bulk without touching the objects.
  *      GetPenetration() gives the accuracy target the deepest penetration of the synchronised step,
- *      measured on the GPU and read back with the step's counts (no map of its own). Detach()
+ *      measured on the GPU (from its first call on) and read back with the step's counts (no map
+ *      of its own). Detach()
  *      reads everything, pulls every body, rebuilds the JavaScript engine's contacts with the
  *      GPU's manifolds and impulses, and touches its broad-phase proxies.
  * Invariants: steps run in call order, each recorded after the previous one's submission; at most
@@ -257,9 +258,12 @@ export class WebGPUBackend implements b2WorldBackend {
    * The deepest penetration (m) of the touching contacts after the step the last synchronisation
    * shows, measured on the GPU at the end of that step and read back with its counts (the
    * accuracy target's measure: b2WorldBackend.GetPenetration); null before a synchronised step
-   * that solved (dt > 0, no overflow).
+   * that solved (dt > 0, no overflow) and measured it. The GPU measures it from the first step
+   * recorded after the first call (GpuPipeline.measurePenetration): a world that never asks
+   * does not pay for it.
    */
   GetPenetration(): number | null {
+    if (this.stepperNow !== null) this.stepperNow.pipeline.measurePenetration = true;
     return this.world !== null && this.syncedPenetration >= 0 ? this.syncedPenetration : null;
   }
 

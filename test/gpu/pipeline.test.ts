@@ -32,7 +32,7 @@ function passes(first: GpuStage, last: GpuStage): string[] {
 
 describeGpu('GPU pipeline', (ctx) => {
   it.skipIf(!ctx.timestamps)(
-    'records the passes of a step in GpuStage order, the solver after collision and time of impact only with continuous physics',
+    'records the passes of a step in GpuStage order, the solver after collision, time of impact only with continuous physics, the penetration measure only once asked for',
     async () => {
       const scene = loadGoldenScene('pyramid');
       const world = scene.world;
@@ -43,11 +43,16 @@ describeGpu('GPU pipeline', (ctx) => {
         const collision = await stepper.step(0, 8, 3);
         expect(named(collision.gpuTime)).toEqual(passes(GpuStage.BroadPhase, GpuStage.Compact));
         const full = await stepper.step(1 / 60, 8, 3);
-        expect(named(full.gpuTime)).toEqual(passes(GpuStage.BroadPhase, GpuStage.Penetration));
+        expect(named(full.gpuTime)).toEqual(passes(GpuStage.BroadPhase, GpuStage.TimeOfImpact));
+        expect(full.penetration).toBe(-1);
+        stepper.pipeline.measurePenetration = true;
+        const measured = await stepper.step(1 / 60, 8, 3);
+        expect(named(measured.gpuTime)).toEqual(passes(GpuStage.BroadPhase, GpuStage.Penetration));
+        expect(measured.penetration).toBeGreaterThanOrEqual(0);
         world.SetContinuousPhysics(false);
         const discrete = await stepper.step(1 / 60, 8, 3);
         expect(named(discrete.gpuTime)).toEqual([...passes(GpuStage.BroadPhase, GpuStage.Sleep), STAGE_PASS[GpuStage.Penetration]]);
-        expect(discrete.dispatches).toBeLessThan(full.dispatches);
+        expect(discrete.dispatches).toBeLessThan(measured.dispatches);
         expect(collision.dispatches).toBeLessThan(discrete.dispatches);
       } finally {
         stepper.destroy();
