@@ -5,8 +5,9 @@
  * In:  a synced GpuWorld (the mirror); the broad phase, the narrow phase and the solver, which own
  *      their buffers and kernels and encode their stages' dispatches when record() asks.
  * Out: one step's pairs, contacts and (with the solver) motion on the GPU; the step's counts
- *      (NarrowPhaseResult) from one read-back of 196 bytes plus timestamps: the broad phase's and
- *      the narrow phase's state words and the solver's SV.COLOURS_USED (GpuSolver.passColours).
+ *      (NarrowPhaseResult) from one read-back of 316 bytes plus timestamps: the broad phase's and
+ *      the narrow phase's state words and the solver's SV.COLOUR_START .. SV.COLOURS_USED (the
+ *      colours' sizes, which GpuSolver.passColours follows).
  * Invariants: the stages run in GpuStage order and read only what earlier stages of the same
  *      submission (or earlier steps) wrote; nothing is read back inside a step. Same inputs, same
  *      outputs, bit for bit, on one device.
@@ -34,7 +35,21 @@ import type { GpuNarrowPhase, NarrowPhaseResult } from './narrowphase/narrowPhas
 import type { GpuSolver } from './solver/solver';
 import { PassTimer } from './device/timing';
 import { Readback, ReadbackRing } from './device/readback';
-import { BIN_COUNT, BIN_NAMES, NP, NP_STATE_WORDS, OVERFLOW_CONTACTS, OVERFLOW_ENTRIES, OVERFLOW_PAIRS, STATE, STATE_WORDS, USAGE } from './device/layout';
+import {
+  BIN_COUNT,
+  BIN_NAMES,
+  COLOUR_CAP,
+  NP,
+  NP_STATE_WORDS,
+  OVERFLOW_CONTACTS,
+  OVERFLOW_ENTRIES,
+  OVERFLOW_PAIRS,
+  STATE,
+  STATE_WORDS,
+  SV,
+  SV_READBACK_WORDS,
+  USAGE,
+} from './device/layout';
 import type { GpuWorld } from './world/world';
 
 /** The stages of a GPU step, in the order they are recorded. */
@@ -94,14 +109,27 @@ export interface GpuPipelineStepOptions {
   solve?: boolean;
 }
 
-/** Byte layout of the read-back: broad-phase state, narrow-phase state, the solver's colours used, timestamps. */
+/**
+ * Byte layout of the read-back: broad-phase state, narrow-phase state, the solver's colour starts
+ * and colours used (SV_READBACK_WORDS from SV.COLOUR_START), timestamps (8-byte aligned).
+ */
 const NP_STATE_OFFSET = 64;
 const SOLVER_STATE_OFFSET = NP_STATE_OFFSET + 4 * NP_STATE_WORDS;
-const TIMER_OFFSET = 256;
+const SOLVER_STATE_END = SOLVER_STATE_OFFSET + 4 * SV_READBACK_WORDS;
+const TIMER_OFFSET = Math.ceil(SOLVER_STATE_END / 8) * 8;
 
-/** SV.COLOURS_USED of a step's read-back, or -1 when the step recorded no solver stages. */
-function coloursUsed(bytes: ArrayBuffer, last: GpuStage): number {
-  return last > GpuStage.Compact ? new Uint32Array(bytes, SOLVER_STATE_OFFSET, 1)[0] : -1;
+/** What a step's result says of its colouring (NarrowPhaseResult). */
+type Colouring = Pick<NarrowPhaseResult, 'coloursUsed' | 'colourItems'>;
+/** A step that did not solve, or whose solver skipped it. */
+const NO_COLOURING: Colouring = { coloursUsed: -1, colourItems: null };
+
+/** The colouring of a step's read-back: SV.COLOURS_USED and the items per colour (the overflow set last). */
+function colouring(bytes: ArrayBuffer, last: GpuStage): Colouring {
+  if (last <= GpuStage.Compact) return NO_COLOURING;
+  const w = new Uint32Array(bytes, SOLVER_STATE_OFFSET, SV_READBACK_WORDS);
+  const colourItems: number[] = [];
+  for (let c = 0; c <= COLOUR_CAP; ++c) colourItems.push(w[c + 1] - w[c]);
+  return { coloursUsed: w[SV.COLOURS_USED - SV.COLOUR_START], colourItems };
 }
 
 interface InFlight {
@@ -181,7 +209,7 @@ export class GpuPipeline {
           {
             const io = np.outputs(this.broadState!);
             io.lastSolverCount = this.lastResult === null ? -1 : this.lastResult.solverCount;
-            io.lastColoursUsed = this.lastResult === null ? -1 : this.lastResult.coloursUsed;
+            io.lastColourItems = this.lastResult === null ? null : this.lastResult.colourItems;
             solver!.bindStep(mirror, io);
           }
           pass(STAGE_PASS[stage], solver!.encodeIslands);
@@ -269,7 +297,7 @@ export class GpuPipeline {
     let gpuTime: Record<string, number> | null = null;
     let state: Uint32Array;
     let counts: Uint32Array;
-    let colours: number;
+    let colours: Colouring;
     const hostMs = { encode: 0, submit: 0, wait: 0 };
     for (;;) {
       const t0 = performance.now();
@@ -286,7 +314,7 @@ export class GpuPipeline {
       dispatches = step.dispatches();
       state = new Uint32Array(bytes, 0, STATE_WORDS);
       counts = new Uint32Array(bytes, NP_STATE_OFFSET, NP_STATE_WORDS);
-      colours = coloursUsed(bytes, last);
+      colours = colouring(bytes, last);
       gpuTime = this.timer.parse(bytes, TIMER_OFFSET);
       if ((state[STATE.OVERFLOW] & OVERFLOW_ENTRIES) === 0) break;
       // More sweep entries than room for them: grow, redo everything.
@@ -311,10 +339,10 @@ export class GpuPipeline {
       this.record(pass, mirror, GpuStage.Contacts, last);
       this.encodeStateCopies(encoder, last, rb.buffer);
       queue.submit([encoder.finish()]);
-      const bytes = await rb.read(this.ctx, SOLVER_STATE_OFFSET + 4);
+      const bytes = await rb.read(this.ctx, SOLVER_STATE_END);
       state = new Uint32Array(bytes, 0, STATE_WORDS);
       counts = new Uint32Array(bytes, NP_STATE_OFFSET, NP_STATE_WORDS);
-      colours = coloursUsed(bytes, last);
+      colours = colouring(bytes, last);
     }
     await this.ctx.checkErrors();
     const broad = bp.finishUpdate(state, bpRegrows, dispatches, gpuTime);
@@ -371,7 +399,7 @@ export class GpuPipeline {
       await this.ctx.checkErrors();
       np.endUpdate();
       const broad: BroadPhaseResult = { pairCount: n, axis: 0, strips: 0, entries: 0, workItems: 0, regrows: 0, pairCapacity: n, dispatches: 0, gpuTime: null };
-      const result = this.result(broad, counts, -1, 0, dispatches, gpuTime, { encode: 0, submit: 0, wait: 0 }, false);
+      const result = this.result(broad, counts, NO_COLOURING, 0, dispatches, gpuTime, { encode: 0, submit: 0, wait: 0 }, false);
       this.lastResult = result;
       return result;
     } finally {
@@ -382,7 +410,7 @@ export class GpuPipeline {
   private result(
     broad: BroadPhaseResult,
     counts: Uint32Array,
-    coloursUsed: number,
+    colours: Colouring,
     regrows: number,
     dispatches: number,
     gpuTime: Record<string, number> | null,
@@ -396,7 +424,8 @@ export class GpuPipeline {
       contactCount: counts[NP.CONTACTS],
       previousCount: counts[NP.PREV],
       solverCount: counts[NP.SOLVER],
-      coloursUsed,
+      coloursUsed: colours.coloursUsed,
+      colourItems: colours.colourItems,
       eventCount: counts[NP.EVENTS],
       binCounts,
       contactCapacity: this.narrowPhase.contactCapacity,
@@ -450,7 +479,7 @@ export class GpuPipeline {
       const r = this.result(
         bp.resultOf(state, 0, dispatches, null),
         counts,
-        coloursUsed(bytes, last),
+        colouring(bytes, last),
         0,
         dispatches,
         null,
@@ -460,7 +489,10 @@ export class GpuPipeline {
       r.contactCapacity = capacity;
       r.overflowed = r.overflowed || (state[STATE.OVERFLOW] & (OVERFLOW_PAIRS | OVERFLOW_ENTRIES)) !== 0;
       // The solver skipped the step: its colours say nothing of the next steps'.
-      if (r.overflowed) r.coloursUsed = -1;
+      if (r.overflowed) {
+        r.coloursUsed = NO_COLOURING.coloursUsed;
+        r.colourItems = NO_COLOURING.colourItems;
+      }
       entry.state = state;
       entry.result = r;
       return r;
@@ -473,7 +505,7 @@ export class GpuPipeline {
       : this.result(
           { pairCount: 0, axis: 0, strips: 0, entries: 0, workItems: 0, regrows: 0, pairCapacity: bp.pairCapacity, dispatches, gpuTime: null },
           new Uint32Array(NP_STATE_WORDS),
-          -1,
+          NO_COLOURING,
           0,
           dispatches,
           null,

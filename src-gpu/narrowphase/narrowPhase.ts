@@ -73,6 +73,12 @@ export interface NarrowPhaseResult {
    * one); -1 when the step did not solve or overflowed.
    */
   coloursUsed: number;
+  /**
+   * Items (joints and contacts) per colour of the step's solver, colours 0 .. COLOUR_CAP - 1, then
+   * the overflow set (from SV.COLOUR_START; GpuSolver.passColours follows them); null when the
+   * step did not solve or overflowed.
+   */
+  colourItems: number[] | null;
   /** Begin/end events. */
   eventCount: number;
   /** Contacts per bin (layout.ts BIN order). */
@@ -217,7 +223,7 @@ export class GpuNarrowPhase {
       manifolds: placeholder,
       contactCapacity: 0,
       lastSolverCount: -1,
-      lastColoursUsed: -1,
+      lastColourItems: null,
     };
   }
 
