@@ -37,7 +37,7 @@
  * the adapter has them. Each world gets a GpuStepper; after GPU_WARMUP awaited steps (on the H100
  * the first five steps of 10^6 pyramids take 36 ms of device time, then 14.7: a warm-up of 3
  * put those slow steps into the medians), `--steps` awaited
- * steps give the wall time of step() (mirror sync, recording, submit, wait for the 192-byte
+ * steps give the wall time of step() (mirror sync, recording, submit, wait for the 316-byte
  * read-back), its host split, the device time (timestamp span of the step's passes, and per part:
  * broad phase, narrow phase, solver) and the dispatches recorded; then, after STREAM_WARMUP steps
  * not awaited (the stream's first read-backs grow the buffers to 1.5x the counts: that reallocation

@@ -5,9 +5,10 @@
  * In:  a synced GpuWorld (the mirror); the broad phase, the narrow phase and the solver, which own
  *      their buffers and kernels and encode their stages' dispatches when record() asks.
  * Out: one step's pairs, contacts and (with the solver) motion on the GPU; the step's counts
- *      (NarrowPhaseResult) from one read-back of 200 bytes plus timestamps: the broad phase's and
- *      the narrow phase's state words, the solver's SV.COLOURS_USED (GpuSolver.passColours) and
- *      SV.PENETRATION (the accuracy target's measure, so that it costs no read-back of its own).
+ *      (NarrowPhaseResult) from one read-back of 324 bytes plus timestamps: the broad phase's and
+ *      the narrow phase's state words and the solver's SV.COLOUR_START .. SV.PENETRATION (the
+ *      colours' sizes, which GpuSolver.passColours follows, and the accuracy target's measure, so
+ *      that it costs no read-back of its own).
  * Invariants: the stages run in GpuStage order and read only what earlier stages of the same
  *      submission (or earlier steps) wrote; nothing is read back inside a step. Same inputs, same
  *      outputs, bit for bit, on one device.
@@ -35,7 +36,21 @@ import type { GpuNarrowPhase, NarrowPhaseResult } from './narrowphase/narrowPhas
 import type { GpuSolver } from './solver/solver';
 import { PassTimer } from './device/timing';
 import { Readback, ReadbackRing } from './device/readback';
-import { BIN_COUNT, BIN_NAMES, NP, NP_STATE_WORDS, OVERFLOW_CONTACTS, OVERFLOW_ENTRIES, OVERFLOW_PAIRS, STATE, STATE_WORDS, USAGE } from './device/layout';
+import {
+  BIN_COUNT,
+  BIN_NAMES,
+  COLOUR_CAP,
+  NP,
+  NP_STATE_WORDS,
+  OVERFLOW_CONTACTS,
+  OVERFLOW_ENTRIES,
+  OVERFLOW_PAIRS,
+  STATE,
+  STATE_WORDS,
+  SV,
+  SV_READBACK_WORDS,
+  USAGE,
+} from './device/layout';
 import type { GpuWorld } from './world/world';
 
 /** The stages of a GPU step, in the order they are recorded. */
@@ -99,28 +114,30 @@ export interface GpuPipelineStepOptions {
 }
 
 /**
- * Byte layout of the read-back: broad-phase state, narrow-phase state, the solver's colours used
- * and penetration (GpuSolver.encodeStateCopy), timestamps.
+ * Byte layout of the read-back: broad-phase state, narrow-phase state, the solver's colour starts,
+ * colours used and penetration (SV_READBACK_WORDS from SV.COLOUR_START), timestamps (8-byte aligned).
  */
 const NP_STATE_OFFSET = 64;
 const SOLVER_STATE_OFFSET = NP_STATE_OFFSET + 4 * NP_STATE_WORDS;
-const SOLVER_STATE_BYTES = 8;
-const TIMER_OFFSET = 256;
+const SOLVER_STATE_END = SOLVER_STATE_OFFSET + 4 * SV_READBACK_WORDS;
+const TIMER_OFFSET = Math.ceil(SOLVER_STATE_END / 8) * 8;
 
-/** What a step's read-back says of its solver: -1 for what the step did not record. */
-interface SolverWords {
-  coloursUsed: number;
-  penetration: number;
-}
+/** What a step's result says of its solver (NarrowPhaseResult). */
+type SolverWords = Pick<NarrowPhaseResult, 'coloursUsed' | 'colourItems' | 'penetration'>;
+/** A step that did not solve, or whose solver skipped it. */
+const NOT_SOLVED: Readonly<SolverWords> = { coloursUsed: -1, colourItems: null, penetration: -1 };
 
-const NOT_SOLVED: Readonly<SolverWords> = { coloursUsed: -1, penetration: -1 };
-
+/**
+ * The solver words of a step's read-back: SV.COLOURS_USED, the items per colour (the overflow set
+ * last) and, when the step recorded its stage, SV.PENETRATION.
+ */
 function solverWords(bytes: ArrayBuffer, last: GpuStage): SolverWords {
   if (last <= GpuStage.Compact) return NOT_SOLVED;
-  return {
-    coloursUsed: new Uint32Array(bytes, SOLVER_STATE_OFFSET, 1)[0],
-    penetration: last >= GpuStage.Penetration ? new Float32Array(bytes, SOLVER_STATE_OFFSET + 4, 1)[0] : -1,
-  };
+  const w = new Uint32Array(bytes, SOLVER_STATE_OFFSET, SV_READBACK_WORDS);
+  const colourItems: number[] = [];
+  for (let c = 0; c <= COLOUR_CAP; ++c) colourItems.push(w[c + 1] - w[c]);
+  const penetration = last >= GpuStage.Penetration ? new Float32Array(w.buffer, w.byteOffset, SV_READBACK_WORDS)[SV.PENETRATION - SV.COLOUR_START] : -1;
+  return { coloursUsed: w[SV.COLOURS_USED - SV.COLOUR_START], colourItems, penetration };
 }
 
 interface InFlight {
@@ -206,7 +223,7 @@ export class GpuPipeline {
           {
             const io = np.outputs(this.broadState!);
             io.lastSolverCount = this.lastResult === null ? -1 : this.lastResult.solverCount;
-            io.lastColoursUsed = this.lastResult === null ? -1 : this.lastResult.coloursUsed;
+            io.lastColourItems = this.lastResult === null ? null : this.lastResult.colourItems;
             solver!.bindStep(mirror, io);
           }
           pass(STAGE_PASS[stage], solver!.encodeIslands);
@@ -339,7 +356,7 @@ export class GpuPipeline {
       this.record(pass, mirror, GpuStage.Contacts, last);
       this.encodeStateCopies(encoder, last, rb.buffer);
       queue.submit([encoder.finish()]);
-      const bytes = await rb.read(this.ctx, SOLVER_STATE_OFFSET + SOLVER_STATE_BYTES);
+      const bytes = await rb.read(this.ctx, SOLVER_STATE_END);
       state = new Uint32Array(bytes, 0, STATE_WORDS);
       counts = new Uint32Array(bytes, NP_STATE_OFFSET, NP_STATE_WORDS);
       solved = solverWords(bytes, last);
@@ -426,6 +443,7 @@ export class GpuPipeline {
       previousCount: counts[NP.PREV],
       solverCount: counts[NP.SOLVER],
       coloursUsed: solved.coloursUsed,
+      colourItems: solved.colourItems,
       penetration: solved.penetration,
       eventCount: counts[NP.EVENTS],
       binCounts,
@@ -491,8 +509,9 @@ export class GpuPipeline {
       r.overflowed = r.overflowed || (state[STATE.OVERFLOW] & (OVERFLOW_PAIRS | OVERFLOW_ENTRIES)) !== 0;
       // The solver skipped the step: its colours say nothing of the next steps', and it measured nothing.
       if (r.overflowed) {
-        r.coloursUsed = -1;
-        r.penetration = -1;
+        r.coloursUsed = NOT_SOLVED.coloursUsed;
+        r.colourItems = NOT_SOLVED.colourItems;
+        r.penetration = NOT_SOLVED.penetration;
       }
       entry.state = state;
       entry.result = r;

@@ -304,6 +304,12 @@ export const SV = {
   PENETRATION: 39,
 } as const;
 export const SV_STATE_WORDS = 40;
+/**
+ * Solver state words each step's read-back carries (pipeline.ts, one copy): SV.COLOUR_START ..
+ * SV.PENETRATION, the colour starts (the sizes GpuSolver.passColours follows), the colours used
+ * and the step's penetration.
+ */
+export const SV_READBACK_WORDS = SV.PENETRATION + 1 - SV.COLOUR_START;
 
 /**
  * Solver items (contacts and joints) up to which one workgroup runs the colouring rounds, the warm
@@ -319,11 +325,16 @@ export const COLOUR_CAP = 24;
 export const UNCOLOURED = 0xffffffff;
 
 /**
- * Colours past the last one the latest read-back step used that still get a dispatch of their
- * own in each solver pass (the rest go to the tail pass, one workgroup): a scene whose colouring
- * grows by a colour or two keeps its parallel passes, and an empty colour's dispatch is cheap.
+ * Items below which a colour gets no pass of its own in the warm start and each velocity and
+ * position iteration: the tail pass (one workgroup) solves it after the colours that do
+ * (GpuSolver.passColours: the leading colours of at least this many items in the latest read-back
+ * step). A colour of fewer items than a workgroup's invocations is one workgroup in a dispatch of
+ * its own as well; in the tail the same work costs a storage barrier instead of a dispatch (about
+ * 2 µs on an H100). A colour of more costs the tail another round of WORKGROUP_SIZE items, which
+ * the fused passes' H100 timings price at 2-7 µs (bench/results/gpu-small-world.md: 0.1-0.33 µs a
+ * contact a step over 12 passes), no less than the dispatch it would save.
  */
-export const PASS_COLOUR_MARGIN = 2;
+export const TAIL_COLOUR_ITEMS = WORKGROUP_SIZE;
 
 /**
  * Word offsets of the solver's indirect triples (shaders/shared/common.wgsl SV_ARGS_*). COLOURS

@@ -76,10 +76,16 @@ export interface NarrowPhaseResult {
   /**
    * The deepest penetration (m) of the touching non-sensor contacts' manifold points at the
    * transforms after the step (SV.PENETRATION: the accuracy target's measure, computed on the GPU
-   * by the solver's penetration stage); 0 when nothing touches, -1 when the step did not solve or
-   * overflowed.
+   * by the solver's penetration stage, GpuPipeline.measurePenetration); 0 when nothing touches,
+   * -1 when the step did not measure it, did not solve or overflowed.
    */
   penetration: number;
+  /**
+   * Items (joints and contacts) per colour of the step's solver, colours 0 .. COLOUR_CAP - 1, then
+   * the overflow set (from SV.COLOUR_START; GpuSolver.passColours follows them); null when the
+   * step did not solve or overflowed.
+   */
+  colourItems: number[] | null;
   /** Begin/end events. */
   eventCount: number;
   /** Contacts per bin (layout.ts BIN order). */
@@ -224,7 +230,7 @@ export class GpuNarrowPhase {
       manifolds: placeholder,
       contactCapacity: 0,
       lastSolverCount: -1,
-      lastColoursUsed: -1,
+      lastColourItems: null,
     };
   }
 

@@ -1,13 +1,14 @@
 /*
  * GpuStage.Position, the position iterations (shaders/solver/solvePosition.wgsl): per iteration one pass per
- * colour for the host's first `passColours` colours (GpuSolver.passColours), each solving its
- * contacts (b2ContactSolver::SolvePositionConstraints) and its joints
- * (b2*Joint::SolvePositionConstraints) in parallel, then one tail pass of one workgroup that walks
- * the colours left, with barriers, and the overflow set (one invocation: its contacts, then its
- * joints, as 2.2.1 orders an island's), then `check`: 2.2.1's early exit (minimum separation >=
- * -3 b2_linearSlop and every joint within its slop) zeroes the position passes' indirect sizes,
- * the tail's included, so later iterations dispatch no workgroups. For a small world every
- * iteration and the exit in one dispatch of one workgroup (encodeFused). No read-back.
+ * colour for the host's first `passColours` colours (GpuSolver.passColours: the leading colours of
+ * at least TAIL_COLOUR_ITEMS items), each solving its contacts
+ * (b2ContactSolver::SolvePositionConstraints) and its joints (b2*Joint::SolvePositionConstraints)
+ * in parallel, then one tail pass of one workgroup that walks the colours left, with barriers,
+ * and the overflow set (one invocation: its contacts, then its joints, as 2.2.1 orders an
+ * island's), then `check`: 2.2.1's early exit (minimum separation >= -3 b2_linearSlop and every
+ * joint within its slop) zeroes the position passes' indirect sizes, the tail's included, so
+ * later iterations dispatch no workgroups. For a small world every iteration and the exit in one
+ * dispatch of one workgroup (encodeFused). No read-back.
  *
  * In:  the colour lists (colour.ts; SV_ARGS.POSITION sizes), contactBodies, constraints,
  *      jointBodies, jointParams, jointConstraints, bodySweep (after integratePositions.ts).

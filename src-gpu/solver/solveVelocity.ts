@@ -1,11 +1,12 @@
 /*
  * GpuStage.Velocity, the velocity iterations (shaders/solver/solveVelocity.wgsl): per iteration one pass per
- * colour for the host's first `passColours` colours (GpuSolver.passColours), each solving its
- * joints (b2*Joint::SolveVelocityConstraints) and its contacts (b2ContactSolver::
- * SolveVelocityConstraints: friction, then the normal impulses, the two-point block solver
- * included) in parallel, then one tail pass of one workgroup that walks the colours left, with
- * barriers, and the overflow set (one invocation: its joints, then its contacts). For a small
- * world every iteration in one dispatch of one workgroup (encodeFused), the same bits.
+ * colour for the host's first `passColours` colours (GpuSolver.passColours: the leading colours of
+ * at least TAIL_COLOUR_ITEMS items), each solving its joints (b2*Joint::SolveVelocityConstraints)
+ * and its contacts (b2ContactSolver::SolveVelocityConstraints: friction, then the normal
+ * impulses, the two-point block solver included) in parallel, then one tail pass of one workgroup
+ * that walks the colours left, with barriers, and the overflow set (one invocation: its joints,
+ * then its contacts). For a small world every iteration in one dispatch of one workgroup
+ * (encodeFused), the same bits.
  *
  * In:  the colour lists (colour.ts), contactBodies, constraints, jointBodies, jointParams,
  *      jointConstraints, bodyVel.

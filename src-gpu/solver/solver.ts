@@ -11,14 +11,14 @@
  *   colour              Jones-Plassmann colouring of joints and contacts together, colour
  *                       lists (+ overflow set); the last one reused while every item has
  *                       the same dynamic bodies                                          colour.ts
- *   warm start          per colour below passColours, then the tail pass: its joints' and
- *                       contacts' impulses x dtRatio                                     warmStart.ts
- *   velocity            iterations: per colour below passColours, then the tail pass, its
- *                       joints, then its contacts (friction, then normal: block solver)  solveVelocity.ts
+ *   warm start          per large colour (passColours), then the tail pass: its joints'
+ *                       and contacts' impulses x dtRatio                                 warmStart.ts
+ *   velocity            iterations: per large colour, then the tail pass, its joints,
+ *                       then its contacts (friction, then normal: block solver)          solveVelocity.ts
  *   store impulses      into the manifolds' word 3 for the next step                     storeImpulses.ts
  *   integrate positions with b2_maxTranslation / b2_maxRotation                          integratePositions.ts
- *   position            iterations: per colour below passColours, then the tail pass, its
- *                       contacts, then its joints; early exit as zeroed indirect sizes   solvePosition.ts
+ *   position            iterations: per large colour, then the tail pass, its contacts,
+ *                       then its joints; early exit as zeroed indirect sizes             solvePosition.ts
  *   synchronize         bodyXf from the sweep, cells                                     integratePositions.ts
  *   sleep               sleep timers, islands at rest put to sleep                       islands.ts
  *   time of impact      continuous physics on: b2TimeOfImpact of the contacts 2.2.1 tests
@@ -36,11 +36,13 @@
  * Results are the same bits on every run on one device (no float atomics; the colouring depends
  * only on the joints and contacts; the overflow set is solved in item order).
  * Passes per colour: the warm start and each velocity and position iteration dispatch one pass
- * per colour for the first passColours colours (those the latest step read back used, +
- * PASS_COLOUR_MARGIN; all COLOUR_CAP before one is back), then one tail pass: one workgroup walks
- * the colours left with barriers between them, then the overflow set. The same items in the same
- * order, so the same bits whatever passColours is (colours past it only run slower, until a
- * read-back raises it): passColours + 1 dispatches per pass (COLOUR_CAP + 1 when all have one).
+ * per colour for the first passColours colours (the leading colours of at least
+ * TAIL_COLOUR_ITEMS items in the latest step read back; all COLOUR_CAP before one is back), then
+ * one tail pass: one workgroup walks the colours left (from the first small one) with barriers
+ * between them, then the overflow set. The same items in the same order, so the same bits whatever
+ * passColours is (a colour that grew past TAIL_COLOUR_ITEMS since only runs slower, until a
+ * read-back raises passColours): passColours + 1 dispatches per pass (COLOUR_CAP + 1 when all
+ * have one).
  * A small world (FUSED_SOLVER_ITEMS) runs the colouring rounds, the warm start and the velocity
  * and position iterations each in one dispatch of one workgroup that walks all the colours as the
  * tail passes walk theirs: the same items in the same order, so the same bits, in four dispatches
@@ -81,16 +83,28 @@ import {
   CONSTRAINT_VEC4,
   FUSED_SOLVER_ITEMS,
   ISLAND_WORDS,
-  PASS_COLOUR_MARGIN,
   SV,
   SV_INDIRECT_WORDS,
+  SV_READBACK_WORDS,
   SV_STATE_WORDS,
+  TAIL_COLOUR_ITEMS,
   USAGE,
 } from '../device/layout';
 import type { GpuWorld } from '../world/world';
 
 /** The label of the read-backs for tests and tools (readBuffer). */
 const DEBUG_READ = 'solver debug read';
+
+/**
+ * The leading colours of at least TAIL_COLOUR_ITEMS items in `items` (a step's items per colour,
+ * read back): the colours that get a pass of their own; COLOUR_CAP when none were read back.
+ */
+function largeColours(items: readonly number[] | null): number {
+  if (items === null) return COLOUR_CAP;
+  let colours = 0;
+  while (colours < COLOUR_CAP && items[colours] >= TAIL_COLOUR_ITEMS) ++colours;
+  return colours;
+}
 
 /** The time step, as b2TimeStep carries it. */
 export interface SolverStep {
@@ -115,8 +129,8 @@ export interface SolverInputs {
   contactCapacity: number;
   /** Solver contacts of the latest step whose counts are back; -1 before the first. */
   lastSolverCount: number;
-  /** SV.COLOURS_USED of the latest step whose counts are back; -1 before the first, or when it did not solve. */
-  lastColoursUsed: number;
+  /** Items per colour of the latest step whose counts are back (NarrowPhaseResult.colourItems); null before the first, or when it did not solve. */
+  lastColourItems: readonly number[] | null;
 }
 
 export interface GpuSolverOptions {
@@ -130,8 +144,8 @@ export interface GpuSolverOptions {
   /**
    * Colours with a pass of their own in the warm start and each velocity and position iteration
    * when not fused (0 to COLOUR_CAP); the tail pass solves the rest, so any value gives the same
-   * bits. Default: the colours the latest step read back used + PASS_COLOUR_MARGIN, COLOUR_CAP
-   * before one is back.
+   * bits. Default: the leading colours of at least TAIL_COLOUR_ITEMS items in the latest step read
+   * back, COLOUR_CAP before one is back.
    */
   passColours?: number;
 }
@@ -166,7 +180,8 @@ export class GpuSolver {
   private readonly fusedOption: boolean | undefined;
   private readonly passColoursOption: number | undefined;
   private lastSolverCount = -1;
-  private lastColoursUsed = -1;
+  /** passColours by default: from the latest colour sizes read back (bindStep). */
+  private learnedPassColours = COLOUR_CAP;
   /** ColourParams per colour / round: colour c. */
   private readonly colourParams: Uniform[] = [];
   private readonly contactBodiesArray: GpuArray;
@@ -332,7 +347,7 @@ export class GpuSolver {
     s.solverList = io.solverList;
     s.contactCapacity = io.contactCapacity;
     this.lastSolverCount = io.lastSolverCount;
-    this.lastColoursUsed = io.lastColoursUsed;
+    this.learnedPassColours = largeColours(io.lastColourItems);
     this.toiIo.npState = io.npState;
     this.toiIo.contactRefs = io.contactRefs;
   }
@@ -376,12 +391,12 @@ export class GpuSolver {
 
   /**
    * Colours the step being recorded gives a pass of their own when not fused
-   * (GpuSolverOptions.passColours); the tail pass walks the others. Any value gives the same bits,
-   * so it may follow a count read back a few steps late.
+   * (GpuSolverOptions.passColours): the leading colours of at least TAIL_COLOUR_ITEMS items in the
+   * latest step read back, COLOUR_CAP before one is back; the tail pass walks the others. Any value
+   * gives the same bits, so it may follow sizes read back a few steps late.
    */
   get passColours(): number {
-    if (this.passColoursOption !== undefined) return this.passColoursOption;
-    return this.lastColoursUsed < 0 ? COLOUR_CAP : Math.min(COLOUR_CAP, this.lastColoursUsed + PASS_COLOUR_MARGIN);
+    return this.passColoursOption ?? this.learnedPassColours;
   }
 
   /** GpuStage.Colour. */
@@ -412,11 +427,12 @@ export class GpuSolver {
   };
 
   /**
-   * Copies the step's SV.COLOURS_USED and SV.PENETRATION, in that order (adjacent words), into
-   * `dst` at `offset` (the pipeline's read-back: passColours, the step's penetration).
+   * Copies the step's SV.COLOUR_START .. SV.PENETRATION words (SV_READBACK_WORDS) into `dst` at
+   * `offset`: the pipeline's read-back, whose colour sizes set the next steps' passColours, and
+   * the step's penetration.
    */
   encodeStateCopy(encoder: GPUCommandEncoder, dst: GPUBuffer, offset: number): void {
-    encoder.copyBufferToBuffer(this.state, 4 * SV.COLOURS_USED, dst, offset, 8);
+    encoder.copyBufferToBuffer(this.state, 4 * SV.COLOUR_START, dst, offset, 4 * SV_READBACK_WORDS);
   }
 
   // ---- Read-back for tests and tools (not part of a step) ----

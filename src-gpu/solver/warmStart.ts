@@ -1,9 +1,10 @@
 /*
  * Warm start (in GpuStage.Velocity) (shaders/solver/warmStart.wgsl): b2ContactSolver::WarmStart and the joints'
  * warm start (b2*Joint::InitVelocityConstraints), one pass per colour over its joints and
- * contacts for the host's first `passColours` colours (GpuSolver.passColours), then one tail pass
- * of one workgroup that walks the colours left, with barriers, and the overflow set (in one
- * invocation); for a small world every colour in one dispatch of one workgroup (encodeFused).
+ * contacts for the host's first `passColours` colours (GpuSolver.passColours: the leading colours
+ * of at least TAIL_COLOUR_ITEMS items), then one tail pass of one workgroup that walks the colours
+ * left, with barriers, and the overflow set (in one invocation); for a small world every colour in
+ * one dispatch of one workgroup (encodeFused).
  *
  * In:  the colour lists (colour.ts: colourKeys, SV.COLOUR_START, SV_ARGS.COLOURS), contactBodies,
  *      constraints (impulses already scaled by dtRatio), jointBodies, jointConstraints

@@ -11,7 +11,8 @@
  * the last colouring (it reuses it while every item keeps its dynamic bodies, colours again when
  * one changes or when its buffers were replaced). The fused passes (one workgroup) and the tail
  * pass that solves the colours past passColours give the bits of a pass per colour, whatever
- * passColours is, and passColours follows the colours read back (+ PASS_COLOUR_MARGIN).
+ * passColours is, and passColours follows the colour sizes read back (the leading colours of at
+ * least TAIL_COLOUR_ITEMS items), also across a step whose colouring changes.
  */
 
 import { expect, it } from 'vitest';
@@ -27,7 +28,7 @@ import type { b2DistanceJoint } from '../../src/dynamics/joints/b2DistanceJoint'
 import { b2GearJointDef } from '../../src/dynamics/joints/b2GearJoint';
 import { b2RevoluteJointDef } from '../../src/dynamics/joints/b2RevoluteJoint';
 import { b2World } from '../../src/dynamics/b2World';
-import { COLOUR_CAP, FUSED_SOLVER_ITEMS, PASS_COLOUR_MARGIN } from '../../src-gpu/device/layout';
+import { COLOUR_CAP, FUSED_SOLVER_ITEMS, TAIL_COLOUR_ITEMS } from '../../src-gpu/device/layout';
 import type { GpuSolverOptions } from '../../src-gpu/solver/solver';
 import { GpuStepper } from '../../src-gpu/stepper';
 import { describeGpu } from './support';
@@ -63,6 +64,11 @@ function pyramid(rows: number): b2World {
   ground(world);
   addPyramid(world, rows);
   return world;
+}
+
+/** `count` pyramids of 20 rows, 22 m apart (bench/gpu-step.ts's layout), the first at x = 22 `first`. */
+function addPyramids(world: b2World, count: number, first = 0): void {
+  for (let k = first; k < first + count; ++k) addPyramid(world, 20, 22 * k);
 }
 
 /** A wide plate on the ground with `n` circles resting on it: every contact shares the plate. */
@@ -537,76 +543,128 @@ describeGpu('GPU solver: graph colouring', (ctx) => {
     }
   }, 600_000);
 
-  it('records a pass for each colour the latest read-back step used, + PASS_COLOUR_MARGIN, every colour before one is back', async () => {
+  /** Items per colour (the overflow set last) from a solver state's colour starts. */
+  const itemsPerColour = (colourStart: number[]): number[] => colourStart.slice(1).map((end, c) => end - colourStart[c]);
+  /** The colours of a pass of their own after a step with these items per colour: the leading ones of at least TAIL_COLOUR_ITEMS. */
+  const largeColours = (items: number[]): number => {
+    const small = items.slice(0, COLOUR_CAP).findIndex((n) => n < TAIL_COLOUR_ITEMS);
+    return small < 0 ? COLOUR_CAP : small;
+  };
+
+  type Step = {
+    dispatches: number;
+    passColours: number;
+    items: number[];
+    coloursUsed: number;
+    recoloured: boolean;
+    readBack: number[] | null;
+    readBackUsed: number;
+  };
+
+  it('records a pass for each leading colour of at least TAIL_COLOUR_ITEMS items in the latest read-back step, every colour before one is back, to the bits of a pass per colour as the colouring changes', async () => {
+    // Five pyramids of 20 rows, then at step 3 five more: the colouring changes and its colours
+    // grow past TAIL_COLOUR_ITEMS.
     const run = async (passColours?: number) => {
-      const stepper = new GpuStepper(ctx, pyramid(10), { solver: { fused: false, passColours } });
-      const steps: { dispatches: number; passColours: number; coloursUsed: number; readBack: number }[] = [];
+      const world = new b2World(new b2Vec2(0, -10));
+      world.SetAllowSleeping(false);
+      ground(world, 230);
+      addPyramids(world, 5);
+      const stepper = new GpuStepper(ctx, world, { solver: { fused: false, passColours } });
+      const steps: Step[] = [];
       for (let i = 0; i < 6; ++i) {
+        if (i === 3) addPyramids(world, 5, 5);
         const r = await stepper.step(DT, 8, 3);
+        const state = await stepper.solver.readState();
         steps.push({
           dispatches: r.dispatches,
           passColours: stepper.solver.passColours,
-          coloursUsed: (await stepper.solver.readState()).coloursUsed,
-          readBack: r.coloursUsed,
+          items: itemsPerColour(state.colourStart),
+          coloursUsed: state.coloursUsed,
+          recoloured: state.recoloured,
+          readBack: r.colourItems,
+          readBackUsed: r.coloursUsed,
         });
       }
       await stepper.readBodies();
-      const state = bodyState(stepper.world);
-      // Steps in flight ({ wait: false }): the colours come back with each step's counts.
+      const state = bodyState(world);
+      // Steps in flight ({ wait: false }): the colour sizes come back with each step's counts.
       for (let i = 0; i < 3; ++i) await stepper.step(DT, 8, 3, { wait: false });
       const settled = await stepper.pipeline.settle();
-      const inFlight = { readBack: settled!.coloursUsed, coloursUsed: (await stepper.solver.readState()).coloursUsed };
+      const last = await stepper.solver.readState();
+      const inFlight = {
+        readBack: settled!.colourItems,
+        readBackUsed: settled!.coloursUsed,
+        items: itemsPerColour(last.colourStart),
+        coloursUsed: last.coloursUsed,
+      };
       stepper.destroy();
       return { steps, state, inFlight };
     };
     const learned = await run();
     const all = await run(COLOUR_CAP);
     expect(learned.state).toEqual(all.state);
-    expect(learned.inFlight.readBack).toBe(learned.inFlight.coloursUsed);
+    expect(learned.inFlight.readBack).toEqual(learned.inFlight.items);
+    expect(learned.inFlight.readBackUsed).toBe(learned.inFlight.coloursUsed);
     learned.steps.forEach((step, i) => {
-      expect(step.readBack, `step ${i}: read back`).toBe(step.coloursUsed);
-      const expected = i === 0 ? COLOUR_CAP : Math.min(COLOUR_CAP, learned.steps[i - 1].coloursUsed + PASS_COLOUR_MARGIN);
+      expect(step.readBack, `step ${i}: read back`).toEqual(step.items);
+      expect(step.readBackUsed, `step ${i}: read back`).toBe(step.coloursUsed);
+      expect(step.items, `step ${i}: the same colouring`).toEqual(all.steps[i].items);
+      const expected = i === 0 ? COLOUR_CAP : largeColours(learned.steps[i - 1].items);
       expect(step.passColours, `step ${i}: passColours`).toBe(expected);
       expect(all.steps[i].dispatches - step.dispatches, `step ${i}: dispatches`).toBe((COLOUR_CAP - expected) * PASSES_PER_COLOUR);
     });
     const perStep = (steps: { dispatches: number }[]) => steps.map((step) => step.dispatches).join(', ');
+    const sizes = (step: Step) => step.items.slice(0, step.coloursUsed).join(' ');
     console.log(
-      `pyramid of 10 rows, ${learned.steps[0].coloursUsed} colours: dispatches per step ${perStep(learned.steps)} (${perStep(all.steps)} with a pass for every colour)`,
+      `5 pyramids of 20 rows, then 10: items per colour ${sizes(learned.steps[0])}, then ${sizes(learned.steps[3])}; ` +
+        `passColours per step ${learned.steps.map((step) => step.passColours).join(', ')}; ` +
+        `dispatches per step ${perStep(learned.steps)} (${perStep(all.steps)} with a pass for every colour)`,
     );
-    // The pyramid uses fewer colours than the cap: the count drops after the first read-back.
-    expect(learned.steps[1].dispatches).toBeLessThan(learned.steps[0].dispatches);
+    // The pyramids have colours on both sides of TAIL_COLOUR_ITEMS: some colours get passes of
+    // their own, the small ones go to the tail, and more get passes once the colours grew.
+    const [before, after] = [learned.steps[1], learned.steps[4]];
+    expect(before.passColours).toBeGreaterThan(0);
+    expect(before.passColours).toBeLessThan(before.coloursUsed);
+    expect(after.passColours).toBeGreaterThan(before.passColours);
+    expect(after.passColours).toBeLessThan(after.coloursUsed);
+    expect(learned.steps[3].recoloured, 'the pyramids added are coloured').toBe(true);
+    expect(learned.steps[4].recoloured).toBe(false);
   }, 600_000);
 
-  it('solves a step that needs more colours than it has passes for (a pyramid added after a few colours were learned) to the bits of a pass per colour', async () => {
+  it('solves a step that needs more passes than it has (a pyramid added after one large colour was learned) to the bits of a pass per colour', async () => {
     const run = async (passColours?: number) => {
       const world = new b2World(new b2Vec2(0, -10));
       world.SetAllowSleeping(false);
-      ground(world);
+      ground(world, 470);
       const box = new b2PolygonShape();
       box.SetAsBox(0.5, 0.5);
-      for (let i = 0; i < 5; ++i) {
+      // One colour of TAIL_COLOUR_ITEMS + 44 contacts (every box on the ground alone).
+      for (let i = 0; i < TAIL_COLOUR_ITEMS + 44; ++i) {
         const def = new b2BodyDef();
         def.type = b2_dynamicBody;
-        def.position.Set(-20 + 3 * i, 0.5);
+        def.position.Set(-460 + 1.5 * i, 0.5);
         world.CreateBody(def).CreateFixture(box, 1);
       }
       const stepper = new GpuStepper(ctx, world, { solver: { fused: false, passColours } });
+      const passes: number[] = [];
       const beyond: number[] = [];
       for (let i = 0; i < 10; ++i) {
         if (i === 4) addPyramid(world, 10, 10);
         await stepper.step(DT, 8, 3);
+        passes.push(stepper.solver.passColours);
         beyond.push((await stepper.solver.readState()).coloursUsed - stepper.solver.passColours);
       }
       await stepper.readBodies();
       const state = bodyState(world);
       stepper.destroy();
-      return { state, beyond };
+      return { state, passes, beyond };
     };
     const learned = await run();
     const all = await run(COLOUR_CAP);
-    console.log(`boxes, then a pyramid: colours used past the passes, per step: ${learned.beyond.join(', ')}`);
-    // The boxes on the ground need one colour: the step that adds the pyramid has three passes,
-    // and the tail solves the colours past them.
+    console.log(`boxes, then a pyramid: passColours ${learned.passes.join(', ')}; colours used past them ${learned.beyond.join(', ')}`);
+    // The boxes on the ground need one colour, large: the step that adds the pyramid has one
+    // pass, and the tail solves the colours past it.
+    expect(learned.passes.slice(1, 5)).toEqual([1, 1, 1, 1]);
     expect(learned.beyond[4]).toBeGreaterThan(0);
     expect(learned.state).toEqual(all.state);
   }, 600_000);
