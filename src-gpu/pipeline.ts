@@ -381,6 +381,7 @@ export class GpuPipeline {
       solverCount: counts[NP.SOLVER],
       eventCount: counts[NP.EVENTS],
       binCounts,
+      keptCount: counts[NP.KEPT],
       contactCapacity: this.narrowPhase.contactCapacity,
       contactRegrows: regrows,
       dispatches,
