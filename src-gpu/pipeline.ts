@@ -5,7 +5,7 @@
  * In:  a synced GpuWorld (the mirror); the broad phase, the narrow phase and the solver, which own
  *      their buffers and kernels and encode their stages' dispatches when record() asks.
  * Out: one step's pairs, contacts and (with the solver) motion on the GPU; the step's counts
- *      (NarrowPhaseResult) from one read-back of 324 bytes plus timestamps: the broad phase's and
+ *      (NarrowPhaseResult) from one read-back of 320 bytes plus timestamps: the broad phase's and
  *      the narrow phase's state words and the solver's SV.COLOUR_START .. SV.PENETRATION (the
  *      colours' sizes, which GpuSolver.passColours follows, and the accuracy target's measure, so
  *      that it costs no read-back of its own).
@@ -447,6 +447,7 @@ export class GpuPipeline {
       penetration: solved.penetration,
       eventCount: counts[NP.EVENTS],
       binCounts,
+      keptCount: counts[NP.KEPT],
       contactCapacity: this.narrowPhase.contactCapacity,
       contactRegrows: regrows,
       dispatches,

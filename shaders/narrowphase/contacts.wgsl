@@ -5,7 +5,9 @@
 //      broadState[STATE_PAIR_SORT_COUNT], 0 when the pairs overflowed); proxyRef (fixture, child,
 //      body, flag word: shape type bits 0-1, PROXY_SENSOR); proxyKey (the engine's proxy id, the
 //      slot's generation); the previous step's keys prevKey[0, npState[NP_PREV]), sorted;
-//      params.curSet (the contact set written this step; the other holds the previous step).
+//      params.curSet (the contact set written this step; the other holds the previous step);
+//      bodyFlags (the body type) and bodyAwake (the awake flags as the step starts: last step's
+//      islands, and what the host uploaded since).
 // Out: `begin` (one invocation): npState[NP_CONTACTS] = min(n, capacity) (OVERFLOW_CONTACTS when
 //      n does not fit: the host grows the buffers and runs the narrow phase again),
 //      npState[NP_PREV], npState[NP_COUNT_0 + curSet], npState[NP_EVENT_SLOTS] and the indirect
@@ -15,14 +17,29 @@
 //      contactRef[2i + 1] = (fixture B, child B, body B, index of the same contact in the previous
 //      step or NO_CONTACT); items[i] = (bin, i) for the bin sort (BIN_NONE, which no kernel
 //      collides and persist.wgsl zeroes, cannot come from the broad phase's pair rules).
+//      `keep` (per contact i, after classify): a contact of the previous step whose bodies are
+//      both asleep or static gets CONTACT_KEPT in contactRef[2i].w and items[i] = (BIN_KEPT, i):
+//      no collide kernel sees it, persist.wgsl carries its previous manifold over.
 //      `bin_args` (one invocation, after the one-digit radix sort of items): npState[NP_BINS + b] =
 //      first entry of bin b in the sorted items, and the indirect size of each bin's kernel
-//      (zero workgroups for an empty bin: nothing runs).
+//      (zero workgroups for an empty bin: nothing runs); npState[NP_KEPT] = the kept contacts.
 // Invariants: A/B follow b2Contact::Create: the registry puts the polygon before a circle and the
 // edge or chain before a circle or polygon; two shapes of one type keep the broad-phase order of
 // b2BroadPhase::QueryCallback, lower engine proxy id first. A contact matches the previous step's
 // only with the same proxies and generations (a reused slot is a new contact, as in Box2D). The bin
 // sort is stable, so each bin lists its contacts in key order: the same order on every run.
+// Kept contacts follow b2ContactManager::Collide, which updates a contact only when one of its
+// bodies is awake and not static (activeA || activeB), with two differences that come from the
+// GPU's contacts being the pairs of this step: a contact new this step is always collided (in
+// 2.2.1 b2ContactManager::AddPair woke both bodies before the Collide that first sees it; the GPU
+// wakes them in the islands stage, after the collide), and a contact whose pair left the list is
+// gone, even between sleeping bodies (2.2.1 keeps it until a body wakes). The awake flags are
+// those of the start of the step: a body that 2.2.1's Collide wakes on the way (a touch change in
+// an earlier contact of its list) is collided from the next step. A body moved by SetTransform
+// while asleep stays asleep, as in 2.2.1: its contacts with sleeping or static bodies keep their
+// manifolds, and the new pairs its move makes are collided and wake it.
+// `keep` is a pass of its own because classify binds 8 storage buffers already, the most a stage
+// may (the device asks for the default limits), and the collide kernels too.
 
 struct ContactParams {
   curSet: u32,
@@ -43,6 +60,8 @@ struct ContactParams {
 @group(0) @binding(9) var<storage, read_write> contactRef: array<vec4<u32>>;
 @group(0) @binding(10) var<storage, read_write> items: array<vec2<u32>>;
 @group(0) @binding(11) var<storage, read> digitTotals: array<u32>;
+@group(0) @binding(12) var<storage, read> bodyFlags: array<u32>;
+@group(0) @binding(13) var<storage, read> bodyAwake: array<u32>;
 
 const SORT_TILE: u32 = 1024u;
 const SCAN_BLOCK: u32 = 4096u;
@@ -160,6 +179,27 @@ fn classify(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg:
   items[i] = vec2<u32>(bin, i);
 }
 
+// b2ContactManager::Collide's activeA / activeB: awake and not static.
+fn is_active(body: u32) -> bool {
+  return bodyAwake[body] != 0u && body_type(bodyFlags[body]) != STATIC_BODY;
+}
+
+@compute @workgroup_size(256)
+fn keep(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: vec3<u32>,
+        @builtin(local_invocation_index) lid: u32) {
+  let i = group_index(wid, nwg) * WORKGROUP_SIZE + lid;
+  if (i >= npState[NP_CONTACTS]) {
+    return;
+  }
+  let refA = contactRef[2u * i];
+  let refB = contactRef[2u * i + 1u];
+  if (refB.w == NO_CONTACT || is_active(refA.z) || is_active(refB.z)) {
+    return;
+  }
+  contactRef[2u * i] = vec4<u32>(refA.xyz, refA.w | CONTACT_KEPT);
+  items[i] = vec2<u32>(BIN_KEPT, i);
+}
+
 @compute @workgroup_size(1)
 fn bin_args() {
   var start = 0u;
@@ -170,4 +210,5 @@ fn bin_args() {
     start = start + count;
   }
   npState[NP_BINS + BIN_COUNT] = start;
+  npState[NP_KEPT] = digitTotals[BIN_KEPT];
 }

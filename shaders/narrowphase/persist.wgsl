@@ -1,13 +1,17 @@
 // persist.wgsl: GpuStage.Persist, contact persistence: the touching state, the warm-start
 // impulses carried over from the previous step, and the begin/end flags.
 //
-// In:  this step's manifolds (headers and ids from the collide kernels), contactRef (bin, sensor
-//      and swapped flags; the previous step's index of each contact, contacts.wgsl), the previous
-//      step's manifolds and keys, this step's keys.
-// Out: `main` (per contact i): the header completed with MF_SENSOR, MF_SWAPPED, MF_WARM, MF_BEGAN,
-//      MF_ENDED and word 3 = the previous step's index; manifolds[4i + 3] = (normalImpulse,
-//      tangentImpulse) of points 0 and 1, copied from the previous manifold's point with the same
-//      b2ContactID key and 0 otherwise (b2Contact::Update; sensors carry nothing);
+// In:  this step's manifolds (headers and ids from the collide kernels), contactRef (bin, kept,
+//      sensor and swapped flags; the previous step's index of each contact, contacts.wgsl), the
+//      previous step's manifolds and keys, this step's keys.
+// Out: `main` (per contact i): a kept contact (CONTACT_KEPT: no kernel collided it) first takes
+//      the previous step's manifold, its type, points, ids, touching flag and impulses, unchanged
+//      (b2ContactManager::Collide leaves a contact of sleeping bodies as it was); then for every
+//      contact the header completed with MF_SENSOR, MF_SWAPPED, MF_WARM, MF_BEGAN, MF_ENDED (never
+//      for a kept one: its touching state is the previous one) and word 3 = the previous step's
+//      index; manifolds[4i + 3] = (normalImpulse, tangentImpulse) of points 0 and 1, copied from
+//      the previous manifold's point with the same b2ContactID key and 0 otherwise
+//      (b2Contact::Update; sensors carry nothing), or as they were for a kept contact;
 //      solverFlags[i] = touching and not a sensor; eventFlags[i] = began or ended.
 //      `vanished` (per previous contact j): eventFlags[NP_CONTACTS + j] = 1 when the contact is gone
 //      this step (no contact with its proxies and generations) and was touching: b2ContactManager
@@ -35,8 +39,13 @@ fn main(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: vec
   let previous = contactRef[2u * i + 1u].w;
   let bin = (refA.w >> 4u) & 0xfu;
   let sensor = (refA.w & 2u) != 0u;
+  let kept = (refA.w & CONTACT_KEPT) != 0u;
   var h = manifolds[4u * i];
-  if (bin == BIN_NONE) {
+  if (kept) {
+    h = prevManifolds[4u * previous];
+    manifolds[4u * i + 1u] = prevManifolds[4u * previous + 1u];
+    manifolds[4u * i + 2u] = prevManifolds[4u * previous + 2u];
+  } else if (bin == BIN_NONE) {
     h = vec4<u32>(0u);
     manifolds[4u * i + 1u] = vec4<u32>(0u);
     manifolds[4u * i + 2u] = vec4<u32>(0u);
@@ -55,7 +64,9 @@ fn main(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: vec
     flags = flags | MF_WARM;
     let ph = prevManifolds[4u * previous];
     wasTouching = (ph.x & MF_TOUCHING) != 0u;
-    if (!sensor) {
+    if (kept) {
+      impulses = bitcast<vec4<f32>>(prevManifolds[4u * previous + 3u]);
+    } else if (!sensor) {
       let count = (flags >> 2u) & 3u;
       let prevCount = (ph.x >> 2u) & 3u;
       let prevImpulses = bitcast<vec4<f32>>(prevManifolds[4u * previous + 3u]);

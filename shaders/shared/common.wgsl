@@ -177,6 +177,7 @@ const NP_PAIRS: u32 = 6u;              // pairs the broad phase handed over (the
 const NP_SOLVER: u32 = 7u;             // touching non-sensor contacts (the solver list's length)
 const NP_EVENTS: u32 = 8u;             // begin/end events
 const NP_EVENT_SLOTS: u32 = 9u;        // NP_CONTACTS + NP_PREV (the event scan's length)
+const NP_KEPT: u32 = 10u;              // contacts kept from the previous step, not collided (BIN_KEPT)
 const NP_BINS: u32 = 16u;              // 9 words: first contact of bin b in the binned list, then the end
 
 const OVERFLOW_CONTACTS: u32 = 1u;
@@ -191,7 +192,12 @@ const BIN_CHAIN_CIRCLE: u32 = 5u;      // chain child A, circle B
 const BIN_CHAIN_POLYGON: u32 = 6u;     // chain child A, polygon B
 const BIN_SENSOR: u32 = 7u;            // either fixture is a sensor: b2TestOverlap only
 const BIN_NONE: u32 = 8u;              // no contact type (not produced by the broad phase)
+const BIN_KEPT: u32 = 9u;              // sort digit only: neither body awake and non-static, no kernel runs
 const BIN_COUNT: u32 = 8u;
+
+// Bit of contactRef's flag word (bin << 4 | CONTACT_KEPT | sensor << 1 | swapped): the contact
+// keeps the previous step's manifold (contacts.wgsl `keep`, persist.wgsl).
+const CONTACT_KEPT: u32 = 0x4u;
 
 // Indirect-dispatch triples of the narrow phase (u32 word offsets in its indirect buffer).
 const NP_ARGS_CONTACTS: u32 = 0u;      // one invocation per contact

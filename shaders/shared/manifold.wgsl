@@ -2,7 +2,8 @@
 // overlap) share; the host prepends it to each of them after common.wgsl.
 //
 // In:  the binned contact list (binned[k].y = contact index; bin b holds entries
-//      [npState[NP_BINS + b], npState[NP_BINS + b + 1])), contactRef (the oriented fixtures,
+//      [npState[NP_BINS + b], npState[NP_BINS + b + 1]); the kept contacts of sleeping or static
+//      bodies come after every bin and no kernel reads them), contactRef (the oriented fixtures,
 //      children and bodies of each contact, contacts.wgsl), and the world mirror's fixtureShape,
 //      shapePool, bodyXf and bodyCell (src-gpu/device/layout.ts).
 // Out: manifolds[4c .. 4c + 3) of each contact c of the bin, b2Manifold as the contact's

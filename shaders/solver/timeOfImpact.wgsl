@@ -51,7 +51,7 @@ const TWO_PI: f32 = 6.28318530717958647692;
 
 // bodyFlags: b2Body::m_flags | type << 16 | BODY_LIVE (BODY_BULLET, the types: src-gpu/device/engineWgsl.ts).
 
-// contactRef[2c].w: bin << 4 | sensor << 1 | swapped.
+// contactRef[2c].w: bin << 4 | CONTACT_KEPT | sensor << 1 | swapped.
 const REF_SENSOR: u32 = 0x2u;
 
 // b2TOIOutput::State

@@ -16,7 +16,10 @@
  * first step in a world never stepped (m_inv_dt0 = 0), and a body whose velocity changes by more
  * than the prediction within a step, can miss a pair there.
  * Unlike b2DynamicTree's fat AABBs, these are recomputed from scratch each step: no hysteresis, so
- * the pair set is a function of the current sweeps and velocities alone.
+ * the pair set is a function of the current sweeps and velocities alone. A sleeping body's proxies
+ * are recomputed too and come out the same (its sweep stays, its velocity is zero): skipping them
+ * would bind the awake flags, a ninth storage buffer, in a pass that costs little next to the
+ * sorts and the sweep after it (docs/GPU.md, "The step").
  */
 
 import type { GpuContext } from '../device/device';

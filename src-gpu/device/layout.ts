@@ -90,7 +90,7 @@
  * previous step's (keys and manifolds), the rest is per step.
  *   contactKey  vec4<u32>  proxy a, proxy b (a < b, the pair), generation of a, generation of b:
  *                          the persistent key, sorted
- *   contactRef  2 x vec4<u32>  (fixture A, child A, body A, bin << 4 | sensor << 1 | swapped),
+ *   contactRef  2 x vec4<u32>  (fixture A, child A, body A, bin << 4 | CONTACT_KEPT | sensor << 1 | swapped),
  *                          (fixture B, child B, body B, previous step's index or NO_CONTACT):
  *                          A and B ordered as b2Contact::Create orders the fixtures
  *   manifold    4 x vec4   [header (u32): type | pointCount << 2 | MF flags, id key 0, id key 1,
@@ -234,6 +234,7 @@ export const NP = {
   SOLVER: 7,
   EVENTS: 8,
   EVENT_SLOTS: 9,
+  KEPT: 10,
   BINS: 16,
 } as const;
 export const NP_STATE_WORDS = 32;
@@ -252,8 +253,15 @@ export const BIN = {
   CHAIN_POLYGON: 6,
   SENSOR: 7,
   NONE: 8,
+  KEPT: 9,
 } as const;
 export const BIN_COUNT = 8;
+/**
+ * Bit of contactRef's flag word (word 3 of a contact's first record): the contact is not collided
+ * this step and keeps the previous step's manifold (b2ContactManager::Collide: neither body awake
+ * and non-static; shaders/narrowphase/contacts.wgsl `keep`).
+ */
+export const CONTACT_KEPT = 0x4;
 export const BIN_NAMES = ['circles', 'polygon-circle', 'polygons', 'edge-circle', 'edge-polygon', 'chain-circle', 'chain-polygon', 'sensor'] as const;
 
 /** Word offsets of the narrow phase's indirect triples (shaders/shared/common.wgsl NP_ARGS_*). */

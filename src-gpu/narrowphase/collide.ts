@@ -2,7 +2,10 @@
  * What the four collide stages share on the host (collideCircle.ts, collidePolygon.ts,
  * collideEdge.ts, overlap.ts): their bindings (shaders/shared/manifold.wgsl) and one indirect dispatch
  * per bin, sized by contacts.wgsl's bin_args (zero workgroups for an empty bin), recorded only
- * for the bins the world's fixtures can fill (binInUse).
+ * for the bins the world's fixtures can fill (binInUse). The contacts of bodies asleep or static
+ * are sorted after every bin (BIN.KEPT, contacts.ts) and reach no kernel: persist.ts carries their
+ * manifolds over. The kernels bind 8 storage buffers, the most a stage may, so the awake flags
+ * are read by contacts.wgsl's `keep` pass instead.
  */
 
 import type { GpuContext } from '../device/device';

@@ -4,13 +4,21 @@
  * step's.
  *
  * In:  the broad phase's sorted pairs and state (STATE.PAIR_SORT_COUNT); the world mirror's
- *      proxyRef and proxyKey; the previous contact set's keys and count (npState).
+ *      proxyRef, proxyKey, bodyFlags and bodyAwake; the previous contact set's keys and count
+ *      (npState).
  * Out: npState[NP.CONTACTS], NP.PREV, NP.EVENT_SLOTS and the indirect sizes of the passes over
  *      contacts (`begin`); per contact its key, its oriented fixtures (contactRef) and the previous
- *      step's index (`classify`); the contacts sorted by bin, stably (one 4-bit radix pass, so each
- *      bin keeps key order), and the bins' offsets and indirect sizes (`bin_args`).
+ *      step's index (`classify`); CONTACT_KEPT on the contacts of the previous step whose bodies are
+ *      both asleep or static (`keep`: b2ContactManager::Collide skips them); the contacts sorted by
+ *      bin, stably (one 4-bit radix pass, so each bin keeps key order), the kept ones after every
+ *      bin (BIN.KEPT), and the bins' offsets and indirect sizes and the kept count (`bin_args`,
+ *      NP.KEPT).
  * Binning costs no read-back: count (the radix pass's per-tile histograms), scan (its digit
- * totals), scatter (its downsweep); an empty bin gets an indirect size of zero workgroups.
+ * totals), scatter (its downsweep); an empty bin gets an indirect size of zero workgroups, and no
+ * collide kernel runs over the kept contacts: a sleeping pile costs the copy persist.ts makes.
+ * Invariants: `keep` is a pass of its own since classify binds the 8 storage buffers a stage may
+ * (the device keeps the default limits); the rule and its differences from 2.2.1 are in
+ * contacts.wgsl's header.
  */
 
 import type { GpuContext } from '../device/device';
@@ -31,11 +39,14 @@ export interface ContactsInputs {
   contactRef: GPUBuffer;
   items: GPUBuffer;
   itemsTmp: GPUBuffer;
+  bodyFlags: GPUBuffer;
+  bodyAwake: GPUBuffer;
 }
 
 export class ContactsStage {
   private readonly begin: Kernel;
   private readonly classify: Kernel;
+  private readonly keep: Kernel;
   private readonly binArgs: Kernel;
   private readonly params: Uniform;
   readonly sort: RadixSort;
@@ -43,6 +54,7 @@ export class ContactsStage {
   constructor(ctx: GpuContext) {
     this.begin = new Kernel(ctx, 'contacts', 'begin');
     this.classify = new Kernel(ctx, 'contacts', 'classify');
+    this.keep = new Kernel(ctx, 'contacts', 'keep');
     this.binArgs = new Kernel(ctx, 'contacts', 'bin_args');
     this.params = new Uniform(ctx, 'contacts params', 4);
     this.sort = new RadixSort(ctx);
@@ -53,7 +65,7 @@ export class ContactsStage {
     this.sort.reserve(capacity);
   }
 
-  /** begin, classify, the bin sort, bin_args; returns the buffer holding the binned (bin, contact) list. */
+  /** begin, classify, keep, the bin sort, bin_args; returns the buffer holding the binned (bin, contact) list. */
   encode(rec: Recorder, io: ContactsInputs, curSet: number): GPUBuffer {
     this.params.u32[0] = curSet;
     this.params.upload();
@@ -71,6 +83,12 @@ export class ContactsStage {
         9: io.contactRef,
         10: io.items,
       }),
+      io.npIndirect,
+      NP_ARGS.CONTACTS * 4,
+    );
+    rec.dispatchIndirect(
+      this.keep,
+      this.keep.bind({ 2: io.npState, 9: io.contactRef, 10: io.items, 12: io.bodyFlags, 13: io.bodyAwake }),
       io.npIndirect,
       NP_ARGS.CONTACTS * 4,
     );

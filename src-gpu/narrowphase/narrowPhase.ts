@@ -3,17 +3,21 @@
  *
  * Its stages, recorded by GpuPipeline (pipeline.ts) after the broad phase's:
  *   contacts  oriented contacts (b2Contact::Create's A/B rule), keys, match with the previous
- *             step's contacts (binary search on the sorted keys), bins by pair type (one stable
- *             4-bit radix pass: count, scan, scatter), the bins' indirect sizes   contacts.ts
+ *             step's contacts (binary search on the sorted keys), the contacts of sleeping or
+ *             static bodies kept (b2ContactManager::Collide skips them), bins by pair type (one
+ *             stable 4-bit radix pass: count, scan, scatter), the bins' indirect sizes   contacts.ts
  *   collide   one kernel per bin: circles, polygon-circle, polygons, edge-circle, edge-polygon,
  *             chain-circle, chain-polygon, sensors (b2TestOverlap); an empty bin's indirect
- *             size is zero workgroups, so nothing runs for it            collideCircle.ts,
+ *             size is zero workgroups, so nothing runs for it; kept contacts are in no bin
+ *                                                                        collideCircle.ts,
  *                                                                        collidePolygon.ts,
  *                                                                        collideEdge.ts, overlap.ts
- *   persist   touching state, impulses carried by b2ContactID key, began/ended     persist.ts
+ *   persist   touching state, impulses carried by b2ContactID key, began/ended; kept contacts
+ *             take the previous step's manifold as it was                          persist.ts
  *   compact   prefix scans: the solver's list of touching non-sensor contacts, and the
  *             begin/end events (contacts gone with their pair included)  compact.ts
- * In:  the pairs and the state words of the broad phase (bindStep), the mirror's tables.
+ * In:  the pairs and the state words of the broad phase (bindStep), the mirror's tables (the
+ *      awake flags as the step starts among them).
  * Out: contact set `cur` (keys, manifolds), contactRef, the solver list, the events, the counts
  *      in `state` (layout.ts NP); the solver reads them (outputs()).
  * Contacts are the pairs, in pair order (sorted by proxy slots): contact i of a step is pair i.
@@ -88,8 +92,10 @@ export interface NarrowPhaseResult {
   colourItems: number[] | null;
   /** Begin/end events. */
   eventCount: number;
-  /** Contacts per bin (layout.ts BIN order). */
+  /** Contacts per bin (layout.ts BIN order): the contacts collided this step. */
   binCounts: number[];
+  /** Contacts kept from the previous step without collision (bodies asleep or static: NP.KEPT). */
+  keptCount: number;
   contactCapacity: number;
   /** Times the contact buffers grew during this step. */
   contactRegrows: number;
@@ -196,6 +202,8 @@ export class GpuNarrowPhase {
       contactRef: placeholder,
       items: placeholder,
       itemsTmp: placeholder,
+      bodyFlags: placeholder,
+      bodyAwake: placeholder,
     };
     this.collideIo = {
       params: this.collideParams.buffer,
@@ -313,6 +321,8 @@ export class GpuNarrowPhase {
     c.contactRef = this.contactRef.buffer;
     c.items = this.items.buffer;
     c.itemsTmp = this.itemsTmp.buffer;
+    c.bodyFlags = mirror.bodyFlags.buffer;
+    c.bodyAwake = mirror.bodyAwake.buffer;
     const k = this.collideIo;
     k.binned = this.items.buffer;
     k.contactRef = this.contactRef.buffer;
@@ -442,7 +452,7 @@ export class GpuNarrowPhase {
   async readAll(): Promise<Uint8Array> {
     const np = await this.readState();
     const n = np[NP.CONTACTS];
-    const counts = [NP.CONTACTS, NP.PREV, NP.PAIRS, NP.SOLVER, NP.EVENTS, NP.EVENT_SLOTS].map((w) => np[w]);
+    const counts = [NP.CONTACTS, NP.PREV, NP.PAIRS, NP.SOLVER, NP.EVENTS, NP.EVENT_SLOTS, NP.KEPT].map((w) => np[w]);
     for (let b = 0; b <= BIN_COUNT; ++b) counts.push(np[NP.BINS + b]);
     const parts = [
       new Uint8Array(Uint32Array.from(counts).buffer),

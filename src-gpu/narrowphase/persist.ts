@@ -5,8 +5,10 @@
  * In:  this step's manifolds (from the collide kernels), contactRef (flags, previous index), the
  *      previous step's manifolds and keys, this step's keys, npState.
  * Out: completed manifold headers (MF flags, previous index) and impulses (carried by matching
- *      b2ContactID keys); solverFlags (touching, not a sensor) and eventFlags (began or ended,
- *      then one slot per previous contact: gone while touching) for compact.ts's scans.
+ *      b2ContactID keys); a kept contact (CONTACT_KEPT, contacts.ts: bodies asleep or static, no
+ *      kernel collided it) the previous step's manifold, touching state and impulses as they were;
+ *      solverFlags (touching, not a sensor) and eventFlags (began or ended, then one slot per
+ *      previous contact: gone while touching) for compact.ts's scans.
  */
 
 import type { GpuContext } from '../device/device';

@@ -7,7 +7,7 @@
  * Invariants: decoding only; nothing here runs in a step.
  */
 
-import { MANIFOLD_WORDS, MF, NO_CONTACT } from '../device/layout';
+import { CONTACT_KEPT, MANIFOLD_WORDS, MF, NO_CONTACT } from '../device/layout';
 
 /** A contact as readContacts() returns it (a debugging and test view of the GPU records). */
 export interface GpuContactRecord {
@@ -23,6 +23,8 @@ export interface GpuContactRecord {
   fixtureB: number;
   childB: number;
   bin: number;
+  /** Not collided this step: the previous step's manifold, kept (CONTACT_KEPT: bodies asleep or static). */
+  kept: boolean;
   sensor: boolean;
   touching: boolean;
   began: boolean;
@@ -82,6 +84,7 @@ export function decodeContacts(keys: Uint32Array, refs: Uint32Array, manifolds: 
       fixtureB: refs[8 * i + 4],
       childB: refs[8 * i + 5],
       bin: (refs[8 * i + 3] >> 4) & 0xf,
+      kept: (refs[8 * i + 3] & CONTACT_KEPT) !== 0,
       sensor: (h & MF.SENSOR) !== 0,
       touching: (h & MF.TOUCHING) !== 0,
       began: (h & MF.BEGAN) !== 0,

@@ -220,7 +220,7 @@ describeGpu('WebGPUBackend: the world API on the GPU', (ctx) => {
     const { world } = dropScene();
     const backend = await WebGPUBackend.create({ context: ctx });
     await world.SetBackend(backend);
-    // Steps only: each maps its 324-byte counts (the narrow phase's overflow check), nothing else.
+    // Steps only: each maps its 320-byte counts (the narrow phase's overflow check), nothing else.
     const stepsOnly = await countMaps(ctx, async () => {
       for (let i = 0; i < 3; ++i) world.Step(DT, 8, 3);
       await backend.submitted();

@@ -120,6 +120,9 @@ it("declares the narrow phase's state words, bins, indirect offsets and contact 
   for (const [name, value] of Object.entries(layout.BIN)) expect(c.get(`BIN_${name}`), name).toBe(value);
   for (const [name, value] of Object.entries(layout.MF)) expect(c.get(`MF_${name}`), name).toBe(value);
   expect(c.get('BIN_COUNT')).toBe(layout.BIN_COUNT);
+  // The bin sort is one 4-bit radix pass: every digit, BIN_NONE and BIN_KEPT included, fits it.
+  expect(Math.max(...Object.values(layout.BIN))).toBeLessThan(16);
+  expect(c.get('CONTACT_KEPT')).toBe(layout.CONTACT_KEPT);
   expect(c.get('OVERFLOW_CONTACTS')).toBe(layout.OVERFLOW_CONTACTS);
   expect(c.get('NO_CONTACT')).toBe(layout.NO_CONTACT);
   expect(c.get('EVENT_BEGIN')).toBe(layout.EVENT_BEGIN);

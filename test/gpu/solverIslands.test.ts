@@ -32,10 +32,8 @@ import { GpuStepper } from '../../src-gpu/stepper';
 import type { GpuWorld } from '../../src-gpu/world/world';
 import { loadGoldenScene } from '../support/scene';
 import { describeGpu } from './support';
+import { allAsleep, allAwake, column, DT, motion, POSITION_ITERATIONS, pyramid, restingWorld, stepUntilAsleep, VELOCITY_ITERATIONS } from './resting';
 
-const DT = 1 / 60;
-const VELOCITY_ITERATIONS = 8;
-const POSITION_ITERATIONS = 3;
 /**
  * Steps between the engine's and the GPU's falling asleep. The sleep timer starts when every
  * body of the island is below b2_linearSleepTolerance (0.01 m/s) and b2_angularSleepTolerance:
@@ -88,37 +86,6 @@ function engineIslands(world: b2World, mirror: GpuWorld): Uint32Array {
   return labels;
 }
 
-/** A ground box (top at y = 0) and boxes of half size 0.5 at `at`, exactly touching, at rest. */
-function restingWorld(at: number[][], allowSleep = true): { world: b2World; boxes: b2Body[] } {
-  const world = new b2World(new b2Vec2(0, -10));
-  world.SetAllowSleeping(allowSleep);
-  const ground = world.CreateBody(new b2BodyDef());
-  const groundShape = new b2PolygonShape();
-  groundShape.SetAsBox(40, 1, new b2Vec2(0, -1), 0);
-  ground.CreateFixture(groundShape, 0);
-  const box = new b2PolygonShape();
-  box.SetAsBox(0.5, 0.5);
-  const boxes = at.map(([x, y]) => {
-    const def = new b2BodyDef();
-    def.type = b2_dynamicBody;
-    def.position.Set(x, y);
-    const body = world.CreateBody(def);
-    body.CreateFixture(box, 1);
-    return body;
-  });
-  return { world, boxes };
-}
-
-const column = (x: number, n: number) => Array.from({ length: n }, (_, i) => [x, 0.5 + i]);
-const pyramid = (rows: number) => {
-  const at: number[][] = [];
-  for (let row = 0; row < rows; ++row) for (let i = 0; i < rows - row; ++i) at.push([-rows / 2 + i + 0.5 * row + 0.5, 0.5 + row]);
-  return at;
-};
-
-const allAsleep = (bodies: b2Body[]) => bodies.every((b) => !b.IsAwake());
-const allAwake = (bodies: b2Body[]) => bodies.every((b) => b.IsAwake());
-
 /** The GPU's awake words, read without writing anything into the world. */
 async function gpuAwake(ctx: GpuContext, mirror: GpuWorld): Promise<Uint32Array> {
   const bytes = 4 * mirror.bodySlotCount;
@@ -132,22 +99,6 @@ async function gpuAwake(ctx: GpuContext, mirror: GpuWorld): Promise<Uint32Array>
   staging.destroy();
   return out;
 }
-
-/** Transform, sweep, velocities and sleep time of the bodies as float64 values (float32 on the GPU side). */
-const motion = (bodies: b2Body[]) =>
-  bodies.map((b) => [
-    b.m_xf.p.x,
-    b.m_xf.p.y,
-    b.m_xf.q.c,
-    b.m_xf.q.s,
-    b.m_sweep.c.x,
-    b.m_sweep.c.y,
-    b.m_sweep.a,
-    b.m_linearVelocity.x,
-    b.m_linearVelocity.y,
-    b.m_angularVelocity,
-    b.m_sleepTime,
-  ]);
 
 it("compiles the islands stage with b2Settings' sleep constants and the islands layout the host uses", () => {
   const source = SHADERS.islands;
@@ -301,16 +252,6 @@ describeGpu('GPU sleeping against the engine', (ctx) => {
     });
   }
 });
-
-/** Steps until every body of `bodies` reads back asleep (at most `limit` steps); returns the steps taken. */
-async function stepUntilAsleep(stepper: GpuStepper, bodies: b2Body[], limit = 200): Promise<number> {
-  for (let step = 1; step <= limit; ++step) {
-    await stepper.step(DT, VELOCITY_ITERATIONS, POSITION_ITERATIONS);
-    await stepper.readBodies();
-    if (allAsleep(bodies)) return step;
-  }
-  throw new Error(`not asleep after ${limit} steps`);
-}
 
 describeGpu('GPU waking', (ctx) => {
   it('a box dropped onto one of two sleeping columns wakes that whole column and never the other', async () => {
