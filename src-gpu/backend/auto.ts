@@ -221,6 +221,11 @@ export class AutoBackend implements b2WorldBackend {
     if (this.onGpu) this.inner!.PullAll();
   }
 
+  /** On the GPU the inner backend keeps the contacts; on JavaScript the world's list is the engine's. */
+  KeepsContacts(): boolean {
+    return this.onGpu;
+  }
+
   /** The inner backend's while the GPU steps the world; on JavaScript the world's contacts are the engine's own. */
   GetPenetration(): number | null {
     return this.onGpu ? this.inner!.GetPenetration() : null;

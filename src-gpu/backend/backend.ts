@@ -262,6 +262,11 @@ export class WebGPUBackend implements b2WorldBackend {
    * recorded after the first call (GpuPipeline.measurePenetration): a world that never asks
    * does not pay for it.
    */
+  /** While attached the GPU keeps the world's contacts (b2WorldBackend.KeepsContacts). */
+  KeepsContacts(): boolean {
+    return this.world !== null;
+  }
+
   GetPenetration(): number | null {
     if (this.stepperNow !== null) this.stepperNow.pipeline.measurePenetration = true;
     return this.world !== null && this.syncedPenetration >= 0 ? this.syncedPenetration : null;

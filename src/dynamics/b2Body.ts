@@ -390,7 +390,8 @@ export class b2Body {
       f.Synchronize(broadPhase, xf, xf);
     }
 
-    this.m_world.m_contactManager.FindNewContacts();
+    // Not in the C++: a backend that keeps the contacts finds the moved body's pairs itself.
+    if (this.m_world.GetBackend()?.KeepsContacts?.() !== true) this.m_world.m_contactManager.FindNewContacts();
     this.NotifyChanged(true);
   }
 

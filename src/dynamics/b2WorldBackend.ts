@@ -70,6 +70,12 @@ export interface b2WorldBackend {
    * cannot measure penetration on the backend.
    */
   GetPenetration?(): number | null;
+  /**
+   * Optional: whether the backend keeps the world's contacts now (its contact list then stays
+   * empty). The engine then leaves the pairs a moved body makes to the backend: b2Body.SetTransform
+   * looks for none.
+   */
+  KeepsContacts?(): boolean;
 }
 
 function listenerOverrides(listener: object | null, method: b2OverridableCallback): boolean {

@@ -216,6 +216,29 @@ describeGpu('WebGPUBackend: the world API on the GPU', (ctx) => {
     await world.SetBackend(null);
   }, 300_000);
 
+  it("SetTransform while the GPU keeps the contacts leaves the world's contact list empty; the GPU finds the moved body's pairs, and they come back with the world", async () => {
+    const { world, boxes } = dropScene();
+    const backend = await WebGPUBackend.create({ context: ctx });
+    await world.SetBackend(backend);
+    expect(backend.KeepsContacts()).toBe(true);
+    await world.StepAsync(DT, 8, 3);
+    // Box 4 set down on box 0's top (box 0 rests on the ground at x = 0): the engine's broad phase
+    // would pair them at once (b2Body::SetTransform calls FindNewContacts).
+    boxes[4].SetTransform(new b2Vec2(boxes[0].GetPosition().x, boxes[0].GetPosition().y + 0.99), 0);
+    expect(world.GetContactCount()).toBe(0);
+    for (let i = 0; i < 5; ++i) await world.StepAsync(DT, 8, 3);
+    expect(world.GetContactCount()).toBe(0);
+    await world.SetBackend(null);
+    expect(backend.KeepsContacts()).toBe(false);
+    const pairs = [];
+    for (let c = world.GetContactList(); c; c = c.GetNext()) {
+      const a = c.GetFixtureA().GetBody();
+      const b = c.GetFixtureB().GetBody();
+      if ((a === boxes[4] && b === boxes[0]) || (a === boxes[0] && b === boxes[4])) pairs.push(c.IsTouching());
+    }
+    expect(pairs).toEqual([true]);
+  }, 300_000);
+
   it('reads back with one map per synchronisation (none without one), on top of the one count read-back per step', async () => {
     const { world } = dropScene();
     const backend = await WebGPUBackend.create({ context: ctx });
