@@ -78,25 +78,28 @@ export function hostTableStore(bytes: number): ArrayBufferLike {
   return typeof SharedArrayBuffer === 'function' ? new SharedArrayBuffer(bytes) : new ArrayBuffer(bytes);
 }
 
-/**
- * Uploads go through this when the shadow is shared memory: Dawn's writeBuffer in Node takes no
- * view of it.
- */
-const UPLOAD_STAGE_BYTES = 1 << 22;
-let uploadStage: Uint8Array | null = null;
+/** The stage of uploads from shared memory: Dawn's writeBuffer in Node takes no view of it. */
+const UPLOAD_STAGE_WORDS = 1 << 20;
+let uploadStage: Uint32Array | null = null;
 
-function writeShadow(queue: GPUQueue, buffer: GPUBuffer, offset: number, words: Uint32Array, byteOffset: number, bytes: number): void {
-  if (!(words.buffer instanceof ArrayBuffer)) {
-    uploadStage ??= new Uint8Array(UPLOAD_STAGE_BYTES);
-    const source = new Uint8Array(words.buffer, byteOffset, bytes);
-    for (let at = 0; at < bytes; at += UPLOAD_STAGE_BYTES) {
-      const part = Math.min(UPLOAD_STAGE_BYTES, bytes - at);
-      uploadStage.set(source.subarray(at, at + part));
-      queue.writeBuffer(buffer, offset + at, uploadStage.buffer, 0, part);
-    }
+/**
+ * Writes words [first, first + count) of `words` at byte `offset` of `buffer`. From shared memory
+ * the words are copied into the stage by a loop, not through views, so that a steady-state
+ * upload allocates nothing.
+ */
+function writeShadow(queue: GPUQueue, buffer: GPUBuffer, offset: number, words: Uint32Array, first: number, count: number): void {
+  if (words.buffer instanceof ArrayBuffer) {
+    queue.writeBuffer(buffer, offset, words.buffer, words.byteOffset + 4 * first, 4 * count);
     return;
   }
-  queue.writeBuffer(buffer, offset, words.buffer, byteOffset, bytes);
+  uploadStage ??= new Uint32Array(UPLOAD_STAGE_WORDS);
+  const stage = uploadStage;
+  for (let at = 0; at < count; at += UPLOAD_STAGE_WORDS) {
+    const part = Math.min(UPLOAD_STAGE_WORDS, count - at);
+    const from = first + at;
+    for (let i = 0; i < part; ++i) stage[i] = words[from + i];
+    queue.writeBuffer(buffer, offset + 4 * at, stage.buffer, 0, 4 * part);
+  }
 }
 
 /** Dirty runs closer than this many elements are uploaded as one write. */
@@ -284,7 +287,7 @@ export class MirrorTable {
     const dirty = this.dirty;
     let elements = 0;
     const write = (from: number, to: number) => {
-      writeShadow(queue, this.gpu.buffer, from * bytesPerElement, this.u32, this.u32.byteOffset + from * bytesPerElement, (to - from) * bytesPerElement);
+      writeShadow(queue, this.gpu.buffer, from * bytesPerElement, this.u32, from * this.words, (to - from) * this.words);
       if (stats) {
         stats.bytes += (to - from) * bytesPerElement;
         stats.writes++;
