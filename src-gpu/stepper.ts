@@ -14,7 +14,8 @@
  *      b2Body objects (readBodies(): both at once).
  * Authority: once the constructor has uploaded the world, the GPU's copy of the body motion is
  * the one that counts (GpuWorld.gpuOwnsMotion; so the first step need not walk the whole world
- * again): the world's bodies keep their old positions and velocities until they are pulled. Motion set through the API (SetTransform, SetLinearVelocity, impulses) replaces the
+ * again): the world's bodies keep their old positions and velocities until they are pulled.
+ * Motion set through the API (SetTransform, SetLinearVelocity, impulses) replaces the
  * GPU's for that body at the next step (GpuWorld's change log, b2ChangeListener), computed from the
  * state the body had in JavaScript: read back first. Everything else still flows from the world at
  * each step: bodies and fixtures created or destroyed, masses, forces (cleared after each step when

@@ -17,9 +17,10 @@
  *      readTransforms() reads every transform in bulk without touching the objects.
  *      GetPenetration() gives the accuracy target the deepest penetration of the synchronised step,
  *      measured on the GPU (from its first call on) and read back with the step's counts (no map
- *      of its own). Detach()
- *      reads everything, pulls every body, rebuilds the JavaScript engine's contacts with the
- *      GPU's manifolds and impulses, and touches its broad-phase proxies.
+ *      of its own). KeepsContacts() tells the engine the GPU finds the pairs (SetTransform adds
+ *      none to the world's list). Detach() reads everything, pulls every body, rebuilds the
+ *      JavaScript engine's contacts with the GPU's manifolds and impulses, and touches its
+ *      broad-phase proxies.
  * Invariants: steps run in call order, each recorded after the previous one's submission; at most
  *      `maxQueuedSteps` wait to be recorded (Step throws beyond); the GPU holds at most four more
  *      (the narrow phase's read-back ring). A listener overriding PreSolve, or a custom contact
@@ -254,6 +255,11 @@ export class WebGPUBackend implements b2WorldBackend {
     this.stepperNow?.pullBody(body);
   }
 
+  /** While attached the GPU keeps the world's contacts (b2WorldBackend.KeepsContacts). */
+  KeepsContacts(): boolean {
+    return this.world !== null;
+  }
+
   /**
    * The deepest penetration (m) of the touching contacts after the step the last synchronisation
    * shows, measured on the GPU at the end of that step and read back with its counts (the
@@ -262,11 +268,6 @@ export class WebGPUBackend implements b2WorldBackend {
    * recorded after the first call (GpuPipeline.measurePenetration): a world that never asks
    * does not pay for it.
    */
-  /** While attached the GPU keeps the world's contacts (b2WorldBackend.KeepsContacts). */
-  KeepsContacts(): boolean {
-    return this.world !== null;
-  }
-
   GetPenetration(): number | null {
     if (this.stepperNow !== null) this.stepperNow.pipeline.measurePenetration = true;
     return this.world !== null && this.syncedPenetration >= 0 ? this.syncedPenetration : null;
