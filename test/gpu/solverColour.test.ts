@@ -471,18 +471,19 @@ describeGpu('GPU solver: graph colouring', (ctx) => {
     expect(second.state).toEqual(first.state);
   }, 600_000);
 
+  // Scenes whose passes the fused and tail walks must reproduce: contacts, joints, the overflow set.
+  const PASS_SCENES: [string, () => b2World][] = [
+    ['pyramid', () => pyramid(10)],
+    ['joints and contacts', jointsAndContacts],
+    ['40 circles on a plate (overflow set)', () => crowdedPlate(40)],
+    ['40 joints on a hub (overflow set)', () => hub(40)],
+  ];
   // The rounds (2 COLOUR_CAP + 1), warm start (COLOUR_CAP + 1), velocity (8 (COLOUR_CAP + 1)) and
   // position (3 (COLOUR_CAP + 2)) passes with a pass for every colour become four dispatches.
   const FUSED_SAVES = 2 * COLOUR_CAP + 1 + 9 * (COLOUR_CAP + 1) + 3 * (COLOUR_CAP + 2) - 4;
 
   it('solves a small world in one dispatch per solver pass (fused) to the bits of the per-colour passes: contacts, joints, the overflow set, the early exit', async () => {
-    const scenes: [string, () => b2World][] = [
-      ['pyramid', () => pyramid(10)],
-      ['joints and contacts', jointsAndContacts],
-      ['40 circles on a plate (overflow set)', () => crowdedPlate(40)],
-      ['40 joints on a hub (overflow set)', () => hub(40)],
-    ];
-    for (const [label, build] of scenes) {
+    for (const [label, build] of PASS_SCENES) {
       const passes = await colouringAfter(ctx, build, 12, { fused: false, passColours: COLOUR_CAP });
       const fused = await colouringAfter(ctx, build, 12, { fused: true });
       expect(Array.from(fused.colouring.colours), label).toEqual(Array.from(passes.colouring.colours));
@@ -524,13 +525,7 @@ describeGpu('GPU solver: graph colouring', (ctx) => {
   const PASSES_PER_COLOUR = 1 + 8 + 3;
 
   it('solves the colours past passColours in one tail pass to the bits of a pass per colour: contacts, joints, the overflow set, the early exit', async () => {
-    const scenes: [string, () => b2World][] = [
-      ['pyramid', () => pyramid(10)],
-      ['joints and contacts', jointsAndContacts],
-      ['40 circles on a plate (overflow set)', () => crowdedPlate(40)],
-      ['40 joints on a hub (overflow set)', () => hub(40)],
-    ];
-    for (const [label, build] of scenes) {
+    for (const [label, build] of PASS_SCENES) {
       const all = await colouringAfter(ctx, build, 12, { fused: false, passColours: COLOUR_CAP });
       for (const passColours of [0, 2]) {
         const few = await colouringAfter(ctx, build, 12, { fused: false, passColours });
