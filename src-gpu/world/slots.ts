@@ -38,10 +38,16 @@ export class ChangeLog {
   /** Bodies set through the API, true when their motion was set. */
   readonly bodies = new Map<b2Body, boolean>();
   readonly fixtures = new Set<b2Fixture>();
+  /** Bodies the API asked to be awake (b2ChangeListener.BodyWoken). */
+  readonly woken = new Set<b2Body>();
 
   BodyChanged(body: b2Body, motion: boolean): void {
     if (motion) this.bodies.set(body, true);
     else if (!this.bodies.has(body)) this.bodies.set(body, false);
+  }
+
+  BodyWoken(body: b2Body): void {
+    this.woken.add(body);
   }
 
   FixtureChanged(fixture: b2Fixture): void {
@@ -56,6 +62,7 @@ export class ChangeLog {
     this.structure = false;
     this.bodies.clear();
     this.fixtures.clear();
+    this.woken.clear();
   }
 }
 

@@ -36,12 +36,14 @@
  * puts bodies to sleep (islands.ts) and GpuStepper's pulls (pullBody, pullAll: a body fetching the
  * last read-back) write e_awakeFlag and m_sleepTime back, and the flag into bodyAwake's shadow;
  * sync() looks at the awake flag of the bodies that fetched the last read-back only, and uploads
- * it when the world's e_awakeFlag differs from the value last uploaded or read back (SetAwake, or ApplyForce / SetLinearVelocity waking a body,
- * after a read-back that showed it asleep), for a body new to the mirror, and for every body when
- * b2World::m_allowSleep was turned off (SetAllowSleeping(false) wakes them all). sleepTime (word 7
- * of bodySweep) is never uploaded after that: the GPU keeps 2.2.1's rule that a sleeping body has
- * zero velocity and sleep time, so a body put to sleep or woken from JavaScript gets them there.
- * A flag that only changed on the GPU since the last read-back is not seen: read back first.
+ * it when the world's e_awakeFlag differs from the value last uploaded or read back (SetAwake(false),
+ * or a wake after a read-back that showed the body asleep), for a body new to the mirror, for every
+ * body when b2World::m_allowSleep was turned off (SetAllowSleeping(false) wakes them all), and for
+ * every body the API woke (b2ChangeListener.BodyWoken: a force, an impulse, a mouse joint's target),
+ * even when its flag already said awake, since the GPU may have put it to sleep after the read-back.
+ * sleepTime (word 7 of bodySweep) is never uploaded after that: the GPU keeps 2.2.1's rule that a
+ * sleeping body has zero velocity and sleep time, so a body put to sleep or woken from JavaScript
+ * gets them there. IsAwake() shows the flag of the last read-back, not the GPU's since.
  * Custom contact filters (b2ContactFilter subclasses) cannot run on the GPU:
  * `usesCustomContactFilter` says when the world has one, and the GPU pair set then follows the
  * default filter rules.
@@ -421,7 +423,10 @@ export class GpuWorld {
       for (const f of log.fixtures) this.packChangedFixture(f, gen, stats);
     }
     // Motion set through the API overrides the GPU's for that body.
-    if (this.ownsMotion) log.bodies.forEach(this.packSetMotion);
+    if (this.ownsMotion) {
+      log.bodies.forEach(this.packSetMotion);
+      log.woken.forEach(this.packWoken);
+    }
     log.reset();
 
     stats.bodies.live = this.bodySlots.live;
@@ -504,6 +509,18 @@ export class GpuWorld {
     this.census.shapes[f.m_shape.m_type]++;
     if (f.m_isSensor) this.census.sensors++;
   }
+
+  /**
+   * A body the API woke: its awake word is uploaded even when it already says awake, since the GPU
+   * may have put the body to sleep after the read-back the word came from.
+   */
+  private readonly packWoken = (b: b2Body): void => {
+    const slot = this.bodySlot(b);
+    if (slot >= 0 && (b.m_flags & e_awakeFlag) !== 0) {
+      this.bodyAwake.commitWords(slot, 1);
+      this.bodyAwake.markDirty(slot);
+    }
+  };
 
   /** A body whose motion the API set: its motion records are uploaded over the GPU's. */
   private readonly packSetMotion = (motion: boolean, b: b2Body): void => {

@@ -492,9 +492,8 @@ export class b2Body {
       return;
     }
 
-    if (this.IsAwake() === false) {
-      this.SetAwake(true);
-    }
+    // Unguarded, unlike the C++ (the same when awake): a change listener hears every wake.
+    this.SetAwake(true);
 
     const fx = force.x;
     const fy = force.y;
@@ -519,9 +518,8 @@ export class b2Body {
       return;
     }
 
-    if (this.IsAwake() === false) {
-      this.SetAwake(true);
-    }
+    // Unguarded, unlike the C++ (the same when awake): a change listener hears every wake.
+    this.SetAwake(true);
 
     this.m_force.x += force.x;
     this.m_force.y += force.y;
@@ -542,9 +540,8 @@ export class b2Body {
       return;
     }
 
-    if (this.IsAwake() === false) {
-      this.SetAwake(true);
-    }
+    // Unguarded, unlike the C++ (the same when awake): a change listener hears every wake.
+    this.SetAwake(true);
 
     this.m_torque += torque;
     this.NotifyChanged(false);
@@ -566,9 +563,8 @@ export class b2Body {
       return;
     }
 
-    if (this.IsAwake() === false) {
-      this.SetAwake(true);
-    }
+    // Unguarded, unlike the C++ (the same when awake): a change listener hears every wake.
+    this.SetAwake(true);
     const ix = impulse.x;
     const iy = impulse.y;
     this.m_linearVelocity.x += this.m_invMass * ix;
@@ -592,9 +588,8 @@ export class b2Body {
       return;
     }
 
-    if (this.IsAwake() === false) {
-      this.SetAwake(true);
-    }
+    // Unguarded, unlike the C++ (the same when awake): a change listener hears every wake.
+    this.SetAwake(true);
     this.m_angularVelocity += this.m_invI * impulse;
     this.NotifyChanged(true);
   }
@@ -997,6 +992,7 @@ export class b2Body {
         this.m_sleepTime = 0.0;
         this.NotifyChanged(false);
       }
+      this.m_world.m_changeListener?.BodyWoken(this);
     } else {
       this.m_flags &= ~b2Body.e_awakeFlag;
       this.m_sleepTime = 0.0;

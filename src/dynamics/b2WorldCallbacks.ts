@@ -132,6 +132,13 @@ export class b2ChangeListener {
    */
   BodyChanged(body: b2Body, motion: boolean): void {}
 
+  /**
+   * The API asked for a body to be awake: SetAwake(true), or a call that wakes it in 2.2.1 (a
+   * force, an impulse, a velocity, a joint's motor or target). Told even when the body's flag
+   * already says awake: a copy of the world may have put it to sleep since the flag was read.
+   */
+  BodyWoken(body: b2Body): void {}
+
   /** A fixture's sensor flag, filter or material was set. */
   FixtureChanged(fixture: b2Fixture): void {}
 

@@ -8,15 +8,23 @@ import { b2Filter, b2FixtureDef } from '../../src/dynamics/b2Fixture';
 import type { b2Fixture } from '../../src/dynamics/b2Fixture';
 import { b2World } from '../../src/dynamics/b2World';
 import { b2ChangeListener } from '../../src/dynamics/b2WorldCallbacks';
+import { b2MouseJointDef } from '../../src/dynamics/joints/b2MouseJoint';
+import type { b2MouseJoint } from '../../src/dynamics/joints/b2MouseJoint';
 import { b2RevoluteJointDef } from '../../src/dynamics/joints/b2RevoluteJoint';
+import type { b2RevoluteJoint } from '../../src/dynamics/joints/b2RevoluteJoint';
 
 class Recorder extends b2ChangeListener {
   readonly events: string[] = [];
+  /** BodyWoken's reports, apart from the others. */
+  readonly woken: string[] = [];
   constructor(private readonly names: Map<object, string>) {
     super();
   }
   override BodyChanged(body: b2Body, motion: boolean): void {
     this.events.push(`body ${this.names.get(body)} ${motion ? 'motion' : 'state'}`);
+  }
+  override BodyWoken(body: b2Body): void {
+    this.woken.push(`${this.names.get(body)}`);
   }
   override FixtureChanged(fixture: b2Fixture): void {
     this.events.push(`fixture ${this.names.get(fixture)}`);
@@ -78,6 +86,36 @@ describe('b2ChangeListener', () => {
     a.SetAwake(true);
     a.SetAwake(true);
     expect(log.take()).toEqual(['body a state']);
+  });
+
+  it('reports every wake the API asks for, of an awake body too: SetAwake(true), forces, impulses, non-zero velocities, a mouse target, a motor', () => {
+    const { world, a, ground, log } = setup();
+    a.SetAwake(true);
+    a.ApplyForce(new b2Vec2(1, 0), a.GetWorldCenter());
+    a.ApplyForceToCenter(new b2Vec2(1, 0));
+    a.ApplyTorque(1);
+    a.ApplyLinearImpulse(new b2Vec2(0, 1), a.GetWorldCenter());
+    a.ApplyAngularImpulse(0.1);
+    a.SetLinearVelocity(new b2Vec2(1, 0));
+    a.SetAngularVelocity(2);
+    const md = new b2MouseJointDef();
+    md.bodyA = ground;
+    md.bodyB = a;
+    md.target.Set(0, 2);
+    md.maxForce = 10;
+    const mouse = world.CreateJoint(md) as b2MouseJoint;
+    mouse.SetTarget(new b2Vec2(0, 3));
+    expect(log.woken.splice(0)).toEqual(Array(9).fill('a'));
+    const jd = new b2RevoluteJointDef();
+    jd.Initialize(ground, a, new b2Vec2(0, 2));
+    (world.CreateJoint(jd) as b2RevoluteJoint).SetMotorSpeed(1);
+    expect(log.woken.splice(0)).toEqual(['ground', 'a']);
+    // What does not wake in 2.2.1 says nothing.
+    a.SetLinearVelocity(new b2Vec2(0, 0));
+    a.SetAngularVelocity(0);
+    a.SetLinearDamping(0.1);
+    a.SetAwake(false);
+    expect(log.woken).toEqual([]);
   });
 
   it('says nothing when a setter changes nothing (a static body has no velocity)', () => {

@@ -13,6 +13,8 @@ import { b2BodyDef, b2_dynamicBody } from '../../src/dynamics/b2Body';
 import type { b2Body } from '../../src/dynamics/b2Body';
 import { b2World } from '../../src/dynamics/b2World';
 import type { b2WorldBackend } from '../../src/dynamics/b2WorldBackend';
+import { b2MouseJointDef } from '../../src/dynamics/joints/b2MouseJoint';
+import type { b2MouseJoint } from '../../src/dynamics/joints/b2MouseJoint';
 import { b2ContactFilter, b2ContactListener } from '../../src/dynamics/b2WorldCallbacks';
 import type { b2Contact } from '../../src/dynamics/contacts/b2Contact';
 import { b2AABB } from '../../src/collision/b2Collision';
@@ -575,6 +577,45 @@ describeGpu('WebGPUBackend: the world API on the GPU', (ctx) => {
     const before = boxes[4].GetPosition().y;
     await world.Synchronize();
     expect(boxes[4].GetPosition().y).toBeLessThan(before);
+    await world.SetBackend(null);
+  }, 300_000);
+
+  it("wakes that the GPU hears although the world's flags still say awake: a mouse joint's SetTarget, ApplyForce, an impulse, SetLinearVelocity and SetAwake(true) move bodies the GPU put to sleep after the last synchronisation", async () => {
+    const world = new b2World(new b2Vec2(0, -10));
+    const floor = ground(world);
+    const boxes = [0, 1, 2, 3, 4].map((i) => box(world, -8 + 4 * i, 0.5));
+    const backend = await WebGPUBackend.create({ context: ctx });
+    await world.SetBackend(backend);
+    // Steps submitted without a read-back into the world.
+    const step = async () => {
+      world.Step(DT, 8, 3);
+      await backend.submitted();
+    };
+    for (let i = 0; i < 2; ++i) await step();
+    await world.Synchronize();
+    expect(boxes.map((b) => b.IsAwake())).toEqual([true, true, true, true, true]);
+    // Resting boxes sleep after b2_timeToSleep (30 steps); no synchronisation tells the world.
+    for (let i = 0; i < 60; ++i) await step();
+    expect(boxes.map((b) => b.IsAwake())).toEqual([true, true, true, true, true]);
+    const y0 = boxes.map((b) => b.GetPosition().y);
+
+    const def = new b2MouseJointDef();
+    def.bodyA = floor;
+    def.bodyB = boxes[0];
+    def.target.Assign(boxes[0].GetPosition());
+    def.maxForce = 1000 * boxes[0].GetMass();
+    const mouse = world.CreateJoint(def) as b2MouseJoint;
+    boxes[2].ApplyLinearImpulse(new b2Vec2(0, 5 * boxes[2].GetMass()), boxes[2].GetWorldCenter());
+    boxes[3].SetLinearVelocity(new b2Vec2(0, 5));
+    boxes[4].SetAwake(true);
+    boxes[4].SetGravityScale(-1);
+    for (let i = 1; i <= 30; ++i) {
+      mouse.SetTarget(new b2Vec2(boxes[0].GetPosition().x, y0[0] + Math.min(3, i / 5)));
+      boxes[1].ApplyForceToCenter(new b2Vec2(0, 20 * boxes[1].GetMass()));
+      await step();
+    }
+    await world.Synchronize();
+    for (const [i, b] of boxes.entries()) expect.soft(b.GetPosition().y - y0[i], `box ${i}`).toBeGreaterThan(1);
     await world.SetBackend(null);
   }, 300_000);
 

@@ -269,11 +269,13 @@ describeGpu('GpuWorld: the world mirrored on the GPU', (ctx) => {
     mirror.gpuOwnsMotion = true;
     expect(mirror.sync().upload.elements).toBe(0);
 
-    // A force: the body's force record only; its motion stays the GPU's.
+    // A force: the body's force record, and its awake word (a force wakes the body, and the GPU
+    // may have put it to sleep since the world's flag was read back); its motion stays the GPU's.
     bodies[3].ApplyForceToCenter(new b2Vec2(5, 0));
     const forced = mirror.sync();
-    expect(forced.upload.elements).toBe(1);
+    expect(forced.upload.elements).toBe(2);
     expect(mirror.bodyForce.f32[4 * mirror.bodySlot(bodies[3])]).toBe(5);
+    expect(mirror.bodyAwake.u32[mirror.bodySlot(bodies[3])]).toBe(1);
 
     // clearForces (b2World::ClearForces for the stepper) zeroes it in the world and on the GPU.
     mirror.clearForces();
@@ -281,10 +283,11 @@ describeGpu('GpuWorld: the world mirrored on the GPU', (ctx) => {
     expect(mirror.sync().upload.elements).toBe(1);
     expect(mirror.bodyForce.f32[4 * mirror.bodySlot(bodies[3])]).toBe(0);
 
-    // A velocity set through the API overrides the GPU's motion for that body: cell, xf, sweep, velocity.
+    // A velocity set through the API overrides the GPU's motion for that body: cell, xf, sweep,
+    // velocity, and it wakes the body.
     bodies[7].SetLinearVelocity(new b2Vec2(0, 3));
     const moved = mirror.sync();
-    expect(moved.upload.elements).toBe(4);
+    expect(moved.upload.elements).toBe(5);
     expect(mirror.bodyVel.f32[4 * mirror.bodySlot(bodies[7]) + 1]).toBe(3);
 
     // A fixture's material.

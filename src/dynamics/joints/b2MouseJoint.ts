@@ -93,9 +93,8 @@ export class b2MouseJoint extends b2Joint {
   SetTarget(target: Readonly<b2Vec2>): void {
     b2CheckJointAlive(this, 'b2MouseJoint.SetTarget');
     b2CheckVec2('b2MouseJoint.SetTarget', 'target', target);
-    if (this.m_bodyB.IsAwake() === false) {
-      this.m_bodyB.SetAwake(true);
-    }
+    // Unguarded, unlike the C++ (the same when awake): a change listener hears every wake.
+    this.m_bodyB.SetAwake(true);
     this.m_targetA.Assign(target);
   }
 
