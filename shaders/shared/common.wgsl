@@ -233,7 +233,7 @@ const SV_POSITION_DONE: u32 = 4u;      // 1 once an iteration ended with every s
 const SV_JOINT_ERROR: u32 = 5u;        // 1 when a joint of this position iteration is not within b2_linearSlop / b2_angularSlop
 const SV_JOINTS: u32 = 6u;             // joint slots: the colouring's items are joint slots, then solver contacts (k + SV_JOINTS)
 const SV_ITEMS: u32 = 7u;              // items to colour and solve: SV_JOINTS + SV_COUNT, or 0 when skipping
-const SV_COLOUR_START: u32 = 8u;       // COLOUR_CAP + 2 words: first entry of colour c in colourKeys, then the end
+const SV_COLOUR_START: u32 = 8u;       // COLOUR_CAP + 2 words: first entry of colour c in colourKeys, then the overflow set's end (the idle items follow)
 const SV_COLOUR_CHANGED: u32 = 34u;    // 1 when an item's dynamic bodies differ from the last colouring's: colour again
 const SV_COLOURED_ITEMS: u32 = 35u;    // SV_ITEMS of the last colouring
 const SV_COLOURED_JOINTS: u32 = 36u;   // SV_JOINTS of the last colouring
@@ -243,6 +243,8 @@ const SV_PENETRATION: u32 = 39u;       // bits of the step's deepest penetration
 
 // Colours of the graph colouring; colour COLOUR_CAP is the overflow set (solved in order by one invocation).
 const COLOUR_CAP: u32 = 24u;
+// An item with no dynamic body (a sleeping island's contact, a joint not solved): after the overflow set, solved by no pass.
+const COLOUR_IDLE: u32 = 25u;
 const UNCOLOURED: u32 = 0xffffffffu;
 
 // Indirect-dispatch triples of the solver (u32 word offsets in its indirect buffer).

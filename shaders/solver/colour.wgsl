@@ -26,7 +26,8 @@
 //      colour, so each colour lists its joints, then its contacts) and the item's signature.
 //      `rounds` (one workgroup): every round of `mark` and `pick` with barriers, for a small world.
 //      `offsets` (one workgroup, every step: the early exit zeroes the position passes' sizes):
-//      SV_COLOUR_START (first entry of each colour in the sorted keys), the indirect size of each
+//      SV_COLOUR_START (first entry of each colour in the sorted keys, then the overflow set's
+//      end, where the idle items begin), the indirect size of each
 //      colour's warm-start, velocity and position passes, and one workgroup for the tail passes
 //      (the colours the host records no pass of their own for, then the overflow set, which is
 //      solved in order), SV_COLOURS_USED (the colours up to the last non-empty one).
@@ -36,7 +37,8 @@
 //      bodies and their order: the same bits on every run, and reusing a colouring gives the bits
 //      colouring again would. Priorities are compared with atomicMax, whose result does not
 //      depend on the order of the atomics. A joint that is not solved this step (dead slot,
-//      inactive body) has no dynamic body and takes colour 0; its passes return.
+//      inactive body) or a sleeping island's contact has no dynamic body: it takes COLOUR_IDLE in
+//      round 0, sorted after the overflow set, and no pass visits it.
 
 @group(0) @binding(0) var<uniform> round: ColourParams;
 @group(0) @binding(1) var<storage, read> broadState: array<u32>;
@@ -201,6 +203,10 @@ fn pick_item(i: u32, r: u32) {
     if (r == COLOUR_CAP) {
       colourKeys[i] = vec2<u32>(colour, i);
     }
+    return;
+  }
+  if (bodies.dynamic == 0u) {
+    colours[i] = COLOUR_IDLE;
     return;
   }
   if (r == COLOUR_CAP) {

@@ -330,6 +330,12 @@ export const FUSED_SOLVER_ITEMS = 6144;
 
 /** Colours of the graph colouring; colour COLOUR_CAP is the overflow set. */
 export const COLOUR_CAP = 24;
+/**
+ * The colour of an item with no dynamic body, which nothing solves: a sleeping island's contact
+ * (prepareContacts leaves it none) or a joint not solved this step. Sorted after the overflow set,
+ * where no pass reaches, so a world at rest dispatches its iterations over nothing.
+ */
+export const COLOUR_IDLE = COLOUR_CAP + 1;
 export const UNCOLOURED = 0xffffffff;
 
 /**

@@ -7,9 +7,10 @@
  * In:  the solver's parameters (joint slots), the broad phase's and narrow phase's state
  *      (overflow flags, NP_SOLVER), contactBodies (prepareContacts.ts) and jointBodies
  *      (solveJoints.ts): bodies, which are dynamic (a gear joint has four).
- * Out: colours[item] in [0, COLOUR_CAP) or COLOUR_CAP (the overflow set); colourKeys: (colour,
- *      item) sorted by colour, items ascending within one; solverState[SV.COLOUR_START + c]
- *      (COLOUR_CAP + 2 words); the indirect sizes of each colour's passes (SV_ARGS.COLOURS,
+ * Out: colours[item] in [0, COLOUR_CAP), COLOUR_CAP (the overflow set) or COLOUR_IDLE (no dynamic
+ *      body: nothing to solve); colourKeys: (colour, item) sorted by colour, items ascending
+ *      within one; solverState[SV.COLOUR_START + c] (COLOUR_CAP + 2 words: the last is the
+ *      overflow set's end, so no pass reaches the idle items after it); the indirect sizes of each colour's passes (SV_ARGS.COLOURS,
  *      SV_ARGS.POSITION: a 1-invocation pass for the overflow set, which is solved in order).
  *      `encodeBegin` also sets SV.SKIP / SV.COUNT / SV.JOINTS / SV.ITEMS (nothing is solved when
  *      collision overflowed: the host reruns it, and the solver with it), zeroes SV.PENETRATION
@@ -30,7 +31,7 @@ import type { GpuContext } from '../device/device';
 import { GpuArray } from '../device/buffers';
 import { Kernel } from '../device/kernel';
 import type { Recorder, Uniform } from '../device/kernel';
-import { COLOUR_CAP, SV, SV_ARGS } from '../device/layout';
+import { COLOUR_CAP, COLOUR_IDLE, SV, SV_ARGS } from '../device/layout';
 import { RadixSort, digitPasses } from '../primitives/radixSort';
 import type { SortPass } from '../primitives/radixSort';
 
@@ -58,7 +59,7 @@ export class ColourStage {
   private readonly rounds: Kernel;
   private readonly offsets: Kernel;
   private readonly sort: RadixSort;
-  private readonly sortPasses: SortPass[] = digitPasses(Math.ceil(Math.log2(COLOUR_CAP + 1)), 0);
+  private readonly sortPasses: SortPass[] = digitPasses(Math.ceil(Math.log2(COLOUR_IDLE + 1)), 0);
   /** Colour per item. */
   readonly colours: GpuArray;
   /** (colour, item) per item; sorted by colour after encode(). */

@@ -138,6 +138,7 @@ it("declares the solver's state words, indirect offsets, colour cap and 2.2.1's 
   for (const [name, value] of Object.entries(layout.SV_ARGS)) expect(c.get(`SV_ARGS_${name}`), name).toBe(value);
   expect(c.get('COLOUR_CAP')).toBe(layout.COLOUR_CAP);
   expect(c.get('UNCOLOURED')).toBe(layout.UNCOLOURED);
+  expect(c.get('COLOUR_IDLE')).toBe(layout.COLOUR_IDLE);
   expect(c.get('CONSTRAINT_VEC4')).toBe(layout.CONSTRAINT_VEC4);
   expect(layout.SV.COLOUR_START + layout.COLOUR_CAP + 2).toBeLessThanOrEqual(layout.SV.COLOUR_CHANGED);
   expect(layout.SV.COLOUR_SORT_COUNT).toBeLessThan(layout.SV_STATE_WORDS);

@@ -5,6 +5,7 @@
  *   - a pile that fell asleep keeps every contact: no collide kernel runs over one (every bin
  *     empty, NP.KEPT counts them all), each keeps the manifold, touching state and impulses of the
  *     last step a body was awake, and contacts, counts and bodies keep every bit over more steps;
+ *     the solver gets no item in any colour or the overflow set (all COLOUR_IDLE);
  *   - SetAwake(true) from JavaScript on one box: that step its contacts are collided (the
  *     manifolds a fresh collision of the same transforms gives) and the others kept; the island
  *     wakes, and from the next step nothing is kept;
@@ -22,6 +23,7 @@ import { b2BodyDef, b2_dynamicBody } from '../../src/dynamics/b2Body';
 import type { b2Body } from '../../src/dynamics/b2Body';
 import type { b2World } from '../../src/dynamics/b2World';
 import type { GpuContactRecord } from '../../src-gpu/narrowphase/records';
+import { COLOUR_CAP } from '../../src-gpu/device/layout';
 import { GpuStepper } from '../../src-gpu/stepper';
 import { describeGpu } from './support';
 import { allAsleep, allAwake, column, DT, motion, POSITION_ITERATIONS, pyramid, restingWorld, stepUntilAsleep, VELOCITY_ITERATIONS } from './resting';
@@ -97,6 +99,8 @@ describeGpu('GPU narrow phase: contacts of sleeping bodies are kept, not collide
       const r = await step(stepper);
       expect([r.contactCount, r.keptCount, r.solverCount, r.eventCount]).toEqual([first.contactCount, first.contactCount, touching, 0]);
       expect(r.binCounts.every((n) => n === 0)).toBe(true);
+      // Nothing to solve: every solver contact is idle (COLOUR_IDLE), past every pass's range.
+      expect([r.coloursUsed, r.colourItems]).toEqual([0, Array(COLOUR_CAP + 1).fill(0)]);
       expect(await stepper.narrowPhase.readAll()).toEqual(bytes);
     }
     await stepper.readBodies();

@@ -28,7 +28,7 @@ import type { b2DistanceJoint } from '../../src/dynamics/joints/b2DistanceJoint'
 import { b2GearJointDef } from '../../src/dynamics/joints/b2GearJoint';
 import { b2RevoluteJointDef } from '../../src/dynamics/joints/b2RevoluteJoint';
 import { b2World } from '../../src/dynamics/b2World';
-import { COLOUR_CAP, FUSED_SOLVER_ITEMS, TAIL_COLOUR_ITEMS } from '../../src-gpu/device/layout';
+import { COLOUR_CAP, COLOUR_IDLE, FUSED_SOLVER_ITEMS, TAIL_COLOUR_ITEMS } from '../../src-gpu/device/layout';
 import type { GpuSolverOptions } from '../../src-gpu/solver/solver';
 import { GpuStepper } from '../../src-gpu/stepper';
 import { describeGpu } from './support';
@@ -225,8 +225,12 @@ function itemBodies(c: Colouring, item: number): [number, boolean][] {
 
 function checkColouring(c: Colouring, label: string): { overflow: number; overflowJoints: number; sharedStatic: boolean; used: number } {
   const n = c.colours.length;
-  // Exactly one colour (or the overflow set) per contact.
-  for (let k = 0; k < n; ++k) expect(c.colours[k], `${label}: contact ${k}`).toBeLessThanOrEqual(COLOUR_CAP);
+  // Exactly one colour (or the overflow set) per item with a dynamic body; COLOUR_IDLE for the others.
+  for (let k = 0; k < n; ++k) {
+    const solved = itemBodies(c, k).some(([, dynamic]) => dynamic);
+    if (solved) expect(c.colours[k], `${label}: item ${k}`).toBeLessThanOrEqual(COLOUR_CAP);
+    else expect(c.colours[k], `${label}: item ${k} without a dynamic body`).toBe(COLOUR_IDLE);
+  }
   // The lists: (colour, k) sorted by colour then k, each contact once, and the starts agree.
   const seen = new Uint8Array(n);
   for (let e = 0; e < n; ++e) {
@@ -309,7 +313,7 @@ function referenceColours(c: Colouring): number[] {
     for (let k = 0; k < n; ++k) if (colours[k] < 0 && dynamicBodies[k].every((body) => best.get(body) === priority(k))) winners.push(k);
     for (const k of winners) colours[k] = round;
   }
-  return colours.map((colour) => (colour < 0 ? COLOUR_CAP : colour));
+  return colours.map((colour, k) => (dynamicBodies[k].length === 0 ? COLOUR_IDLE : colour < 0 ? COLOUR_CAP : colour));
 }
 
 type Ctx = Parameters<Parameters<typeof describeGpu>[1]>[0];
