@@ -6,7 +6,7 @@
  * external), so it runs where only Node and .device/node_modules exist:
  *
  *   node dist/bench-gpu-step.mjs [--sizes 1e3,1e4,1e5,1e6] [--scenes pyramids,rain,balls] [--steps 10]
- *        [--js-max 1e5] [--js-budget 3] [--fused on|off] [--auto] [--validation] [--quick] [--out DIR]
+ *        [--js-max 1e5] [--js-budget 3] [--fused on|off] [--skip-resting on|off] [--auto] [--validation] [--quick] [--out DIR]
  *
  * On a lent H100 (kind nvidia-h100-x1; `.device` from `bash ../shared/gpu/prepare.sh`): carry
  * `.device` and `dist/bench-gpu-step.mjs`, run
@@ -26,6 +26,8 @@
  *             each backend), so that the timed steps are those of a world at rest, its islands
  *             asleep: what a world costs when nothing moves (--scenes settled; not in the default
  *             set). The GPU table gives the bodies still awake after the timed steps.
+ * --skip-resting on|off: whether a world at rest skips its steps (GpuPipeline.skipResting; default
+ *   on; off measures what the GPU's stages cost a sleeping world).
  * --fused on|off: the solver's fused passes for every size, or for none (GpuSolverOptions.fused);
  * default: by the solver's items (FUSED_SOLVER_ITEMS). --auto: AutoBackend's calibration measured on this
  * adapter (its crossover and the fitted costs).
@@ -37,7 +39,7 @@
  * the adapter has them. Each world gets a GpuStepper; after GPU_WARMUP awaited steps (on the H100
  * the first five steps of 10^6 pyramids take 36 ms of device time, then 14.7: a warm-up of 3
  * put those slow steps into the medians), `--steps` awaited
- * steps give the wall time of step() (mirror sync, recording, submit, wait for the 316-byte
+ * steps give the wall time of step() (mirror sync, recording, submit, wait for the 324-byte
  * read-back), its host split, the device time (timestamp span of the step's passes, and per part:
  * broad phase, narrow phase, solver) and the dispatches recorded; then, after STREAM_WARMUP steps
  * not awaited (the stream's first read-backs grow the buffers to 1.5x the counts: that reallocation
@@ -254,6 +256,8 @@ function warmup(scene: string, steps: number): number {
 
 /** --fused: the solver's fused passes forced on or off; by body count when undefined. */
 const solverOptions: GpuSolverOptions = {};
+/** GpuPipeline.skipResting for every stepper (--skip-resting). */
+let skipResting = true;
 
 /** AutoBackend's crossover on this adapter, measured as an application's first settle() does. */
 async function runCalibration(ctx: GpuContext): Promise<{ crossover: AutoCalibration | null; choice: string; ms: number }> {
@@ -292,6 +296,8 @@ interface GpuRow {
   touching: number;
   /** Dynamic bodies awake after the timed steps. */
   awake: number;
+  /** Awaited timed steps skipped at rest (GpuPipeline.skipResting): device time 0. */
+  skipped: number;
   /** Steps not awaited whose buffers overflowed (their lists truncated). */
   truncatedSteps: number;
 }
@@ -300,6 +306,7 @@ async function runGpu(ctx: GpuContext, scene: string, n: number, steps: number, 
   const world = freshWorld(scene, n, row);
   const t0 = performance.now();
   const stepper = new GpuStepper(ctx, world, { solver: solverOptions });
+  stepper.pipeline.skipResting = skipResting;
   try {
     const setupMs = performance.now() - t0;
     for (let i = 0; i < warmup(scene, GPU_WARMUP); ++i) await stepper.step(DT, VELOCITY_ITERATIONS, POSITION_ITERATIONS);
@@ -309,6 +316,7 @@ async function runGpu(ctx: GpuContext, scene: string, n: number, steps: number, 
     const passes: Record<string, number[]> = {};
     const host = { sync: [] as number[], record: [] as number[], submit: [] as number[], wait: [] as number[] };
     let last = null;
+    let skipped = 0;
     for (let i = 0; i < steps; ++i) {
       const w0 = performance.now();
       last = await stepper.step(DT, VELOCITY_ITERATIONS, POSITION_ITERATIONS);
@@ -319,7 +327,13 @@ async function runGpu(ctx: GpuContext, scene: string, n: number, steps: number, 
       host.record.push(h.encode);
       host.submit.push(h.submit);
       host.wait.push(h.wait);
-      if (last.gpuTime) {
+      if (last.skipped) {
+        skipped++;
+        device.push(0);
+        parts.broad.push(0);
+        parts.narrow.push(0);
+        parts.solve.push(0);
+      } else if (last.gpuTime) {
         device.push(last.gpuTime.total);
         const sum = { broad: 0, narrow: 0, solve: 0 };
         for (const [name, ms] of Object.entries(last.gpuTime)) {
@@ -348,6 +362,7 @@ async function runGpu(ctx: GpuContext, scene: string, n: number, steps: number, 
     await stepper.readTransforms(new Float32Array(4 * slots), awakeFlags);
     return {
       awake: awakeDynamic(stepper, awakeFlags),
+      skipped,
       setupMs,
       wallMs: median(wall),
       deferredMs,
@@ -406,6 +421,7 @@ async function runWorldApi(ctx: GpuContext, scene: string, n: number, steps: num
   await world.SetBackend(backend);
   const attachMs = performance.now() - a0;
   const attachGc = await attachTally.stop();
+  backend.stepper!.pipeline.skipResting = skipResting;
   try {
     const out = new Float32Array(4 * backend.stepper!.mirror.bodySlotCount);
     const step = () => world.Step(DT, VELOCITY_ITERATIONS, POSITION_ITERATIONS);
@@ -523,7 +539,7 @@ function markdown(rows: Row[], crossovers: Crossover[], meta: Record<string, unk
   for (const r of rows) {
     const g = r.gpu;
     const gpuCells = g
-      ? `${g.awake} | ${g.contacts} (${g.touching}) | ${g.dispatches} | ${fmt(g.wallMs)} | ${fmt(g.deferredMs)} | ${fmt(g.deviceMs)} | ${fmt(g.partsMs.broad)} / ${fmt(g.partsMs.narrow)} / ${fmt(g.partsMs.solve)}`
+      ? `${g.awake}${g.skipped > 0 ? ` (${g.skipped} skipped)` : ''} | ${g.contacts} (${g.touching}) | ${g.dispatches} | ${fmt(g.wallMs)} | ${fmt(g.deferredMs)} | ${fmt(g.deviceMs)} | ${fmt(g.partsMs.broad)} / ${fmt(g.partsMs.narrow)} / ${fmt(g.partsMs.solve)}`
       : `failed: ${r.gpuError ?? '–'} | | | | | | `;
     const js = r.js ? `${fmt(r.js.ms)}${r.js.steps < (meta.steps as number) ? ` (${r.js.steps} steps)` : ''}` : r.jsError ? `failed: ${r.jsError}` : '–';
     const ratio = (gpuMs: number | undefined) => (r.js && gpuMs ? fmt(r.js.ms / gpuMs) : '–');
@@ -580,7 +596,7 @@ function markdown(rows: Row[], crossovers: Crossover[], meta: Record<string, unk
   }
   lines.push(
     '',
-    "bodies: dynamic bodies, plus one static ground; awake: of them, those awake after the timed steps (all, unless sleeping is on: the settled scene). contacts: the GPU's contacts (broad-phase pairs) and, in",
+    `bodies: dynamic bodies, plus one static ground; awake: of them, those awake after the timed steps (all, unless sleeping is on: the settled scene), and the awaited timed steps skipped as a world at rest (device time 0; skipping ${skipResting ? 'on' : 'off: --skip-resting off'}). contacts: the GPU's contacts (broad-phase pairs) and, in`,
     'parentheses, the touching ones the solver takes. GPU wall: GpuStepper.step() from call to resolved promise',
     '(mirror sync, recording, submit, wait for the read-back). GPU not awaited: steps submitted with { wait: false }',
     "(up to four in flight), total wall time / steps. GPU device: timestamp span of the step's passes; broad /",
@@ -640,6 +656,7 @@ async function main(): Promise<number> {
       validation: { type: 'boolean' },
       quick: { type: 'boolean' },
       fused: { type: 'string' },
+      'skip-resting': { type: 'string' },
       auto: { type: 'boolean' },
       out: { type: 'string' },
       help: { type: 'boolean', short: 'h' },
@@ -662,6 +679,10 @@ async function main(): Promise<number> {
   if (values.fused !== undefined) {
     if (values.fused !== 'on' && values.fused !== 'off') throw new Error(`--fused must be on or off, got ${values.fused}`);
     solverOptions.fused = values.fused === 'on';
+  }
+  if (values['skip-resting'] !== undefined) {
+    if (values['skip-resting'] !== 'on' && values['skip-resting'] !== 'off') throw new Error(`--skip-resting must be on or off, got ${values['skip-resting']}`);
+    skipResting = values['skip-resting'] === 'on';
   }
 
   let finished = false;

@@ -5,13 +5,14 @@
  * In:  a synced GpuWorld (the mirror); the broad phase, the narrow phase and the solver, which own
  *      their buffers and kernels and encode their stages' dispatches when record() asks.
  * Out: one step's pairs, contacts and (with the solver) motion on the GPU; the step's counts
- *      (NarrowPhaseResult) from one read-back of 320 bytes plus timestamps: the broad phase's and
- *      the narrow phase's state words and the solver's SV.COLOUR_START .. SV.PENETRATION (the
- *      colours' sizes, which GpuSolver.passColours follows, and the accuracy target's measure, so
- *      that it costs no read-back of its own).
+ *      (NarrowPhaseResult) from one read-back of 324 bytes plus timestamps: the broad phase's and
+ *      the narrow phase's state words and the solver's SV.COLOUR_START .. SV.AWAKE (the
+ *      colours' sizes, which GpuSolver.passColours follows, the accuracy target's measure, so
+ *      that it costs no read-back of its own, and the bodies left awake).
  * Invariants: the stages run in GpuStage order and read only what earlier stages of the same
  *      submission (or earlier steps) wrote; nothing is read back inside a step. Same inputs, same
- *      outputs, bit for bit, on one device.
+ *      outputs, bit for bit, on one device; so a world at rest, whose step would give its buffers
+ *      the bits they hold, records none (skipResting).
  *
  * Overflow: the host sizes the buffers, the GPU counts what it needed. When the sweep entries,
  * the pairs or the contacts did not fit, the counts read back say exactly how much room is
@@ -123,13 +124,13 @@ const SOLVER_STATE_END = SOLVER_STATE_OFFSET + 4 * SV_READBACK_WORDS;
 const TIMER_OFFSET = Math.ceil(SOLVER_STATE_END / 8) * 8;
 
 /** What a step's result says of its solver (NarrowPhaseResult). */
-type SolverWords = Pick<NarrowPhaseResult, 'coloursUsed' | 'colourItems' | 'penetration'>;
+type SolverWords = Pick<NarrowPhaseResult, 'coloursUsed' | 'colourItems' | 'penetration' | 'awake'>;
 /** A step that did not solve, or whose solver skipped it. */
-const NOT_SOLVED: Readonly<SolverWords> = { coloursUsed: -1, colourItems: null, penetration: -1 };
+const NOT_SOLVED: Readonly<SolverWords> = { coloursUsed: -1, colourItems: null, penetration: -1, awake: -1 };
 
 /**
  * The solver words of a step's read-back: SV.COLOURS_USED, the items per colour (the overflow set
- * last) and, when the step recorded its stage, SV.PENETRATION.
+ * last), SV.AWAKE and, when the step recorded its stage, SV.PENETRATION.
  */
 function solverWords(bytes: ArrayBuffer, last: GpuStage): SolverWords {
   if (last <= GpuStage.Compact) return NOT_SOLVED;
@@ -137,10 +138,12 @@ function solverWords(bytes: ArrayBuffer, last: GpuStage): SolverWords {
   const colourItems: number[] = [];
   for (let c = 0; c <= COLOUR_CAP; ++c) colourItems.push(w[c + 1] - w[c]);
   const penetration = last >= GpuStage.Penetration ? new Float32Array(w.buffer, w.byteOffset, SV_READBACK_WORDS)[SV.PENETRATION - SV.COLOUR_START] : -1;
-  return { coloursUsed: w[SV.COLOURS_USED - SV.COLOUR_START], colourItems, penetration };
+  return { coloursUsed: w[SV.COLOURS_USED - SV.COLOUR_START], colourItems, penetration, awake: w[SV.AWAKE - SV.COLOUR_START] };
 }
 
 interface InFlight {
+  /** The step's index among the steps recorded. */
+  step: number;
   settled: Promise<NarrowPhaseResult>;
   result: NarrowPhaseResult | null;
   /** The broad phase's state words of the step. */
@@ -167,6 +170,23 @@ export class GpuPipeline {
    * without a penetration target does not pay a pass over its contacts.
    */
   measurePenetration = false;
+  /**
+   * Whether a solving step of a world at rest records nothing (default true). Once a step has run
+   * that began with every body asleep (the read-backs of it and of the step before say SV.AWAKE is
+   * 0) and no input changed since (inputsChanged), a step would leave every buffer with the bits
+   * it has: such a step is skipped, and its result is the last one's (`skipped`).
+   */
+  skipResting = true;
+  /** Steps skipped at rest (skipResting). */
+  skippedSteps = 0;
+  /** Steps recorded so far: the index of the next one. */
+  private recorded = 0;
+  /** The index of lastResult's step. */
+  private lastResultStep = -1;
+  /** The first step of the latest run of results with every body asleep; -1 when the latest is awake. */
+  private restingFrom = -1;
+  /** The latest step whose inputs changed (inputsChanged). */
+  private changedAt = -1;
   private readonly timer: PassTimer;
   private readonly readback: Readback;
   private readonly ring: ReadbackRing;
@@ -258,6 +278,34 @@ export class GpuPipeline {
     }
   }
 
+  /** Says that the step about to be recorded has inputs that changed: the mirror uploaded something. */
+  inputsChanged(): void {
+    this.changedAt = this.recorded;
+  }
+
+  /** Takes in the result of step `step`, the steps' results coming in the order they were recorded. */
+  private take(result: NarrowPhaseResult, step: number): void {
+    this.lastResult = result;
+    this.lastResultStep = step;
+    if (result.awake !== 0) this.restingFrom = -1;
+    else if (this.restingFrom < 0) this.restingFrom = step;
+  }
+
+  /**
+   * Whether the next solving step would change nothing: a step after the first of a run of results
+   * at rest has its result in, and was recorded after the last change (and measured the
+   * penetration, if that is wanted now).
+   */
+  private atRest(): boolean {
+    return (
+      this.skipResting &&
+      this.restingFrom >= 0 &&
+      this.lastResultStep > this.restingFrom &&
+      this.lastResultStep > this.changedAt &&
+      (!this.measurePenetration || this.lastResult!.penetration >= 0)
+    );
+  }
+
   /** The last stage a step records. */
   private lastStage(solve: boolean): GpuStage {
     if (!solve) return GpuStage.Compact;
@@ -273,12 +321,29 @@ export class GpuPipeline {
   async step(mirror: GpuWorld, options: GpuPipelineStepOptions = {}): Promise<NarrowPhaseResult> {
     const last = this.lastStage(options.solve === true);
     if (this.busy) throw new Error('GpuPipeline.step: the previous step has not finished');
+    if (last > GpuStage.Compact && this.atRest()) return this.skip();
     this.busy = true;
     try {
-      return options.wait === false ? await this.runDeferred(mirror, last) : await this.runWaiting(mirror, last);
+      const step = this.recorded++;
+      return options.wait === false ? await this.runDeferred(mirror, last, step) : await this.runWaiting(mirror, last, step);
     } finally {
       this.busy = false;
     }
+  }
+
+  /** A step of a world at rest (atRest): nothing recorded, the last result again. */
+  private skip(): NarrowPhaseResult {
+    this.skippedSteps++;
+    const result: NarrowPhaseResult = {
+      ...this.lastResult!,
+      dispatches: 0,
+      gpuTime: null,
+      hostMs: { encode: 0, submit: 0, wait: 0 },
+      pending: false,
+      skipped: true,
+    };
+    result.settled = Promise.resolve(result);
+    return result;
   }
 
   /** Records a whole step and the copies for its read-back into `rb`. */
@@ -303,7 +368,7 @@ export class GpuPipeline {
     if (last > GpuStage.Compact) this.solver!.encodeStateCopy(encoder, rb, SOLVER_STATE_OFFSET);
   }
 
-  private async runWaiting(mirror: GpuWorld, last: GpuStage): Promise<NarrowPhaseResult> {
+  private async runWaiting(mirror: GpuWorld, last: GpuStage, index: number): Promise<NarrowPhaseResult> {
     await this.ctx.checkErrors();
     const bp = this.broadPhase;
     const np = this.narrowPhase;
@@ -365,7 +430,7 @@ export class GpuPipeline {
     const broad = bp.finishUpdate(state, bpRegrows, dispatches, gpuTime);
     np.endUpdate();
     const result = this.result(broad, counts, solved, np.contactRegrows - before, dispatches, gpuTime, hostMs, false);
-    this.lastResult = result;
+    this.take(result, index);
     return result;
   }
 
@@ -417,7 +482,7 @@ export class GpuPipeline {
       np.endUpdate();
       const broad: BroadPhaseResult = { pairCount: n, axis: 0, strips: 0, entries: 0, workItems: 0, regrows: 0, pairCapacity: n, dispatches: 0, gpuTime: null };
       const result = this.result(broad, counts, NOT_SOLVED, 0, dispatches, gpuTime, { encode: 0, submit: 0, wait: 0 }, false);
-      this.lastResult = result;
+      this.take(result, this.recorded++);
       return result;
     } finally {
       this.busy = false;
@@ -445,6 +510,7 @@ export class GpuPipeline {
       coloursUsed: solved.coloursUsed,
       colourItems: solved.colourItems,
       penetration: solved.penetration,
+      awake: solved.awake,
       eventCount: counts[NP.EVENTS],
       binCounts,
       keptCount: counts[NP.KEPT],
@@ -455,6 +521,7 @@ export class GpuPipeline {
       hostMs,
       overflowed: (counts[NP.OVERFLOW] & OVERFLOW_CONTACTS) !== 0 || (broad.pairCount > 0 && counts[NP.PAIRS] === 0),
       pending,
+      skipped: false,
     };
   }
 
@@ -466,7 +533,7 @@ export class GpuPipeline {
       const entry = this.inFlight.shift()!;
       const r = entry.result!;
       const state = entry.state!;
-      this.lastResult = r;
+      this.take(r, entry.step);
       const pairsFound = state[STATE.PAIR_COUNT];
       if ((state[STATE.OVERFLOW] & OVERFLOW_ENTRIES) !== 0) bp.growEntries(state[STATE.ENTRY_TOTAL]);
       // Headroom: keep 1.5 x the last counts.
@@ -477,7 +544,7 @@ export class GpuPipeline {
     }
   }
 
-  private async runDeferred(mirror: GpuWorld, last: GpuStage): Promise<NarrowPhaseResult> {
+  private async runDeferred(mirror: GpuWorld, last: GpuStage, index: number): Promise<NarrowPhaseResult> {
     await this.ctx.checkErrors();
     const bp = this.broadPhase;
     this.absorbSettled();
@@ -491,7 +558,7 @@ export class GpuPipeline {
     this.ctx.device.queue.submit([step.encoder.finish()]);
     const t2 = performance.now();
     const dispatches = step.dispatches();
-    const entry: InFlight = { settled: null as unknown as Promise<NarrowPhaseResult>, result: null, state: null };
+    const entry: InFlight = { step: index, settled: null as unknown as Promise<NarrowPhaseResult>, result: null, state: null };
     const capacity = this.narrowPhase.contactCapacity;
     entry.settled = rb.read(this.ctx, TIMER_OFFSET + this.timer.bytes).then((bytes) => {
       const state = new Uint32Array(bytes, 0, STATE_WORDS).slice();
@@ -513,6 +580,7 @@ export class GpuPipeline {
         r.coloursUsed = NOT_SOLVED.coloursUsed;
         r.colourItems = NOT_SOLVED.colourItems;
         r.penetration = NOT_SOLVED.penetration;
+        r.awake = NOT_SOLVED.awake;
       }
       entry.state = state;
       entry.result = r;

@@ -25,7 +25,8 @@
  * GPU step warm-starts as the engine's next step would.
  * Joints: all ten types of 2.2.1 are solved (solveJoints.ts), coloured with the contacts.
  * Sleeping: islands and sleep timers on the GPU (islands.ts); the awake flag is GPU-owned like the
- * motion, and SetAwake from JavaScript reaches the GPU by GpuWorld's rule (its header).
+ * motion, and SetAwake from JavaScript reaches the GPU by GpuWorld's rule (its header). A world at
+ * rest (every body asleep, nothing uploaded since) records no step at all (GpuPipeline.skipResting).
  * Unlike 2.2.1 (docs/GPU.md, "The solver"): no TOI island solve or sub-steps (a body is stopped at
  * its time of impact and the next step solves the contact). Contact listeners: WebGPUBackend
  * (backend.ts) reads events and contacts in readState()'s map and delivers them after the step.
@@ -175,7 +176,8 @@ export class GpuStepper {
   async step(dt: number, velocityIterations: number, positionIterations: number, options: GpuStepOptions = {}): Promise<NarrowPhaseResult> {
     const world = this.world;
     this.stateFresh = false;
-    this.mirror.sync();
+    // A world at rest skips its steps until something is uploaded (GpuPipeline.skipResting).
+    if (this.mirror.sync().upload.writes > 0) this.pipeline.inputsChanged();
     // The forces are on the GPU now; b2World::Step clears them after the step.
     if ((world.m_flags & e_clearForces) !== 0) this.mirror.clearForces();
     const solve = dt > 0;

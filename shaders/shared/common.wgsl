@@ -240,6 +240,7 @@ const SV_COLOURED_JOINTS: u32 = 36u;   // SV_JOINTS of the last colouring
 const SV_COLOUR_SORT_COUNT: u32 = 37u; // items the colour sort sorts: SV_ITEMS when colouring again, else 0
 const SV_COLOURS_USED: u32 = 38u;      // colours below COLOUR_CAP up to the last non-empty one (the fused and tail passes stop there; read back)
 const SV_PENETRATION: u32 = 39u;       // bits of the step's deepest penetration after its last motion (f32 >= 0, so atomicMax orders it: penetration.wgsl; read back)
+const SV_AWAKE: u32 = 40u;             // non-static bodies awake at the end of the step (islands.wgsl `sleep`; read back)
 
 // Colours of the graph colouring; colour COLOUR_CAP is the overflow set (solved in order by one invocation).
 const COLOUR_CAP: u32 = 24u;

@@ -9,7 +9,7 @@
 //      items).
 // Out: `begin` (one invocation): solverState SV_SKIP, SV_COUNT, SV_JOINTS, SV_ITEMS, the
 //      position-iteration words, SV_COLOUR_CHANGED = 0, SV_PENETRATION = 0 (penetration.wgsl's
-//      maximum starts from no depth), the indirect sizes of per-contact and per-item passes.
+//      maximum starts from no depth), SV_AWAKE = 0 (islands.wgsl counts), the indirect sizes of per-contact and per-item passes.
 //      `invalidate` (one invocation, recorded when the host replaced a buffer that holds the last
 //      colouring): SV_COLOUR_CHANGED = 1.
 //      `compare` (per item): SV_COLOUR_CHANGED = 1 when the item's signature (its dynamic bodies,
@@ -77,6 +77,7 @@ fn begin() {
   atomicStore(&solverState[SV_COLOUR_CHANGED], 0u);
   atomicStore(&solverState[SV_COLOURS_USED], 0u);
   atomicStore(&solverState[SV_PENETRATION], 0u);
+  atomicStore(&solverState[SV_AWAKE], 0u);
   write_args(SV_ARGS_CONTACTS, dispatch_size(count, WORKGROUP_SIZE));
   write_args(SV_ARGS_ITEMS, dispatch_size(items, WORKGROUP_SIZE));
 }

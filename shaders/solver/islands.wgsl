@@ -2,7 +2,7 @@
 // b2Island::Solve, as connected components of the body graph (union-find) instead of a DFS.
 //
 // In:  params (h, body and joint slot counts, allowSleep), solverState (SV_SKIP, SV_COUNT,
-//      SV_POSITION_DONE), npState[NP_CONTACTS], contactRef (bodies A and B), manifolds (header
+//      SV_POSITION_DONE; SV_AWAKE counted into), npState[NP_CONTACTS], contactRef (bodies A and B), manifolds (header
 //      flags), solverList (touching non-sensor contacts), joints, bodyFlags, bodyAwake (1 awake,
 //      0 asleep), bodySweep (sleepTime in word 7), bodyVel.
 // Out: before the solver: `init` (per body slot) resets the union-find; `wake` (per contact) wakes
@@ -17,7 +17,8 @@
 //      After the position iterations: `sleep_time` (per awake body) b2Island::Solve's sleep timer
 //      and the component's minimum (atomicMin of the f32 bits: the times are >= 0, so the bits
 //      order as the floats do); `sleep` (per awake body) puts the whole component to sleep once
-//      the minimum is >= b2_timeToSleep and the position iterations converged.
+//      the minimum is >= b2_timeToSleep and the position iterations converged, and counts the
+//      nodes still awake into SV_AWAKE (0: the world is at rest, GpuStepper skips its steps).
 // Invariants: nodes are live active non-static bodies; islands[4i] (the parent) only ever points
 //      to a smaller slot, a root only to itself, so after `label` every body of a component holds
 //      the component's smallest slot whatever order the hooks ran in: the same labels every run.
@@ -32,7 +33,7 @@ struct IslandParams {
 }
 
 @group(0) @binding(0) var<uniform> params: IslandParams;
-@group(0) @binding(1) var<storage, read> solverState: array<u32>;
+@group(0) @binding(1) var<storage, read_write> solverState: array<atomic<u32>>;
 @group(0) @binding(2) var<storage, read> npState: array<u32>;
 @group(0) @binding(3) var<storage, read> contactRef: array<vec4<u32>>;
 @group(0) @binding(4) var<storage, read> manifolds: array<vec4<u32>>;
@@ -59,7 +60,7 @@ fn is_node(i: u32) -> bool {
 
 fn body_index(wid: vec3<u32>, nwg: vec3<u32>, lid: u32) -> u32 {
   let i = group_index(wid, nwg) * WORKGROUP_SIZE + lid;
-  if (i >= params.bodySlots || solverState[SV_SKIP] != 0u) {
+  if (i >= params.bodySlots || atomicLoad(&solverState[SV_SKIP]) != 0u) {
     return NO_ISLAND;
   }
   return i;
@@ -120,7 +121,7 @@ fn init(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: vec
 fn wake(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: vec3<u32>,
         @builtin(local_invocation_index) lid: u32) {
   let i = group_index(wid, nwg) * WORKGROUP_SIZE + lid;
-  if (solverState[SV_SKIP] != 0u || i >= npState[NP_CONTACTS]) {
+  if (atomicLoad(&solverState[SV_SKIP]) != 0u || i >= npState[NP_CONTACTS]) {
     return;
   }
   let header = manifolds[4u * i].x;
@@ -142,7 +143,7 @@ fn wake(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: vec
 fn hook_contacts(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: vec3<u32>,
                  @builtin(local_invocation_index) lid: u32) {
   let k = group_index(wid, nwg) * WORKGROUP_SIZE + lid;
-  if (k >= solverState[SV_COUNT]) {
+  if (k >= atomicLoad(&solverState[SV_COUNT])) {
     return;
   }
   let i = solverList[k];
@@ -157,7 +158,7 @@ fn hook_contacts(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups)
 fn hook_joints(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: vec3<u32>,
                @builtin(local_invocation_index) lid: u32) {
   let j = group_index(wid, nwg) * WORKGROUP_SIZE + lid;
-  if (j >= params.jointSlots || solverState[SV_SKIP] != 0u) {
+  if (j >= params.jointSlots || atomicLoad(&solverState[SV_SKIP]) != 0u) {
     return;
   }
   let joint = joints[j];
@@ -232,12 +233,13 @@ fn sleep_time(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nw
 fn sleep(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: vec3<u32>,
          @builtin(local_invocation_index) lid: u32) {
   let i = body_index(wid, nwg, lid);
-  let root = sleep_candidate(i);
-  if (root == NO_ISLAND || solverState[SV_POSITION_DONE] == 0u) {
+  if (i == NO_ISLAND || !is_node(i) || atomicLoad(&bodyAwake[i]) == 0u) {
     return;
   }
-  let minSleepTime = bitcast<f32>(atomicLoad(&islands[ISLAND_WORDS * root + ISLAND_MIN_SLEEP]));
-  if (minSleepTime < TIME_TO_SLEEP) {
+  let root = sleep_candidate(i);
+  if (root == NO_ISLAND || atomicLoad(&solverState[SV_POSITION_DONE]) == 0u ||
+      bitcast<f32>(atomicLoad(&islands[ISLAND_WORDS * root + ISLAND_MIN_SLEEP])) < TIME_TO_SLEEP) {
+    atomicAdd(&solverState[SV_AWAKE], 1u);
     return;
   }
   atomicStore(&bodyAwake[i], 0u);

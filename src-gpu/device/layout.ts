@@ -310,14 +310,15 @@ export const SV = {
   COLOUR_SORT_COUNT: 37,
   COLOURS_USED: 38,
   PENETRATION: 39,
+  AWAKE: 40,
 } as const;
-export const SV_STATE_WORDS = 40;
+export const SV_STATE_WORDS = 41;
 /**
  * Solver state words each step's read-back carries (pipeline.ts, one copy): SV.COLOUR_START ..
- * SV.PENETRATION, the colour starts (the sizes GpuSolver.passColours follows), the colours used
- * and the step's penetration.
+ * SV.AWAKE, the colour starts (the sizes GpuSolver.passColours follows), the colours used, the
+ * step's penetration and the bodies awake after it (a world at rest skips its steps: GpuStepper).
  */
-export const SV_READBACK_WORDS = SV.PENETRATION + 1 - SV.COLOUR_START;
+export const SV_READBACK_WORDS = SV.AWAKE + 1 - SV.COLOUR_START;
 
 /**
  * Solver items (contacts and joints) up to which one workgroup runs the colouring rounds, the warm

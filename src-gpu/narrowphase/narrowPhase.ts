@@ -90,6 +90,11 @@ export interface NarrowPhaseResult {
    * step did not solve or overflowed.
    */
   colourItems: number[] | null;
+  /**
+   * Non-static bodies awake after the step (SV.AWAKE); -1 when the step did not solve or
+   * overflowed. 0: the world is at rest (GpuPipeline.skipResting).
+   */
+  awake: number;
   /** Begin/end events. */
   eventCount: number;
   /** Contacts per bin (layout.ts BIN order): the contacts collided this step. */
@@ -112,6 +117,8 @@ export interface NarrowPhaseResult {
   overflowed: boolean;
   /** { wait: false }: the counts above are those of the latest step whose read-back is in. */
   pending: boolean;
+  /** The world was at rest and nothing changed: nothing was recorded (GpuPipeline.skipResting). */
+  skipped: boolean;
   /** { wait: false }: resolves with this step's own result once its read-back is in. */
   settled?: Promise<NarrowPhaseResult>;
 }

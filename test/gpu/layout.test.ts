@@ -142,10 +142,11 @@ it("declares the solver's state words, indirect offsets, colour cap and 2.2.1's 
   expect(c.get('CONSTRAINT_VEC4')).toBe(layout.CONSTRAINT_VEC4);
   expect(layout.SV.COLOUR_START + layout.COLOUR_CAP + 2).toBeLessThanOrEqual(layout.SV.COLOUR_CHANGED);
   expect(layout.SV.COLOUR_SORT_COUNT).toBeLessThan(layout.SV_STATE_WORDS);
-  // A step's read-back carries every colour start (the overflow set's end included), the colours used and the penetration, as one range.
+  // A step's read-back carries every colour start (the overflow set's end included), the colours used, the penetration and the awake count, as one range.
   expect(layout.SV_READBACK_WORDS).toBeGreaterThanOrEqual(layout.COLOUR_CAP + 2);
   expect(layout.SV.COLOURS_USED).toBeLessThan(layout.SV.COLOUR_START + layout.SV_READBACK_WORDS);
-  expect(layout.SV.PENETRATION).toBe(layout.SV.COLOUR_START + layout.SV_READBACK_WORDS - 1);
+  expect(layout.SV.PENETRATION).toBeLessThan(layout.SV.COLOUR_START + layout.SV_READBACK_WORDS);
+  expect(layout.SV.AWAKE).toBe(layout.SV.COLOUR_START + layout.SV_READBACK_WORDS - 1);
   expect(layout.SV.COLOUR_START + layout.SV_READBACK_WORDS).toBeLessThanOrEqual(layout.SV_STATE_WORDS);
   expect(layout.SV_ARGS.COLOURS + 3 * (layout.COLOUR_CAP + 1)).toBeLessThanOrEqual(layout.SV_ARGS.POSITION);
   expect(layout.SV_ARGS.POSITION + 3 * (layout.COLOUR_CAP + 1)).toBeLessThanOrEqual(layout.SV_ARGS.ITEMS);

@@ -2,7 +2,8 @@
  * GpuPipeline records a step as GpuStage lists it: the broad phase's passes, then the narrow
  * phase's, then the solver's, each once and in that order (read from the step's timestamps, which
  * name every pass), and only the stages a step needs: no collide kernel for a pair type the
- * world's fixtures cannot form, no time of impact without bullets or static and kinematic bodies.
+ * world's fixtures cannot form, no time of impact without bullets or static and kinematic bodies;
+ * and nothing at all for a world at rest (skipResting), to the bits that stepping it gives.
  */
 
 import { expect, it } from 'vitest';
@@ -16,6 +17,7 @@ import { GpuStage, STAGE_PASS } from '../../src-gpu/pipeline';
 import { GpuStepper } from '../../src-gpu/stepper';
 import { loadGoldenScene } from '../support/scene';
 import { describeGpu } from './support';
+import { DT, motion, POSITION_ITERATIONS, pyramid, restingWorld, stepUntilAsleep, VELOCITY_ITERATIONS } from './resting';
 
 /** The broad phase's own passes (GpuStage.BroadPhase). */
 const BROAD_PASSES = ['bounds', 'axis', 'sort', 'sweep', 'pairs'];
@@ -102,5 +104,58 @@ describeGpu('GPU pipeline', (ctx) => {
     } finally {
       stepper.destroy();
     }
+  });
+
+  it('records nothing for a world at rest once a step that began asleep is in, to the bits of stepping it; an upload (a box dropped on the pile) steps it again', async () => {
+    const run = async (skipResting: boolean) => {
+      const { world, boxes } = restingWorld(pyramid(4));
+      const stepper = new GpuStepper(ctx, world);
+      stepper.pipeline.skipResting = skipResting;
+      try {
+        await stepUntilAsleep(stepper, boxes);
+        const step = () => stepper.step(DT, VELOCITY_ITERATIONS, POSITION_ITERATIONS);
+        const resting = [];
+        for (let i = 0; i < 5; ++i) resting.push(await step());
+        const restBytes = await stepper.narrowPhase.readAll();
+        await stepper.readBodies();
+        const rest = motion(boxes);
+        const def = new b2BodyDef();
+        def.type = b2_dynamicBody;
+        def.position.Set(0, 6);
+        const box = new b2PolygonShape();
+        box.SetAsBox(0.5, 0.5);
+        const dropped = world.CreateBody(def);
+        dropped.CreateFixture(box, 1);
+        const falling = [];
+        for (let i = 0; i < 60; ++i) falling.push(await step());
+        await stepper.readBodies();
+        return {
+          resting,
+          restBytes,
+          rest,
+          falling,
+          end: motion([...boxes, dropped]),
+          endBytes: await stepper.narrowPhase.readAll(),
+          skipped: stepper.pipeline.skippedSteps,
+        };
+      } finally {
+        stepper.destroy();
+      }
+    };
+    const skipping = await run(true);
+    const stepping = await run(false);
+    // The step after the one that put the pile to sleep began asleep; every step after it is skipped.
+    expect(skipping.resting.map((r) => [r.skipped, r.awake])).toEqual([[false, 0], ...Array(4).fill([true, 0])]);
+    expect(skipping.resting.slice(1).map((r) => r.dispatches)).toEqual([0, 0, 0, 0]);
+    expect(stepping.resting.some((r) => r.skipped)).toBe(false);
+    expect(skipping.resting[4].contactCount).toBe(stepping.resting[4].contactCount);
+    expect(skipping.restBytes).toEqual(stepping.restBytes);
+    expect(skipping.rest).toEqual(stepping.rest);
+    // The dropped box is recorded at once, lands and wakes the pile: every bit as stepping gives.
+    expect(skipping.falling[0].skipped).toBe(false);
+    expect(skipping.falling.map((r) => r.awake)).toEqual(stepping.falling.map((r) => r.awake));
+    expect(skipping.end).toEqual(stepping.end);
+    expect(skipping.endBytes).toEqual(stepping.endBytes);
+    expect([skipping.skipped, stepping.skipped]).toEqual([4 + skipping.falling.filter((r) => r.skipped).length, 0]);
   });
 });
