@@ -664,7 +664,7 @@ async function main(): Promise<number> {
   });
   if (values.help) {
     process.stdout.write(
-      'node dist/bench-gpu-step.mjs [--sizes 1e3,1e4,1e5,1e6] [--scenes pyramids,rain,balls] [--steps 10] [--js-max 1e5] [--js-budget 3] [--fused on|off] [--auto] [--validation] [--quick] [--out DIR]\n',
+      'node dist/bench-gpu-step.mjs [--sizes 1e3,1e4,1e5,1e6] [--scenes pyramids,rain,balls,settled] [--steps 10] [--js-max 1e5] [--js-budget 3] [--fused on|off] [--skip-resting on|off] [--auto] [--validation] [--quick] [--out DIR]\n',
     );
     return 0;
   }

@@ -283,20 +283,12 @@ export class MirrorTable {
   flush(queue: GPUQueue, stats?: UploadStats): void {
     if (this.dirtyCount === 0) return;
     const n = this.count;
-    const bytesPerElement = this.words * 4;
     const dirty = this.dirty;
     let elements = 0;
-    const write = (from: number, to: number) => {
-      writeShadow(queue, this.gpu.buffer, from * bytesPerElement, this.u32, from * this.words, (to - from) * this.words);
-      if (stats) {
-        stats.bytes += (to - from) * bytesPerElement;
-        stats.writes++;
-      }
-    };
     const gap = this.exactUploads ? 0 : MERGE_GAP;
     if (this.dirtyCount * 2 > n && !this.exactUploads) {
       for (let i = 0; i < n; ++i) elements += dirty[i];
-      write(0, n);
+      this.writeRange(queue, 0, n, stats);
     } else {
       let start = -1;
       let end = -1;
@@ -306,16 +298,26 @@ export class MirrorTable {
         if (start < 0) {
           start = i;
         } else if (i - end > gap) {
-          write(start, end);
+          this.writeRange(queue, start, end, stats);
           start = i;
         }
         end = i + 1;
       }
-      if (start >= 0) write(start, end);
+      if (start >= 0) this.writeRange(queue, start, end, stats);
     }
     if (stats) stats.elements += elements;
     dirty.fill(0, 0, Math.max(n, dirty.length));
     this.dirtyCount = 0;
+  }
+
+  /** Uploads elements [from, to) from the shadow. */
+  private writeRange(queue: GPUQueue, from: number, to: number, stats: UploadStats | undefined): void {
+    const bytesPerElement = this.words * 4;
+    writeShadow(queue, this.gpu.buffer, from * bytesPerElement, this.u32, from * this.words, (to - from) * this.words);
+    if (stats) {
+      stats.bytes += (to - from) * bytesPerElement;
+      stats.writes++;
+    }
   }
 
   destroy(): void {
