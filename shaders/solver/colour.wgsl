@@ -9,7 +9,8 @@
 //      items).
 // Out: `begin` (one invocation): solverState SV_SKIP, SV_COUNT, SV_JOINTS, SV_ITEMS, the
 //      position-iteration words, SV_COLOUR_CHANGED = 0, SV_PENETRATION = 0 (penetration.wgsl's
-//      maximum starts from no depth), SV_AWAKE = 0 (islands.wgsl counts), the indirect sizes of per-contact and per-item passes.
+//      maximum starts from no depth), SV_AWAKE = 0 (islands.wgsl counts into it), the indirect
+//      sizes of per-contact and per-item passes.
 //      `invalidate` (one invocation, recorded when the host replaced a buffer that holds the last
 //      colouring): SV_COLOUR_CHANGED = 1.
 //      `compare` (per item): SV_COLOUR_CHANGED = 1 when the item's signature (its dynamic bodies,
@@ -27,8 +28,8 @@
 //      `rounds` (one workgroup): every round of `mark` and `pick` with barriers, for a small world.
 //      `offsets` (one workgroup, every step: the early exit zeroes the position passes' sizes):
 //      SV_COLOUR_START (first entry of each colour in the sorted keys, then the overflow set's
-//      end, where the idle items begin), the indirect size of each
-//      colour's warm-start, velocity and position passes, and one workgroup for the tail passes
+//      end, where the idle items begin), the indirect size of each colour's warm-start, velocity
+//      and position passes, and one workgroup for the tail passes
 //      (the colours the host records no pass of their own for, then the overflow set, which is
 //      solved in order), SV_COLOURS_USED (the colours up to the last non-empty one).
 // Invariants: bodyMark holds two words per body (round parity); round r posts to parity r & 1

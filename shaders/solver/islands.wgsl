@@ -2,7 +2,7 @@
 // b2Island::Solve, as connected components of the body graph (union-find) instead of a DFS.
 //
 // In:  params (h, body and joint slot counts, allowSleep), solverState (SV_SKIP, SV_COUNT,
-//      SV_POSITION_DONE; SV_AWAKE counted into), npState[NP_CONTACTS], contactRef (bodies A and B), manifolds (header
+//      SV_POSITION_DONE), npState[NP_CONTACTS], contactRef (bodies A and B), manifolds (header
 //      flags), solverList (touching non-sensor contacts), joints, bodyFlags, bodyAwake (1 awake,
 //      0 asleep), bodySweep (sleepTime in word 7), bodyVel.
 // Out: before the solver: `init` (per body slot) resets the union-find; `wake` (per contact) wakes
@@ -18,7 +18,8 @@
 //      and the component's minimum (atomicMin of the f32 bits: the times are >= 0, so the bits
 //      order as the floats do); `sleep` (per awake body) puts the whole component to sleep once
 //      the minimum is >= b2_timeToSleep and the position iterations converged, and counts the
-//      nodes still awake into SV_AWAKE (0: the world is at rest, GpuStepper skips its steps).
+//      nodes still awake into solverState[SV_AWAKE] (0: the world is at rest, and the host
+//      records no more steps until it uploads something: GpuPipeline.skipResting).
 // Invariants: nodes are live active non-static bodies; islands[4i] (the parent) only ever points
 //      to a smaller slot, a root only to itself, so after `label` every body of a component holds
 //      the component's smallest slot whatever order the hooks ran in: the same labels every run.

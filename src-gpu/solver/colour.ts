@@ -10,8 +10,9 @@
  * Out: colours[item] in [0, COLOUR_CAP), COLOUR_CAP (the overflow set) or COLOUR_IDLE (no dynamic
  *      body: nothing to solve); colourKeys: (colour, item) sorted by colour, items ascending
  *      within one; solverState[SV.COLOUR_START + c] (COLOUR_CAP + 2 words: the last is the
- *      overflow set's end, so no pass reaches the idle items after it); the indirect sizes of each colour's passes (SV_ARGS.COLOURS,
- *      SV_ARGS.POSITION: a 1-invocation pass for the overflow set, which is solved in order).
+ *      overflow set's end, so no pass reaches the idle items after it); the indirect sizes of
+ *      each colour's passes (SV_ARGS.COLOURS, SV_ARGS.POSITION: a 1-invocation pass for the
+ *      overflow set, which is solved in order).
  *      `encodeBegin` also sets SV.SKIP / SV.COUNT / SV.JOINTS / SV.ITEMS (nothing is solved when
  *      collision overflowed: the host reruns it, and the solver with it), zeroes SV.PENETRATION
  *      (penetration.ts) and sets the per-contact and per-item indirect sizes.
