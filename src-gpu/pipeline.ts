@@ -116,7 +116,8 @@ export interface GpuPipelineStepOptions {
 
 /**
  * Byte layout of the read-back: broad-phase state, narrow-phase state, the solver's colour starts,
- * colours used and penetration (SV_READBACK_WORDS from SV.COLOUR_START), timestamps (8-byte aligned).
+ * colours used, penetration and bodies awake (SV_READBACK_WORDS from SV.COLOUR_START), timestamps
+ * (8-byte aligned).
  */
 const NP_STATE_OFFSET = 64;
 const SOLVER_STATE_OFFSET = NP_STATE_OFFSET + 4 * NP_STATE_WORDS;
@@ -577,10 +578,7 @@ export class GpuPipeline {
       r.overflowed = r.overflowed || (state[STATE.OVERFLOW] & (OVERFLOW_PAIRS | OVERFLOW_ENTRIES)) !== 0;
       // The solver skipped the step: its colours say nothing of the next steps', and it measured nothing.
       if (r.overflowed) {
-        r.coloursUsed = NOT_SOLVED.coloursUsed;
-        r.colourItems = NOT_SOLVED.colourItems;
-        r.penetration = NOT_SOLVED.penetration;
-        r.awake = NOT_SOLVED.awake;
+        Object.assign(r, NOT_SOLVED);
       }
       entry.state = state;
       entry.result = r;

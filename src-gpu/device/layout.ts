@@ -316,7 +316,7 @@ export const SV_STATE_WORDS = 41;
 /**
  * Solver state words each step's read-back carries (pipeline.ts, one copy): SV.COLOUR_START ..
  * SV.AWAKE, the colour starts (the sizes GpuSolver.passColours follows), the colours used, the
- * step's penetration and the bodies awake after it (a world at rest skips its steps: GpuStepper).
+ * step's penetration and the bodies awake after it (a world at rest skips its steps: GpuPipeline.skipResting).
  */
 export const SV_READBACK_WORDS = SV.AWAKE + 1 - SV.COLOUR_START;
 

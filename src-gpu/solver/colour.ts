@@ -15,7 +15,7 @@
  *      overflow set, which is solved in order).
  *      `encodeBegin` also sets SV.SKIP / SV.COUNT / SV.JOINTS / SV.ITEMS (nothing is solved when
  *      collision overflowed: the host reruns it, and the solver with it), zeroes SV.PENETRATION
- *      (penetration.ts) and sets the per-contact and per-item indirect sizes.
+ *      (penetration.ts) and SV.AWAKE (islands.ts counts into it) and sets the per-contact and per-item indirect sizes.
  * Rounds: COLOUR_CAP rounds of two dispatches (post priorities with atomicMax, then pick the
  *      local maxima), whatever the contact count: no read-back decides when to stop. A round
  *      with nothing left to colour costs two empty-ish dispatches. A small world runs every

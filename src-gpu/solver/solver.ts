@@ -427,9 +427,9 @@ export class GpuSolver {
   };
 
   /**
-   * Copies the step's SV.COLOUR_START .. SV.PENETRATION words (SV_READBACK_WORDS) into `dst` at
-   * `offset`: the pipeline's read-back, whose colour sizes set the next steps' passColours, and
-   * the step's penetration.
+   * Copies the step's SV.COLOUR_START .. SV.AWAKE words (SV_READBACK_WORDS) into `dst` at
+   * `offset`: the pipeline's read-back, whose colour sizes set the next steps' passColours, the
+   * step's penetration and the bodies it left awake.
    */
   encodeStateCopy(encoder: GPUCommandEncoder, dst: GPUBuffer, offset: number): void {
     encoder.copyBufferToBuffer(this.state, 4 * SV.COLOUR_START, dst, offset, 4 * SV_READBACK_WORDS);
