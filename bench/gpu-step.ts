@@ -6,7 +6,7 @@
  * external), so it runs where only Node and .device/node_modules exist:
  *
  *   node dist/bench-gpu-step.mjs [--sizes 1e3,1e4,1e5,1e6] [--scenes pyramids,rain,balls] [--steps 10]
- *        [--js-max 1e5] [--js-budget 3] [--fused on|off] [--skip-resting on|off] [--auto] [--validation] [--quick] [--out DIR]
+ *        [--js-max 1e5] [--js-budget 3] [--fused on|off] [--skip-resting on|off] [--continuous on|off] [--auto] [--validation] [--quick] [--out DIR]
  *
  * On a lent H100 (kind nvidia-h100-x1; `.device` from `bash ../shared/gpu/prepare.sh`): carry
  * `.device` and `dist/bench-gpu-step.mjs`, run
@@ -28,12 +28,14 @@
  *             set). The GPU table gives the bodies still awake after the timed steps.
  * --skip-resting on|off: whether a world at rest skips its steps (GpuPipeline.skipResting; default
  *   on; off measures what the GPU's stages cost a sleeping world).
+ * --continuous on|off: continuous physics in both engines (default off; on adds the GPU's time of
+ *   impact stage: what b2World's default costs).
  * --fused on|off: the solver's fused passes for every size, or for none (GpuSolverOptions.fused);
  * default: by the solver's items (FUSED_SOLVER_ITEMS). --auto: AutoBackend's calibration measured on this
  * adapter (its crossover and the fitted costs).
  * Both engines: 1/60 s, 8 velocity / 3 position iterations, sleeping and continuous physics off
  * (resting pyramids would fall asleep and cost nothing: this measures the full step's work), but
- * for the settled scene's sleeping.
+ * for the settled scene's sleeping and --continuous on.
  * GPU: a device with Dawn's validation off (requestGpu skipValidation; --validation keeps it on, as
  * browsers run it) and timestamp queries when
  * the adapter has them. Each world gets a GpuStepper; after GPU_WARMUP awaited steps (on the H100
@@ -142,14 +144,17 @@ const PYRAMID_PITCH = PYRAMID_ROWS + 2;
 const RAIN_SPACING = 1.5;
 const BROAD_PASSES = new Set(['bounds', 'axis', 'sort', 'sweep', 'pairs']);
 
+/** b2World.SetContinuousPhysics for every scene (--continuous). */
+let continuous = false;
+
 /**
- * A world for both engines: gravity, sleeping and continuous physics off, a ground of half-width
+ * A world for both engines: gravity, sleeping off, continuous physics as --continuous, a ground of half-width
  * `halfWidth` with its top at y = 0: a box, or an edge.
  */
 function emptyWorld(halfWidth: number, edgeGround = false): b2World {
   const world = new b2World(new b2Vec2(0, -10));
   world.SetAllowSleeping(false);
-  world.SetContinuousPhysics(false);
+  world.SetContinuousPhysics(continuous);
   const ground = world.CreateBody(new b2BodyDef());
   const fd = new b2FixtureDef();
   if (edgeGround) {
@@ -529,7 +534,7 @@ function markdown(rows: Row[], crossovers: Crossover[], meta: Record<string, unk
     '# Full step on the GPU (broad phase + narrow phase + solver) vs the JavaScript engine',
     '',
     `Device: ${meta.device}; timestamps: ${meta.timestamps}; Dawn validation ${meta.skipValidation ? 'off' : 'on'}. Node ${meta.node}. ${meta.date}. ${meta.heapSettled ? 'Full garbage collection before each world is built and before it is timed.' : "Run without --expose-gc: a phase may pay for collecting the previous one's world."}`,
-    `1/60 s, ${VELOCITY_ITERATIONS} velocity / ${POSITION_ITERATIONS} position iterations, sleeping and continuous physics off`,
+    `1/60 s, ${VELOCITY_ITERATIONS} velocity / ${POSITION_ITERATIONS} position iterations, sleeping ${meta.continuous ? 'off, continuous physics on (--continuous on),' : 'and continuous physics off'}`,
     `in both (resting pyramids would fall asleep and cost nothing: this measures the full step's work; the settled scene sleeps and has ${SETTLE_STEPS} warm-up steps). ${GPU_WARMUP} warm-up steps on the GPU, ${WARMUP} in JS, then medians of ${meta.steps} steps`,
     `(JS: at most ${meta.steps} steps or ${meta.jsBudget} s). Milliseconds per step. Solver passes: ${meta.fused === undefined ? 'fused up to FUSED_SOLVER_ITEMS contacts and joints' : meta.fused ? 'fused at every size (--fused on)' : 'per colour at every size (--fused off)'}.`,
     '',
@@ -657,6 +662,7 @@ async function main(): Promise<number> {
       quick: { type: 'boolean' },
       fused: { type: 'string' },
       'skip-resting': { type: 'string' },
+      continuous: { type: 'string' },
       auto: { type: 'boolean' },
       out: { type: 'string' },
       help: { type: 'boolean', short: 'h' },
@@ -664,7 +670,7 @@ async function main(): Promise<number> {
   });
   if (values.help) {
     process.stdout.write(
-      'node dist/bench-gpu-step.mjs [--sizes 1e3,1e4,1e5,1e6] [--scenes pyramids,rain,balls,settled] [--steps 10] [--js-max 1e5] [--js-budget 3] [--fused on|off] [--skip-resting on|off] [--auto] [--validation] [--quick] [--out DIR]\n',
+      'node dist/bench-gpu-step.mjs [--sizes 1e3,1e4,1e5,1e6] [--scenes pyramids,rain,balls,settled] [--steps 10] [--js-max 1e5] [--js-budget 3] [--fused on|off] [--skip-resting on|off] [--continuous on|off] [--auto] [--validation] [--quick] [--out DIR]\n',
     );
     return 0;
   }
@@ -683,6 +689,10 @@ async function main(): Promise<number> {
   if (values['skip-resting'] !== undefined) {
     if (values['skip-resting'] !== 'on' && values['skip-resting'] !== 'off') throw new Error(`--skip-resting must be on or off, got ${values['skip-resting']}`);
     skipResting = values['skip-resting'] === 'on';
+  }
+  if (values.continuous !== undefined) {
+    if (values.continuous !== 'on' && values.continuous !== 'off') throw new Error(`--continuous must be on or off, got ${values.continuous}`);
+    continuous = values.continuous === 'on';
   }
 
   let finished = false;
@@ -752,6 +762,7 @@ async function main(): Promise<number> {
   }
   const meta = {
     fused: solverOptions.fused,
+    continuous,
     calibration,
     device: deviceLine,
     adapter: a,
