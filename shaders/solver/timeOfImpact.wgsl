@@ -7,18 +7,29 @@
 //      them), solverState[SV_SKIP], the mirror's fixtureShape, shapePool, bodyFlags, bodyAwake,
 //      bodyMass (local centre), bodyCell, bodySweep (c0, a0 at the start of the step, c, a at
 //      its end).
-// Out: `begin`: toiBody[0] = contacts to test (0 when the step is skipped), toiIndirect.
-//      `candidates`: toiBody[1 + b] = atomicMax of 0x3f800000 - bits(alpha) over body b's
+// Out: `begin`: toiBody[0] = contacts to test (0 when the step is skipped), toiBody[1] = 0,
+//      toiIndirect.
+//      `candidates`: toiBody[2 + b] = atomicMax of 0x3f800000 - bits(alpha) over body b's
 //      contacts touching at a time of impact 0 < alpha (non-negative floats order as their bits,
 //      reversed here so that 0, the cleared value, means none); only dynamic bodies get one.
+//      toiBody[1] = the contacts that ran b2TimeOfImpact (for tests and tools).
 //      `advance`: an awake body with alpha <= 1 - 10 b2_epsilon gets b2Body::Advance(alpha): c0 =
 //      c = the sweep at alpha, a0 = a, alpha0 = alpha, bodyXf from them; velocities are kept.
-//      Every other body's alpha0 returns to 0 (SolveTOI's reset). toiBody[1 + b] is cleared.
+//      Every other body's alpha0 returns to 0 (SolveTOI's reset). toiBody[2 + b] is cleared.
 //      `evaluate` (tests and tools): b2TimeOfImpact of given records, unfiltered.
 // Invariants: one invocation per contact / body slot; the only shared writes are atomicMax on
 //      integer keys, so the result is the same bits on every run. Contacts are tested as 2.2.1's
 //      SolveTOI selects them: no sensor, a bullet or a non-dynamic body on one side (whether a
-//      body is awake is looked at when advancing it). Sweeps span the whole step (alpha0 = 0, as
+//      body is awake is looked at when advancing it), and, before b2TimeOfImpact, fast: the
+//      most the two shapes' cores can approach over the step (each body's |c - c0| plus |a - a0|
+//      times its shape's farthest core point from its centre of mass) is at least toi.minMotion
+//      (b2_linearSlop). A slower pair cannot stop a body unless it already overlaps deeply:
+//      cores that do not overlap are at least the radii apart, and b2TimeOfImpact's target
+//      plus tolerance is 2.75 b2_linearSlop less than that (radii of 4 b2_linearSlop or more:
+//      any pair with a polygon, edge or chain skin); a resting pair overlaps by about
+//      b2_linearSlop. So resting and slow bodies skip the distance computations, with the
+//      results of testing them, but for pairs overlapping by more than 1.75 b2_linearSlop, which
+//      the regular solver takes as it takes every touching contact. Sweeps span the whole step (alpha0 = 0, as
 //      SolveTOI starts each step); B's sweep is moved into A's cell. Nothing changes when
 //      SV_SKIP is set (the host reruns the step).
 // Float32: b2TimeOfImpact's target (max(b2_linearSlop, radii - 3 b2_linearSlop)) and tolerance
@@ -29,7 +40,7 @@ struct ToiParams {
   cellSize: f32,
   bodySlots: u32,
   pairs: u32,                                  // `evaluate`: records in contactRef
-  pad0: u32,
+  minMotion: f32,                              // `candidates`: the least approach tested
 }
 
 @group(0) @binding(9) var<uniform> toi: ToiParams;
@@ -314,12 +325,32 @@ fn load_sweep(b: u32, shift: vec2<f32>) -> Sweep {
   return Sweep(bodyMass[b].zw, s0.xy + shift, s1.xy + shift, s0.z, s1.z);
 }
 
-// b2TimeOfImpact of a contact's fixtures (refA, refB: contactRef's layout) over [0, 1], in A's cell.
-fn contact_toi(refA: vec4<u32>, refB: vec4<u32>) -> ToiOutput {
+// A contact's shapes and sweeps (refA, refB: contactRef's layout), in A's cell.
+struct ContactMotion {
+  pA: Proxy,
+  sA: Sweep,
+  pB: Proxy,
+  sB: Sweep,
+}
+
+fn contact_motion(refA: vec4<u32>, refB: vec4<u32>) -> ContactMotion {
   let shiftB = vec2<f32>(bodyCell[refB.z] - bodyCell[refA.z]) * toi.cellSize;
-  var pA = load_proxy(refA.x, refA.y);
-  var pB = load_proxy(refB.x, refB.y);
-  return time_of_impact(&pA, load_sweep(refA.z, vec2<f32>(0.0)), &pB, load_sweep(refB.z, shiftB), 1.0);
+  return ContactMotion(load_proxy(refA.x, refA.y), load_sweep(refA.z, vec2<f32>(0.0)),
+                       load_proxy(refB.x, refB.y), load_sweep(refB.z, shiftB));
+}
+
+// The most a core point of p moves over the sweep s: |c - c0| + |a - a0| |v - localCenter|.
+fn motion_bound(p: ptr<function, Proxy>, s: Sweep) -> f32 {
+  var extent = 0.0;
+  for (var i = 0u; i < (*p).count; i = i + 1u) {
+    extent = max(extent, length((*p).v[i] - s.localCenter));
+  }
+  return length(s.c - s.c0) + abs(s.a - s.a0) * extent;
+}
+
+// b2TimeOfImpact of a contact over [0, 1].
+fn contact_toi(m: ptr<function, ContactMotion>) -> ToiOutput {
+  return time_of_impact(&(*m).pA, (*m).sA, &(*m).pB, (*m).sB, 1.0);
 }
 
 @compute @workgroup_size(1)
@@ -329,50 +360,65 @@ fn begin() {
     count = 0u;
   }
   atomicStore(&toiBody[0], count);
+  atomicStore(&toiBody[1], 0u);
   let size = dispatch_size(count, WORKGROUP_SIZE);
   toiIndirect[0] = size.x;
   toiIndirect[1] = size.y;
   toiIndirect[2] = size.z;
 }
 
-@compute @workgroup_size(256)
-fn candidates(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: vec3<u32>,
-              @builtin(local_invocation_index) lid: u32) {
-  let c = group_index(wid, nwg) * WORKGROUP_SIZE + lid;
+// Contact c's part of `candidates`; returns 1 when it ran b2TimeOfImpact.
+fn candidate(c: u32) -> u32 {
   if (c >= atomicLoad(&toiBody[0])) {
-    return;
+    return 0u;
   }
   let refA = contactRef[2u * c];
   let refB = contactRef[2u * c + 1u];
   if ((refA.w & REF_SENSOR) != 0u) {
-    return;
+    return 0u;
   }
   let flagsA = bodyFlags[refA.z];
   let flagsB = bodyFlags[refB.z];
   let typeA = body_type(flagsA);
   let typeB = body_type(flagsB);
   if (typeA == STATIC_BODY && typeB == STATIC_BODY) {
-    return;
+    return 0u;
   }
   let collideA = (flagsA & BODY_BULLET) != 0u || typeA != DYNAMIC_BODY;
   let collideB = (flagsB & BODY_BULLET) != 0u || typeB != DYNAMIC_BODY;
   // Two non-bullet dynamic bodies: no continuous collision between them.
   if (!collideA && !collideB) {
-    return;
+    return 0u;
   }
-  let out = contact_toi(refA, refB);
+  var m = contact_motion(refA, refB);
+  if (motion_bound(&m.pA, m.sA) + motion_bound(&m.pB, m.sB) < toi.minMotion) {
+    return 0u;
+  }
+  let out = contact_toi(&m);
   // Touching at the start of the step is left to the regular solver: 2.2.1 would solve a TOI
   // island there and move on; stopping the body at t = 0 would undo this step's position
   // correction, so a body resting 3 b2_linearSlop deep would stay there.
   if (out.state != TOI_TOUCHING || out.t <= 0.0) {
-    return;
+    return 1u;
   }
   let key = ONE_BITS - bitcast<u32>(min(out.t, 1.0));
   if (typeA == DYNAMIC_BODY) {
-    atomicMax(&toiBody[1u + refA.z], key);
+    atomicMax(&toiBody[2u + refA.z], key);
   }
   if (typeB == DYNAMIC_BODY) {
-    atomicMax(&toiBody[1u + refB.z], key);
+    atomicMax(&toiBody[2u + refB.z], key);
+  }
+  return 1u;
+}
+
+// One invocation per contact; the count of those tested goes in with one atomic per workgroup.
+@compute @workgroup_size(256)
+fn candidates(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: vec3<u32>,
+              @builtin(local_invocation_index) lid: u32) {
+  let tested = candidate(group_index(wid, nwg) * WORKGROUP_SIZE + lid);
+  workgroup_exclusive_scan(lid, tested);
+  if (lid == 0u && wg_scan_total > 0u) {
+    atomicAdd(&toiBody[1], wg_scan_total);
   }
 }
 
@@ -383,7 +429,7 @@ fn advance(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: 
   if (i >= toi.bodySlots || solverState[SV_SKIP] != 0u) {
     return;
   }
-  let alpha = bitcast<f32>(ONE_BITS - atomicExchange(&toiBody[1u + i], 0u));
+  let alpha = bitcast<f32>(ONE_BITS - atomicExchange(&toiBody[2u + i], 0u));
   let s0 = bodySweep[2u * i];
   if (1.0 - 10.0 * EPSILON < alpha || bodyAwake[i] == 0u) {
     if (s0.w != 0.0) {
@@ -412,6 +458,7 @@ fn evaluate(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg:
   if (k >= toi.pairs) {
     return;
   }
-  let out = contact_toi(contactRef[2u * k], contactRef[2u * k + 1u]);
+  var m = contact_motion(contactRef[2u * k], contactRef[2u * k + 1u]);
+  let out = contact_toi(&m);
   evaluated[k] = vec2<u32>(out.state, bitcast<u32>(out.t));
 }

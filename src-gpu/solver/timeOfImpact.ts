@@ -12,7 +12,9 @@
  * Which contacts, which bodies (2.2.1): only when the world's continuous physics is on (the stage
  * records nothing otherwise: no dispatch); no sensors; one side a bullet or not dynamic (static,
  * kinematic), i.e. bullets against everything, every dynamic body against static and kinematic
- * ones. The contacts come from this step's broad phase, whose AABBs include the motion predicted
+ * ones; and only where the two shapes can approach by `minMotion` (b2_linearSlop) over the step:
+ * resting and slow bodies are not tested, which changes no result but for pairs that already
+ * overlap by more than 1.75 b2_linearSlop (timeOfImpact.wgsl says why). The contacts come from this step's broad phase, whose AABBs include the motion predicted
  * for the step (src-gpu/broadphase/bounds.ts): 2.2.1 finds them after the solve from the swept AABBs of the
  * motion itself.
  * How it differs from 2.2.1 (which, in a loop, takes the earliest TOI of the world, advances its
@@ -26,9 +28,11 @@
  *   - a contact touching at alpha = 0 is left to the regular solver (2.2.1 solves it as a TOI
  *     island): stopping there would undo the step's position correction every step;
  *   - bodies touching the TOI bodies are not advanced with them;
+ *   - slow pairs are not tested (above);
  *   - a pair can be missed where the prediction falls short (a world's first step, whose dt is
  *     not known yet; a velocity changed within the step by more than the prediction).
- * Costs: three dispatches (one invocation, one per contact, one per body slot).
+ * Costs: three dispatches (one invocation, one per contact, one per body slot); the distance
+ * computations only for the fast pairs.
  */
 
 import type { GpuContext } from '../device/device';
@@ -36,6 +40,8 @@ import { GpuArray } from '../device/buffers';
 import { Kernel, Uniform } from '../device/kernel';
 import type { Recorder } from '../device/kernel';
 import { MAP_READ, USAGE, WORKGROUP_SIZE } from '../device/layout';
+import { readBuffer } from '../device/readback';
+import { b2_linearSlop } from '../../src/common/b2Settings';
 import type { GpuWorld } from '../world/world';
 
 export interface TimeOfImpactInputs {
@@ -57,8 +63,16 @@ export class TimeOfImpactStage {
   private readonly advance: Kernel;
   private readonly params: Uniform;
   private readonly indirect: GPUBuffer;
-  /** Word 0: contacts to test; word 1 + body slot: that body's TOI key (0: none). Zero between steps. */
+  /**
+   * Word 0: contacts to test; word 1: contacts tested; word 2 + body slot: that body's TOI key (0:
+   * none, the state between steps).
+   */
   private readonly bodies: GpuArray;
+  /**
+   * The least approach of two shapes over a step (metres) for which their contact is tested. A
+   * seam for tests: 0 tests every contact 2.2.1 would; Infinity none.
+   */
+  minMotion = b2_linearSlop;
 
   constructor(ctx: GpuContext) {
     this.ctx = ctx;
@@ -74,10 +88,11 @@ export class TimeOfImpactStage {
   encode(rec: Recorder, io: TimeOfImpactInputs, mirror: GpuWorld): void {
     const slots = mirror.bodySlotCount;
     // A new buffer is zeros, which is the state between steps: nothing to carry over.
-    this.bodies.ensure(slots + 1);
+    this.bodies.ensure(slots + 2);
     const p = this.params;
     p.f32[0] = mirror.cellSize;
     p.u32[1] = slots;
+    p.f32[3] = this.minMotion;
     p.upload();
     const bodies = this.bodies.buffer;
     rec.dispatch(this.begin, this.begin.bind({ 1: io.npState, 10: io.solverState, 11: this.indirect, 12: bodies }), 1);
@@ -152,6 +167,11 @@ export class TimeOfImpactStage {
     const out: ToiResult[] = [];
     for (let k = 0; k < n; ++k) out.push({ state: words[2 * k], t: f32[2 * k + 1] });
     return out;
+  }
+
+  /** For tests and tools: the contacts the last recorded step ran b2TimeOfImpact for. */
+  async testedContacts(): Promise<number> {
+    return new Uint32Array(await readBuffer(this.ctx, this.bodies.buffer, 8, 'toi debug read'))[1];
   }
 
   destroy(): void {

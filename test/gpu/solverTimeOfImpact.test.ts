@@ -2,7 +2,8 @@
  * Continuous collision on the GPU (src-gpu/solver/timeOfImpact.ts, swept and predicted AABBs in
  * src-gpu/broadphase/bounds.ts): fast bodies stop at thin static walls where the engine without continuous
  * physics lets them through; the GPU's b2TimeOfImpact gives the engine's answer on hand-built
- * sweeps; the stage records nothing when continuous physics is off; runs repeat bit for bit.
+ * sweeps; the stage records nothing when continuous physics is off; slow pairs are not tested, with
+ * the results of testing them; runs repeat bit for bit.
  */
 
 import { expect, it } from 'vitest';
@@ -21,6 +22,7 @@ import { b2World } from '../../src/dynamics/b2World';
 import { GpuStepper } from '../../src-gpu/stepper';
 import { TimeOfImpactStage } from '../../src-gpu/solver/timeOfImpact';
 import { GpuWorld } from '../../src-gpu/world/world';
+import { pyramid, restingWorld } from './resting';
 import { describeGpu } from './support';
 
 const DT = 1 / 60;
@@ -154,6 +156,64 @@ describeGpu('GPU continuous collision', (ctx) => {
     expect(dispatchesOn - dispatchesOff).toBe(3);
     on.destroy();
     off.destroy();
+  });
+
+  it('leaves the time of impact to fast pairs: a resting pyramid and slow boxes are not tested, with the same bits as testing them, and a bullet the filter skipped would tunnel', async () => {
+    // A 6-row pyramid at rest on static ground (its bottom row's contacts are dynamic against
+    // static: 2.2.1 tests each every step), a box sliding slowly along the ground, and a box
+    // falling fast from 4 m.
+    const scene = () => {
+      const { world } = restingWorld(pyramid(6), false);
+      world.SetContinuousPhysics(true);
+      const add = (x: number, y: number, vx: number, vy: number) => {
+        const def = new b2BodyDef();
+        def.type = b2_dynamicBody;
+        def.position.Set(x, y);
+        def.linearVelocity.Set(vx, vy);
+        const body = world.CreateBody(def);
+        const box = new b2PolygonShape();
+        box.SetAsBox(0.5, 0.5);
+        body.CreateFixture(box, 1);
+      };
+      add(12, 0.5, 0.1, 0);
+      add(-12, 4, 0, -30);
+      return world;
+    };
+    const filtered = scene();
+    const unfiltered = scene();
+    const a = new GpuStepper(ctx, filtered);
+    const b = new GpuStepper(ctx, unfiltered);
+    b.solver.timeOfImpact.minMotion = 0;
+    const testedA: number[] = [];
+    const testedB: number[] = [];
+    for (let i = 0; i < 20; ++i) {
+      await a.step(DT, 8, 3);
+      await b.step(DT, 8, 3);
+      testedA.push(await a.solver.timeOfImpact.testedContacts());
+      testedB.push(await b.solver.timeOfImpact.testedContacts());
+    }
+    await a.readBodies();
+    await b.readBodies();
+    console.log(`contacts run through b2TimeOfImpact per step: filtered ${testedA.join(' ')}; unfiltered ${testedB.join(' ')}`);
+    expect(motion(filtered)).toEqual(motion(unfiltered));
+    // Unfiltered: the pyramid's 6 bottom boxes and the sliding box, and the falling box once its
+    // AABB meets the ground. Filtered: the bottom boxes the first step's position correction
+    // moves (the pyramid's boxes start with their skins overlapping), then only the falling box,
+    // and nothing once it has landed.
+    expect(Math.min(...testedB)).toBeGreaterThanOrEqual(7);
+    expect(Math.max(...testedA.slice(1))).toBeLessThanOrEqual(1);
+    expect(testedA.some((n) => n === 1)).toBe(true);
+    expect(testedA[testedA.length - 1]).toBe(0);
+    a.destroy();
+    b.destroy();
+
+    const bullet = bulletScene('edge', 'circle', true);
+    const none = new GpuStepper(ctx, bullet.world);
+    none.solver.timeOfImpact.minMotion = Infinity;
+    for (let i = 0; i < STEPS; ++i) await none.step(DT, 8, 3);
+    await none.readBodies();
+    expect(bullet.bullet.GetPosition().x).toBeGreaterThan(WALL_X + 10);
+    none.destroy();
   });
 
   it('runs twice to the same bits (bullets, walls, a falling box)', async () => {
