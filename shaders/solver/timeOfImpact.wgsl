@@ -367,39 +367,43 @@ fn begin() {
   toiIndirect[2] = size.z;
 }
 
-// Contact c's part of `candidates`; returns 1 when it ran b2TimeOfImpact.
-fn candidate(c: u32) -> u32 {
+@compute @workgroup_size(256)
+fn candidates(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: vec3<u32>,
+              @builtin(local_invocation_index) lid: u32) {
+  let c = group_index(wid, nwg) * WORKGROUP_SIZE + lid;
   if (c >= atomicLoad(&toiBody[0])) {
-    return 0u;
+    return;
   }
   let refA = contactRef[2u * c];
   let refB = contactRef[2u * c + 1u];
   if ((refA.w & REF_SENSOR) != 0u) {
-    return 0u;
+    return;
   }
   let flagsA = bodyFlags[refA.z];
   let flagsB = bodyFlags[refB.z];
   let typeA = body_type(flagsA);
   let typeB = body_type(flagsB);
   if (typeA == STATIC_BODY && typeB == STATIC_BODY) {
-    return 0u;
+    return;
   }
   let collideA = (flagsA & BODY_BULLET) != 0u || typeA != DYNAMIC_BODY;
   let collideB = (flagsB & BODY_BULLET) != 0u || typeB != DYNAMIC_BODY;
   // Two non-bullet dynamic bodies: no continuous collision between them.
   if (!collideA && !collideB) {
-    return 0u;
+    return;
   }
   var m = contact_motion(refA, refB);
   if (motion_bound(&m.pA, m.sA) + motion_bound(&m.pB, m.sB) < toi.minMotion) {
-    return 0u;
+    return;
   }
+  // One atomic per fast pair, which the filter keeps rare (a count for tests and tools).
+  atomicAdd(&toiBody[1], 1u);
   let out = contact_toi(&m);
   // Touching at the start of the step is left to the regular solver: 2.2.1 would solve a TOI
   // island there and move on; stopping the body at t = 0 would undo this step's position
   // correction, so a body resting 3 b2_linearSlop deep would stay there.
   if (out.state != TOI_TOUCHING || out.t <= 0.0) {
-    return 1u;
+    return;
   }
   let key = ONE_BITS - bitcast<u32>(min(out.t, 1.0));
   if (typeA == DYNAMIC_BODY) {
@@ -407,18 +411,6 @@ fn candidate(c: u32) -> u32 {
   }
   if (typeB == DYNAMIC_BODY) {
     atomicMax(&toiBody[2u + refB.z], key);
-  }
-  return 1u;
-}
-
-// One invocation per contact; the count of those tested goes in with one atomic per workgroup.
-@compute @workgroup_size(256)
-fn candidates(@builtin(workgroup_id) wid: vec3<u32>, @builtin(num_workgroups) nwg: vec3<u32>,
-              @builtin(local_invocation_index) lid: u32) {
-  let tested = candidate(group_index(wid, nwg) * WORKGROUP_SIZE + lid);
-  workgroup_exclusive_scan(lid, tested);
-  if (lid == 0u && wg_scan_total > 0u) {
-    atomicAdd(&toiBody[1], wg_scan_total);
   }
 }
 
