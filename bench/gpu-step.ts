@@ -12,7 +12,7 @@
  * `.device` and `dist/bench-gpu-step.mjs`, run
  *   bash .device/run.sh node --expose-gc --max-old-space-size=60000 dist/bench-gpu-step.mjs
  *
- * Scenes, built with the engine's API (n dynamic bodies plus one static ground box, density 1,
+ * Scenes, built with the engine's API (n dynamic bodies plus static ground, density 1,
  * friction 0.6, gravity -10):
  *   pyramids  pyramids of 20 rows (210 boxes of 0.5 m half-size) side by side, 22 m apart, built at
  *             rest on the ground; the last one is cut short so that there are exactly n boxes;
@@ -22,17 +22,19 @@
  *             sideways);
  *   balls     rain's layout with circles only, on an edge for ground: a scene without polygons or
  *             joints (--scenes balls; not in the default set);
- *   settled   pyramids with sleeping on, stepped SETTLE_STEPS times before anything is timed (on
- *             each backend), so that the timed steps are those of a world at rest, its islands
- *             asleep: what a world costs when nothing moves (--scenes settled; not in the default
- *             set). The GPU table gives the bodies still awake after the timed steps.
+ *   settled   pyramids with sleeping on, each on a ground body of its own (22 m wide), stepped
+ *             SETTLE_STEPS times before anything is timed (on each backend), so that the timed
+ *             steps are those of a world at rest, its islands asleep: what a world costs when
+ *             nothing moves (--scenes settled; not in the default set). The GPU table gives the
+ *             bodies still awake after the timed steps.
  * --skip-resting on|off: whether a world at rest skips its steps (GpuPipeline.skipResting; default
  *   on; off measures what the GPU's stages cost a sleeping world).
  * --continuous on|off: continuous physics in both engines (default off; on adds the GPU's time of
  *   impact stage: what b2World's default costs).
  * --fused on|off: the solver's fused passes for every size, or for none (GpuSolverOptions.fused);
  * default: by the solver's items (FUSED_SOLVER_ITEMS). --auto: AutoBackend's calibration measured on this
- * adapter (its crossover and the fitted costs).
+ * adapter (its crossover and the fitted costs), before the rows: in a fresh process, after the
+ * device warm-up, as an application's first AutoBackend measures it.
  * Both engines: 1/60 s, 8 velocity / 3 position iterations, sleeping and continuous physics off
  * (resting pyramids would fall asleep and cost nothing: this measures the full step's work), but
  * for the settled scene's sleeping and --continuous on.
@@ -147,15 +149,19 @@ const BROAD_PASSES = new Set(['bounds', 'axis', 'sort', 'sweep', 'pairs']);
 /** b2World.SetContinuousPhysics for every scene (--continuous). */
 let continuous = false;
 
-/**
- * A world for both engines: gravity, sleeping off, continuous physics as --continuous, a ground of half-width
- * `halfWidth` with its top at y = 0: a box, or an edge.
- */
-function emptyWorld(halfWidth: number, edgeGround = false): b2World {
+/** A world for both engines without a ground: gravity, sleeping off, continuous physics as --continuous. */
+function worldWithoutGround(): b2World {
   const world = new b2World(new b2Vec2(0, -10));
   world.SetAllowSleeping(false);
   world.SetContinuousPhysics(continuous);
-  const ground = world.CreateBody(new b2BodyDef());
+  return world;
+}
+
+/** A static ground body at x = `x` of half-width `halfWidth` with its top at y = 0: a box, or an edge. */
+function addGround(world: b2World, halfWidth: number, x = 0, edgeGround = false): void {
+  const def = new b2BodyDef();
+  def.position.Set(x, 0);
+  const ground = world.CreateBody(def);
   const fd = new b2FixtureDef();
   if (edgeGround) {
     const edge = new b2EdgeShape();
@@ -166,14 +172,25 @@ function emptyWorld(halfWidth: number, edgeGround = false): b2World {
   }
   fd.friction = 0.6;
   ground.CreateFixture(fd);
+}
+
+/** worldWithoutGround() and one ground of half-width `halfWidth` under the origin. */
+function emptyWorld(halfWidth: number, edgeGround = false): b2World {
+  const world = worldWithoutGround();
+  addGround(world, halfWidth, 0, edgeGround);
   return world;
 }
 
-/** n boxes in pyramids of PYRAMID_ROWS rows, bottom row first (bench/scenes.mjs's layout). */
-function pyramids(n: number): b2World {
+/**
+ * n boxes in pyramids of PYRAMID_ROWS rows, bottom row first (bench/scenes.mjs's layout), on one
+ * ground box, or with `groundEach` on a ground body of their own under each: float32 contacts with
+ * a polygon kilometres from its body's origin carry a rounding of its coordinates that the position
+ * iterations never converge under, so pyramids far out on one ground never sleep on the GPU.
+ */
+function pyramids(n: number, groundEach = false): b2World {
   const perPyramid = (PYRAMID_ROWS * (PYRAMID_ROWS + 1)) / 2;
   const count = Math.ceil(n / perPyramid);
-  const world = emptyWorld((count * PYRAMID_PITCH) / 2 + 5);
+  const world = groundEach ? worldWithoutGround() : emptyWorld((count * PYRAMID_PITCH) / 2 + 5);
   const bd = new b2BodyDef();
   bd.type = b2_dynamicBody;
   const fd = new b2FixtureDef();
@@ -184,6 +201,7 @@ function pyramids(n: number): b2World {
   let made = 0;
   for (let k = 0; k < count; ++k) {
     const centre = (k - (count - 1) / 2) * PYRAMID_PITCH;
+    if (groundEach) addGround(world, PYRAMID_PITCH / 2, centre);
     for (let i = 0; i < PYRAMID_ROWS; ++i) {
       for (let j = i; j < PYRAMID_ROWS && made < n; ++j, ++made) {
         bd.position.Set(centre + (i + 1) * h + 2 * (j - i) * h - h * PYRAMID_ROWS, (2 * i + 1) * h);
@@ -225,7 +243,7 @@ function buildWorld(scene: string, n: number): b2World {
   if (scene === 'rain') return rain(n);
   if (scene === 'balls') return rain(n, true);
   if (scene === 'settled') {
-    const world = pyramids(n);
+    const world = pyramids(n, true);
     world.SetAllowSleeping(true);
     return world;
   }
@@ -601,7 +619,7 @@ function markdown(rows: Row[], crossovers: Crossover[], meta: Record<string, unk
   }
   lines.push(
     '',
-    `bodies: dynamic bodies, plus one static ground; awake: of them, those awake after the timed steps (all, unless sleeping is on: the settled scene), and the awaited timed steps skipped as a world at rest (device time 0; skipping ${skipResting ? 'on' : 'off: --skip-resting off'}). contacts: the GPU's contacts (broad-phase pairs) and, in`,
+    `bodies: dynamic bodies, plus one static ground (the settled scene: one under each pyramid); awake: of them, those awake after the timed steps (all, unless sleeping is on: the settled scene), and the awaited timed steps skipped as a world at rest (device time 0; skipping ${skipResting ? 'on' : 'off: --skip-resting off'}). contacts: the GPU's contacts (broad-phase pairs) and, in`,
     'parentheses, the touching ones the solver takes. GPU wall: GpuStepper.step() from call to resolved promise',
     '(mirror sync, recording, submit, wait for the read-back). GPU not awaited: steps submitted with { wait: false }',
     "(up to four in flight), total wall time / steps. GPU device: timestamp span of the step's passes; broad /",
@@ -713,6 +731,15 @@ async function main(): Promise<number> {
     while (performance.now() - t0 < DEVICE_WARMUP_S * 1000) await stepper.step(DT, VELOCITY_ITERATIONS, POSITION_ITERATIONS);
     stepper.destroy();
   }
+  let calibration: Awaited<ReturnType<typeof runCalibration>> | null = null;
+  // First, in a fresh process, as an application's first AutoBackend measures it.
+  if (values.auto === true) {
+    settleHeap();
+    calibration = await runCalibration(ctx);
+    console.error(
+      `AutoBackend: ${calibration.crossover ? `${calibration.crossover.crossoverBodies} bodies (${calibration.crossover.source})` : 'not measured'}; ${calibration.choice}; ${fmt(calibration.ms)} ms`,
+    );
+  }
   const started = performance.now();
   for (const n of sizes) {
     for (const scene of scenes) {
@@ -752,14 +779,6 @@ async function main(): Promise<number> {
       rows.filter((r) => r.scene === s && r.gpu && r.js).map((r) => ({ n: r.bodies, jsMs: r.js!.ms, gpuMs: r.gpu!.wallMs })),
     ),
   );
-  let calibration: Awaited<ReturnType<typeof runCalibration>> | null = null;
-  if (values.auto === true) {
-    settleHeap();
-    calibration = await runCalibration(ctx);
-    console.error(
-      `AutoBackend: ${calibration.crossover ? `${calibration.crossover.crossoverBodies} bodies (${calibration.crossover.source})` : 'not measured'}; ${calibration.choice}; ${fmt(calibration.ms)} ms`,
-    );
-  }
   const meta = {
     fused: solverOptions.fused,
     continuous,
