@@ -158,6 +158,8 @@ export class WebGPUBackend implements b2WorldBackend {
   private latestPenetration = -1;
   private syncedPenetration = -1;
   private stepsSinceRead = 0;
+  /** Of those, the steps the GPU recorded (not skipped at rest: GpuPipeline.skipResting). */
+  private recordedSinceRead = 0;
   private failure: unknown = null;
   private detaching = false;
   private destroyed = false;
@@ -308,6 +310,7 @@ export class WebGPUBackend implements b2WorldBackend {
     this.latestPenetration = -1;
     this.syncedPenetration = -1;
     this.stepsSinceRead = 0;
+    this.recordedSinceRead = 0;
     this.pulledEpoch = world.m_stateEpoch;
   }
 
@@ -372,6 +375,9 @@ export class WebGPUBackend implements b2WorldBackend {
         () => undefined,
       );
       this.stepsSinceRead++;
+      // A step skipped at rest changed nothing on the GPU: no events, nothing new to read.
+      if (result.skipped) return;
+      this.recordedSinceRead++;
       // PostSolve follows a step's solve only (b2World::Step solves when dt > 0).
       const listener = world.m_contactManager.m_contactListener;
       events.record(stepper.narrowPhase, settled, wantsEvents(engine, listener), dt > 0 && engine.listenerOverrides(listener, 'PostSolve'));
@@ -420,11 +426,18 @@ export class WebGPUBackend implements b2WorldBackend {
     }
     if (this.failure !== null) throw this.failure;
     if (this.stepsSinceRead === 0 && !carry) return null;
+    if (this.recordedSinceRead === 0 && !carry) {
+      // Every step since the last read-back was skipped at rest: the GPU holds the state read
+      // then, which the bodies have.
+      this.stepsSinceRead = 0;
+      return null;
+    }
     const listener = world.m_contactManager.m_contactListener;
     // Before the first step the GPU's contacts are the world's own (Detach keeps those).
     const needContacts = this.lastStep !== null && (carry || wantsEvents(engine, listener) || engine.listenerOverrides(listener, 'PostSolve'));
     const plan = events.plan(stepper.narrowPhase, needContacts, needContacts ? this.lastContactCount! : 0);
     this.stepsSinceRead = 0;
+    this.recordedSinceRead = 0;
     this.readbacks++;
     await stepper.readState(GpuContactEvents.ranges(plan));
     this.syncedPenetration = this.latestPenetration;

@@ -619,6 +619,39 @@ describeGpu('WebGPUBackend: the world API on the GPU', (ctx) => {
     await world.SetBackend(null);
   }, 300_000);
 
+  it('a world at rest: Synchronize after steps the GPU skipped reads nothing back, the bodies keep their state, and a wake reads again', async () => {
+    const world = new b2World(new b2Vec2(0, -10));
+    ground(world);
+    const boxes = [0, 1, 2].map((i) => box(world, -4 + 4 * i, 0.5));
+    const backend = await WebGPUBackend.create({ context: ctx });
+    await world.SetBackend(backend);
+    let steps = 0;
+    while (boxes.some((b) => b.IsAwake()) && steps < 200) {
+      await world.StepAsync(DT, 8, 3);
+      steps++;
+    }
+    expect(boxes.every((b) => !b.IsAwake())).toBe(true);
+    // The pipeline skips once a read-back shows a step that began at rest.
+    for (let i = 0; i < 3; ++i) await world.StepAsync(DT, 8, 3);
+    const pipeline = backend.stepper!.pipeline;
+    const skipped = pipeline.skippedSteps;
+    expect(skipped).toBeGreaterThan(0);
+    const readbacks = backend.readbacks;
+    const at = boxes.map((b) => [b.GetPosition().x, b.GetPosition().y, b.GetAngle()]);
+    for (let i = 0; i < 5; ++i) await world.StepAsync(DT, 8, 3);
+    expect(pipeline.skippedSteps).toBe(skipped + 5);
+    expect(backend.readbacks).toBe(readbacks);
+    expect(boxes.map((b) => [b.GetPosition().x, b.GetPosition().y, b.GetAngle()])).toEqual(at);
+    expect(boxes.every((b) => !b.IsAwake())).toBe(true);
+
+    boxes[1].ApplyLinearImpulse(new b2Vec2(0, 5 * boxes[1].GetMass()), boxes[1].GetWorldCenter());
+    await world.StepAsync(DT, 8, 3);
+    expect(backend.readbacks).toBe(readbacks + 1);
+    expect(boxes[1].GetPosition().y).toBeGreaterThan(at[1][1]);
+    expect(boxes[1].IsAwake()).toBe(true);
+    await world.SetBackend(null);
+  }, 300_000);
+
   it("destroy() frees a discarded world's GPU buffers without reading it back; the backend is finished and says so", async () => {
     const { world } = dropScene();
     const backend = await WebGPUBackend.create({ context: ctx });
