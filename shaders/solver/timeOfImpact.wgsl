@@ -18,20 +18,21 @@
 //      Every other body's alpha0 returns to 0 (SolveTOI's reset). toiBody[2 + b] is cleared.
 //      `evaluate` (tests and tools): b2TimeOfImpact of given records, unfiltered.
 // Invariants: one invocation per contact / body slot; the only shared writes are atomicMax on
-//      integer keys, so the result is the same bits on every run. Contacts are tested as 2.2.1's
-//      SolveTOI selects them: no sensor, a bullet or a non-dynamic body on one side (whether a
-//      body is awake is looked at when advancing it), and, before b2TimeOfImpact, fast: the
-//      most the two shapes' cores can approach over the step (each body's |c - c0| plus |a - a0|
-//      times its shape's farthest core point from its centre of mass) is at least toi.minMotion
-//      (b2_linearSlop). A slower pair cannot stop a body unless it already overlaps deeply:
-//      cores that do not overlap are at least the radii apart, and b2TimeOfImpact's target
-//      plus tolerance is 2.75 b2_linearSlop less than that (radii of 4 b2_linearSlop or more:
-//      any pair with a polygon, edge or chain skin); a resting pair overlaps by about
-//      b2_linearSlop. So resting and slow bodies skip the distance computations, with the
-//      results of testing them, but for pairs overlapping by more than 1.75 b2_linearSlop, which
-//      the regular solver takes as it takes every touching contact. Sweeps span the whole step (alpha0 = 0, as
-//      SolveTOI starts each step); B's sweep is moved into A's cell. Nothing changes when
-//      SV_SKIP is set (the host reruns the step).
+//      integer keys and the tested count's atomicAdd, so the result is the same bits on every
+//      run. Contacts are tested as 2.2.1's SolveTOI selects them: no sensor, a bullet or a
+//      non-dynamic body on one side (whether a body is awake is looked at when advancing it),
+//      and, before b2TimeOfImpact, fast: the most the two shapes' cores can approach over the
+//      step (each body's |c - c0| plus |a - a0| times its shape's farthest core point from its
+//      centre of mass) is at least toi.minMotion (b2_linearSlop). A slower pair cannot stop a
+//      body unless it already overlaps deeply: cores that do not overlap are at least the radii
+//      apart, and b2TimeOfImpact's target plus tolerance is 2.75 b2_linearSlop less than that
+//      (radii of 4 b2_linearSlop or more: any pair with a polygon, edge or chain skin); a
+//      resting pair overlaps by about b2_linearSlop. So resting and slow bodies skip the
+//      distance computations, with the results of testing them, but for pairs overlapping by
+//      more than 1.75 b2_linearSlop, which the regular solver takes as it takes every touching
+//      contact. Sweeps span the whole step (alpha0 = 0, as SolveTOI starts each step); B's
+//      sweep is moved into A's cell. Nothing changes when SV_SKIP is set (the host reruns the
+//      step).
 // Float32: b2TimeOfImpact's target (max(b2_linearSlop, radii - 3 b2_linearSlop)) and tolerance
 // (b2_linearSlop / 4) are millimetres, far above the rounding of cell-relative coordinates
 // (about 1e-6 m), so the TOI is the engine's up to float32 rounding in the root finder.

@@ -27,7 +27,7 @@ const COPIES: readonly [number, number] = [1, 10];
  * Untimed steps first (JIT, pipeline creation, first buffer growth): at least WARM_UP_STEPS and
  * WARM_UP_MS, since a page calibrates at first use, with the engine's code not yet optimised: a
  * few steps of a cold engine make its fitted fixed cost look higher than the GPU's, and the GPU
- * win at any size. Then timed ones; the fastest counts.
+ * seem faster at any size. Then timed ones; the fastest counts.
  */
 const WARM_UP_STEPS = 2;
 const WARM_UP_MS = 100;

@@ -14,8 +14,9 @@
  * kinematic), i.e. bullets against everything, every dynamic body against static and kinematic
  * ones; and only where the two shapes can approach by `minMotion` (b2_linearSlop) over the step:
  * resting and slow bodies are not tested, which changes no result but for pairs that already
- * overlap by more than 1.75 b2_linearSlop (timeOfImpact.wgsl says why). The contacts come from this step's broad phase, whose AABBs include the motion predicted
- * for the step (src-gpu/broadphase/bounds.ts): 2.2.1 finds them after the solve from the swept AABBs of the
+ * overlap by more than 1.75 b2_linearSlop (timeOfImpact.wgsl says why). The contacts come from
+ * this step's broad phase, whose AABBs include the motion predicted for the step
+ * (src-gpu/broadphase/bounds.ts): 2.2.1 finds them after the solve from the swept AABBs of the
  * motion itself.
  * How it differs from 2.2.1 (which, in a loop, takes the earliest TOI of the world, advances its
  * two bodies, solves a mini island of them with b2_toiVelocityIterations / b2_toiPositionIterations
