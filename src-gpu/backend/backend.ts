@@ -157,8 +157,7 @@ export class WebGPUBackend implements b2WorldBackend {
   /** The penetration of the latest step whose read-back is in, and of the step the last synchronisation shows (-1: none measured). */
   private latestPenetration = -1;
   private syncedPenetration = -1;
-  private stepsSinceRead = 0;
-  /** Of those, the steps the GPU recorded (not skipped at rest: GpuPipeline.skipResting). */
+  /** Steps the GPU recorded since the last read-back (one skipped at rest records nothing: GpuPipeline.skipResting). */
   private recordedSinceRead = 0;
   private failure: unknown = null;
   private detaching = false;
@@ -309,7 +308,6 @@ export class WebGPUBackend implements b2WorldBackend {
     this.countsKnown = false;
     this.latestPenetration = -1;
     this.syncedPenetration = -1;
-    this.stepsSinceRead = 0;
     this.recordedSinceRead = 0;
     this.pulledEpoch = world.m_stateEpoch;
   }
@@ -374,7 +372,6 @@ export class WebGPUBackend implements b2WorldBackend {
         },
         () => undefined,
       );
-      this.stepsSinceRead++;
       // A step skipped at rest changed nothing on the GPU: no events, nothing new to read.
       if (result.skipped) return;
       this.recordedSinceRead++;
@@ -425,18 +422,13 @@ export class WebGPUBackend implements b2WorldBackend {
       await this.lastStep;
     }
     if (this.failure !== null) throw this.failure;
-    if (this.stepsSinceRead === 0 && !carry) return null;
-    if (this.recordedSinceRead === 0 && !carry) {
-      // Every step since the last read-back was skipped at rest: the GPU holds the state read
-      // then, which the bodies have.
-      this.stepsSinceRead = 0;
-      return null;
-    }
+    // No step since the last read-back, or only steps skipped at rest: the GPU holds the state
+    // read then, which the bodies have.
+    if (this.recordedSinceRead === 0 && !carry) return null;
     const listener = world.m_contactManager.m_contactListener;
     // Before the first step the GPU's contacts are the world's own (Detach keeps those).
     const needContacts = this.lastStep !== null && (carry || wantsEvents(engine, listener) || engine.listenerOverrides(listener, 'PostSolve'));
     const plan = events.plan(stepper.narrowPhase, needContacts, needContacts ? this.lastContactCount! : 0);
-    this.stepsSinceRead = 0;
     this.recordedSinceRead = 0;
     this.readbacks++;
     await stepper.readState(GpuContactEvents.ranges(plan));
