@@ -165,7 +165,7 @@ export class WebGPUBackend implements b2WorldBackend {
   /** The world's m_stateEpoch when every body and proxy was last brought to the synchronised state (PullAll). */
   private pulledEpoch = 0;
   private reading: Promise<unknown> = Promise.resolve();
-  /** Maps made by synchronisations (for tests: one per synchronisation that had steps to read). */
+  /** Maps made by synchronisations (for tests: one per synchronisation that had recorded steps to read). */
   readbacks = 0;
 
   private constructor(ctx: GpuContext, options: WebGPUBackendOptions) {

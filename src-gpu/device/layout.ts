@@ -123,8 +123,9 @@
  *                          inactive and dead bodies), then per root: any body awake, the smallest
  *                          sleep time (f32 bits) (shaders/solver/islands.wgsl)
  *   toiBody        u32        continuous collision (src-gpu/solver/timeOfImpact.ts): word 0 the contacts to
- *                          test, word 1 + body slot 0x3f800000 - bits of the body's earliest time
- *                          of impact (0: none; zero again after each step), toiIndirect 3 x u32
+ *                          test, word 1 those tested, word 2 + body slot 0x3f800000 - bits of the
+ *                          body's earliest time of impact (0: none; zero again after each step),
+ *                          toiIndirect 3 x u32
  */
 
 /** GPUBufferUsage, without relying on the WebGPU globals being installed. */
